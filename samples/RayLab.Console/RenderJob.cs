@@ -1,0 +1,185 @@
+using System.Diagnostics;
+using System.Globalization;
+using System.Text.Json;
+using RayLab.Imaging;
+using RayLab.Rendering;
+using RayLab.Scenes;
+
+namespace RayLab.Cli;
+
+/// <summary>One render from a scene file to an image file, with the console's checks and messages.</summary>
+public static class RenderJob
+{
+    /// <summary>The scene the no-argument run renders (copied beside the app).</summary>
+    public static string DefaultScenePath => Path.Combine(AppContext.BaseDirectory, "scenes", "two-spheres.json");
+
+    /// <summary>
+    /// The no-argument run: the two-sphere scene with the orthographic and the perspective camera, into
+    /// <c>out/two-spheres-orthographic.png</c> and <c>out/two-spheres-perspective.png</c>.
+    /// </summary>
+    /// <param name="stdout">Where the summary lines go.</param>
+    /// <param name="stderr">Where errors go.</param>
+    /// <returns>The exit code.</returns>
+    public static int RunDefault(TextWriter stdout, TextWriter stderr)
+    {
+        Directory.CreateDirectory("out");
+        foreach (string camera in CameraSettings.Types.Reverse())
+        {
+            int code = Run(new RenderRequest(DefaultScenePath, Path.Combine("out", $"two-spheres-{camera}.png"), Camera: camera), stdout, stderr);
+            if (code != 0)
+            {
+                return code;
+            }
+        }
+
+        return 0;
+    }
+
+    /// <summary>Runs one render; prints one summary line, or one error line and returns non-zero.</summary>
+    /// <param name="request">What to render.</param>
+    /// <param name="stdout">Where the summary goes.</param>
+    /// <param name="stderr">Where errors go.</param>
+    /// <returns>0 on success, 1 on bad input or a failed render.</returns>
+    public static int Run(RenderRequest request, TextWriter stdout, TextWriter stderr)
+    {
+        try
+        {
+            RunOrThrow(request, stdout);
+            return 0;
+        }
+        catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException or NotSupportedException)
+        {
+            stderr.WriteLine($"raylab: error: {e.Message}");
+            return 1;
+        }
+        catch (OutOfMemoryException)
+        {
+            stderr.WriteLine($"raylab: error: not enough memory to render {request.ScenePath} at the requested size");
+            return 1;
+        }
+    }
+
+    private static void RunOrThrow(RenderRequest request, TextWriter stdout)
+    {
+        CheckOutputPath(request.OutputPath, "--output", requireImageFormat: true);
+        if (request.StatsPath is not null)
+        {
+            CheckOutputPath(request.StatsPath, "--stats", requireImageFormat: false);
+        }
+
+        if (request.Threads is < 1)
+        {
+            throw new UsageException($"--threads: must be at least 1, got {request.Threads}");
+        }
+
+        SceneDescription description = ApplyOverrides(SceneFile.Load(request.ScenePath), request);
+        PreparedScene prepared;
+        try
+        {
+            prepared = description.Prepare();
+        }
+        catch (SceneFileException e) when (OptionFor(e.Field, request) is { } option)
+        {
+            throw new UsageException($"{option}: {e.Problem}");
+        }
+
+        Image image = prepared.CreateImage();
+        var renderer = new Renderer { MaxDegreeOfParallelism = request.Threads ?? -1 };
+        RenderStatistics stats = renderer.Render(prepared.Scene, prepared.Camera, prepared.Sampler, image);
+
+        var encodeClock = Stopwatch.StartNew();
+        image.Save(request.OutputPath);
+        double encodeMs = encodeClock.Elapsed.TotalMilliseconds;
+
+        if (request.StatsPath is not null)
+        {
+            WriteStats(request, prepared, stats, encodeMs);
+        }
+
+        stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"{request.OutputPath}: {image.Width}×{image.Height}, {prepared.Camera.Name} camera, {prepared.Sampler.Name} {prepared.Sampler.SamplesPerPixel} spp, "
+            + $"{stats.PrimaryRays:N0} rays, render {stats.RenderTime.TotalMilliseconds:F1} ms ({stats.RaysPerSecond / 1e6:F1} Mrays/s), encode {encodeMs:F1} ms"));
+    }
+
+    private static SceneDescription ApplyOverrides(SceneDescription d, RenderRequest r)
+    {
+        if (r.Camera is not null)
+        {
+            d = d with { Camera = d.Camera with { Type = r.Camera } };
+        }
+
+        if (r.Sampler is not null || r.Samples is not null || r.Seed is not null)
+        {
+            d = d with
+            {
+                Sampler = new SamplerSettings(r.Sampler ?? d.Sampler.Type, r.Samples ?? d.Sampler.Samples, r.Seed ?? d.Sampler.Seed),
+            };
+        }
+
+        return d with { Width = r.Width ?? d.Width, Height = r.Height ?? d.Height };
+    }
+
+    // A problem in a field that an option overrode is the option's problem.
+    private static string? OptionFor(string field, RenderRequest r) => field switch
+    {
+        "image.width" when r.Width is not null => "--width",
+        "image.height" when r.Height is not null => "--height",
+        "camera.type" when r.Camera is not null => "--camera",
+        "sampler.type" when r.Sampler is not null => "--sampler",
+        "sampler.samples" when r.Samples is not null || r.Sampler is not null => "--samples",
+        _ => null,
+    };
+
+    private static void CheckOutputPath(string path, string option, bool requireImageFormat)
+    {
+        if (string.IsNullOrWhiteSpace(path))
+        {
+            throw new UsageException($"{option}: the path is empty");
+        }
+
+        if (requireImageFormat)
+        {
+            try
+            {
+                ImageFormat.FromPath(path);
+            }
+            catch (NotSupportedException e)
+            {
+                throw new UsageException($"{option}: {e.Message}");
+            }
+        }
+
+        string folder = Path.GetDirectoryName(Path.GetFullPath(path)) ?? ".";
+        if (!Directory.Exists(folder))
+        {
+            throw new UsageException($"{option}: the folder '{folder}' does not exist");
+        }
+
+        if (Directory.Exists(path))
+        {
+            throw new UsageException($"{option}: '{path}' is a folder, not a file");
+        }
+    }
+
+    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double encodeMs)
+    {
+        var json = new
+        {
+            scene = request.ScenePath,
+            output = request.OutputPath,
+            width = prepared.Description.Width,
+            height = prepared.Description.Height,
+            camera = prepared.Camera.Name,
+            sampler = prepared.Sampler.Name,
+            samplesPerPixel = prepared.Sampler.SamplesPerPixel,
+            seed = prepared.Sampler.Seed,
+            threads = request.Threads ?? Environment.ProcessorCount,
+            rays = stats.PrimaryRays,
+            renderMs = stats.RenderTime.TotalMilliseconds,
+            encodeMs,
+        };
+        AtomicFile.WriteAllText(request.StatsPath!, JsonSerializer.Serialize(json, StatsJson) + Environment.NewLine);
+    }
+
+    private static readonly JsonSerializerOptions StatsJson = new() { WriteIndented = true };
+}

@@ -1,0 +1,16 @@
+namespace RayLab.Cli;
+
+/// <summary>The parsed <c>raylab render</c> command line; null means "as the scene file says".</summary>
+/// <param name="ScenePath">The scene file.</param>
+/// <param name="OutputPath">The image to write.</param>
+/// <param name="Camera">Camera type override.</param>
+/// <param name="Sampler">Sampler override.</param>
+/// <param name="Samples">Samples-per-pixel override.</param>
+/// <param name="Seed">Seed override.</param>
+/// <param name="Threads">Thread count.</param>
+/// <param name="Width">Width override.</param>
+/// <param name="Height">Height override.</param>
+/// <param name="StatsPath">Where to write statistics JSON.</param>
+public sealed record RenderRequest(
+    string ScenePath, string OutputPath, string? Camera = null, string? Sampler = null, int? Samples = null,
+    uint? Seed = null, int? Threads = null, int? Width = null, int? Height = null, string? StatsPath = null);

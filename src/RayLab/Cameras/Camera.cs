@@ -1,0 +1,130 @@
+using RayLab.Geometry;
+
+namespace RayLab.Cameras;
+
+/// <summary>
+/// The lab's abstract camera (section 3): <see cref="Position"/>, <see cref="Target"/>, <see cref="Up"/>,
+/// <see cref="NearPlane"/>, <see cref="FarPlane"/> and <see cref="Fov"/>, with the defaults the lab gives
+/// (at the origin, looking at (0, 0, 1), up (0, 1, 0), near 1, far 1000).
+/// </summary>
+/// <remarks>
+/// The frame is the lab's: <c>w = −g/|g|</c> with gaze <c>g = Target − Position</c>,
+/// <c>u = (up × w)/|up × w|</c>, <c>v = w × u</c>. The lab prints a minus sign in front of u; with it the
+/// picture comes out mirrored, so RayLab leaves it out: camera right is image right, camera up is image up.
+/// A camera is immutable; <see cref="GetImagePlane"/> checks the combination of its properties and
+/// precomputes everything a renderer needs.
+/// </remarks>
+public abstract class Camera
+{
+    private readonly Double3 _position = Double3.Zero;
+    private readonly Double3 _target = new(0, 0, 1);
+    private readonly Double3 _up = Double3.UnitY;
+    private readonly double _near = 1;
+    private readonly double _far = 1000;
+    private readonly double _fov = 60;
+
+    /// <summary>The eye point e (the centre of projection for a perspective camera). Default (0, 0, 0).</summary>
+    /// <exception cref="ArgumentException">A component is not finite.</exception>
+    public Double3 Position { get => _position; init => _position = Finite(value, nameof(Position)); }
+
+    /// <summary>The point looked at (a point, as in <c>Matrix4x4.CreateLookAt</c>, not a direction). Default (0, 0, 1).</summary>
+    /// <exception cref="ArgumentException">A component is not finite.</exception>
+    public Double3 Target { get => _target; init => _target = Finite(value, nameof(Target)); }
+
+    /// <summary>The up vector; it need not be perpendicular to the gaze, only not parallel. Default (0, 1, 0).</summary>
+    /// <exception cref="ArgumentException">A component is not finite.</exception>
+    public Double3 Up { get => _up; init => _up = Finite(value, nameof(Up)); }
+
+    /// <summary>
+    /// The near clipping plane: the smallest visible depth, measured along the gaze from <see cref="Position"/>.
+    /// Default 1; must be ≥ 0.
+    /// </summary>
+    /// <exception cref="ArgumentException">The value is negative or not finite.</exception>
+    public double NearPlane
+    {
+        get => _near;
+        init => _near = value >= 0 && double.IsFinite(value)
+            ? value
+            : throw new ArgumentException($"NearPlane must be a finite number ≥ 0, got {value}.", nameof(NearPlane));
+    }
+
+    /// <summary>The far clipping plane: the largest visible depth along the gaze. Default 1000; must exceed <see cref="NearPlane"/>.</summary>
+    /// <exception cref="ArgumentException">The value is not positive or not finite.</exception>
+    public double FarPlane
+    {
+        get => _far;
+        init => _far = value > 0 && double.IsFinite(value)
+            ? value
+            : throw new ArgumentException($"FarPlane must be a finite number > 0, got {value}.", nameof(FarPlane));
+    }
+
+    /// <summary>
+    /// The vertical field of view in degrees, strictly between 0 and 180 (the lab calls it horizontal; v is
+    /// the vertical axis, so it is the vertical one). Used by <see cref="PerspectiveCamera"/>. Default 60.
+    /// </summary>
+    /// <exception cref="ArgumentException">The value is not in (0, 180) or is NaN.</exception>
+    public double Fov
+    {
+        get => _fov;
+        init => _fov = value > 0 && value < 180
+            ? value
+            : throw new ArgumentException($"Fov must be in (0, 180) degrees, got {value}.", nameof(Fov));
+    }
+
+    /// <summary>A name for messages and file names (the lab lets a camera carry one).</summary>
+    public string Name { get; init; } = "camera";
+
+    /// <summary>True for a camera whose rays are parallel.</summary>
+    public abstract bool IsOrthographic { get; }
+
+    /// <summary>
+    /// The camera's view of a <paramref name="width"/>×<paramref name="height"/> image: its frame, window
+    /// and ray generation, checked and precomputed.
+    /// </summary>
+    /// <param name="width">The image width in pixels, ≥ 1.</param>
+    /// <param name="height">The image height in pixels, ≥ 1.</param>
+    /// <exception cref="ArgumentException">
+    /// The size is not positive; <see cref="Position"/> equals <see cref="Target"/>; <see cref="Up"/> is
+    /// parallel to the gaze; <see cref="NearPlane"/> ≥ <see cref="FarPlane"/>; or the window is invalid.
+    /// </exception>
+    public ImagePlane GetImagePlane(int width, int height)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
+        ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
+        if (!(NearPlane < FarPlane))
+        {
+            throw new ArgumentException($"NearPlane ({NearPlane}) must be less than FarPlane ({FarPlane}).", nameof(NearPlane));
+        }
+
+        Double3 gaze = Target - Position;
+        if (!(gaze.LengthSquared > 0))
+        {
+            throw new ArgumentException($"Position and Target are the same point {Position}: there is no gaze direction.", nameof(Target));
+        }
+
+        Double3 w = -Double3.Normalize(gaze);
+        double upLength = Up.Length;
+        Double3 upCrossW = Double3.Cross(Up, w);
+        // |up × w| = |up| sin(angle): reject an up vector within ~1e-10 rad of the gaze axis.
+        if (!(upLength > 0) || !(upCrossW.Length > 1e-10 * upLength))
+        {
+            throw new ArgumentException($"Up {Up} is zero or parallel to the gaze {gaze}: the camera frame is undefined.", nameof(Up));
+        }
+
+        Double3 u = Double3.Normalize(upCrossW);
+        Double3 v = Double3.Cross(w, u);
+        Window window = GetWindow((double)width / height);
+        window.Validate(nameof(window));
+        return new ImagePlane(width, height, Position, u, v, w, window, PlaneDistance, IsOrthographic, NearPlane, FarPlane);
+    }
+
+    /// <summary>The window for an image of the given aspect ratio (width / height).</summary>
+    /// <param name="aspectRatio">Image width divided by image height.</param>
+    protected abstract Window GetWindow(double aspectRatio);
+
+    /// <summary>The distance s from <see cref="Position"/> to the projection plane (1 where it does not matter).</summary>
+    protected virtual double PlaneDistance => 1;
+
+    private static Double3 Finite(Double3 value, string name) =>
+        value.IsFinite ? value : throw new ArgumentException($"{name} must be finite, got {value}.", name);
+}

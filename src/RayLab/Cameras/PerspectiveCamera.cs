@@ -1,0 +1,56 @@
+namespace RayLab.Cameras;
+
+/// <summary>
+/// The lab's perspective camera (section 3.2): rays from the eye e through the window on a plane at distance
+/// s in front of it. The window follows from <see cref="Camera.Fov"/> and the image's aspect ratio (square
+/// pixels, centred), unless <see cref="Window"/> sets it explicitly (an off-axis view).
+/// </summary>
+public sealed class PerspectiveCamera : Camera
+{
+    private readonly double _distance = 1;
+    private readonly Window? _window;
+
+    /// <summary>The plane distance s, &gt; 0. Default 1.</summary>
+    /// <exception cref="ArgumentException">The value is not positive or not finite.</exception>
+    public double Distance
+    {
+        get => _distance;
+        init => _distance = value > 0 && double.IsFinite(value)
+            ? value
+            : throw new ArgumentException($"Distance must be a finite number > 0, got {value}.", nameof(Distance));
+    }
+
+    /// <summary>An explicit window (u0, v0, u1, v1) on the plane at <see cref="Distance"/>; overrides the field of view.</summary>
+    /// <exception cref="ArgumentException">The window is empty, inverted or not finite.</exception>
+    public Window? Window
+    {
+        get => _window;
+        init
+        {
+            value?.Validate(nameof(Window));
+            _window = value;
+        }
+    }
+
+    /// <inheritdoc />
+    public override bool IsOrthographic => false;
+
+    /// <inheritdoc />
+    protected override double PlaneDistance => Distance;
+
+    /// <summary>
+    /// The explicit window, or the centred one with <c>(v1 − v0)/(2 s) = tan(Fov/2)</c> and
+    /// <c>(u1 − u0)/(v1 − v0) = W/H</c>.
+    /// </summary>
+    /// <param name="aspectRatio">Image width / height.</param>
+    protected override Window GetWindow(double aspectRatio)
+    {
+        if (_window is { } window)
+        {
+            return window;
+        }
+
+        double v1 = Distance * Math.Tan(Fov * Math.PI / 360.0);
+        return new Window(-v1 * aspectRatio, -v1, v1 * aspectRatio, v1);
+    }
+}

@@ -1,0 +1,130 @@
+using System.Runtime.InteropServices;
+
+namespace RayLab.Imaging;
+
+/// <summary>
+/// The lab's image ("obraz", section 2.2): W×H pixels of 8-bit RGB, kept as tightly packed RGB24 rows, top
+/// row first — the layout ImageSharp's <c>Image.LoadPixelData&lt;Rgb24&gt;</c> takes. Intensities are
+/// converted on the way in by the lab's rule (<see cref="Intensity.ToLevel"/>).
+/// </summary>
+public sealed class Image
+{
+    /// <summary>The largest pixel buffer: one .NET array, <see cref="Array.MaxLength"/> bytes (about 715 million pixels).</summary>
+    public static long MaxBytes => Array.MaxLength;
+
+    private readonly byte[] _pixels;
+
+    /// <summary>Creates a black image.</summary>
+    /// <param name="width">Width W in pixels, ≥ 1.</param>
+    /// <param name="height">Height H in pixels, ≥ 1.</param>
+    /// <exception cref="ArgumentOutOfRangeException">A size is less than 1, or W·H·3 exceeds <see cref="MaxBytes"/>.</exception>
+    public Image(int width, int height)
+    {
+        CheckSize(width, height);
+        Width = width;
+        Height = height;
+        _pixels = new byte[(long)width * height * 3];
+    }
+
+    /// <summary>The width W in pixels.</summary>
+    public int Width { get; }
+
+    /// <summary>The height H in pixels.</summary>
+    public int Height { get; }
+
+    /// <summary>Throws unless a <paramref name="width"/>×<paramref name="height"/> image can be allocated.</summary>
+    /// <param name="width">Width in pixels.</param>
+    /// <param name="height">Height in pixels.</param>
+    /// <exception cref="ArgumentOutOfRangeException">A size is less than 1, or W·H·3 exceeds <see cref="MaxBytes"/>.</exception>
+    public static void CheckSize(int width, int height)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
+        ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
+        if ((long)width * height * 3 > MaxBytes)
+        {
+            throw new ArgumentOutOfRangeException(nameof(width), $"{width}×{height} is too large: W·H·3 must be at most {MaxBytes:N0} bytes.");
+        }
+    }
+
+    /// <summary>All pixels as bytes R, G, B, …, row 0 (the top row) first, with no padding between rows.</summary>
+    public Span<byte> PixelBytes => _pixels;
+
+    /// <summary>Row <paramref name="y"/> (0 at the top) as pixels, for writing a whole row at once.</summary>
+    /// <param name="y">The row.</param>
+    /// <exception cref="ArgumentOutOfRangeException">The row is outside the image.</exception>
+    public Span<Rgb24> GetRowSpan(int y)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(y);
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(y, Height);
+        return MemoryMarshal.Cast<byte, Rgb24>(_pixels.AsSpan(y * 3 * Width, 3 * Width));
+    }
+
+    /// <summary>Sets pixel (x, y) from an intensity by the lab's 8-bit rule.</summary>
+    /// <param name="x">Column, 0 at the left.</param>
+    /// <param name="y">Row, 0 at the top.</param>
+    /// <param name="value">The intensity.</param>
+    /// <exception cref="ArgumentOutOfRangeException">(x, y) is outside the image.</exception>
+    public void SetPixel(int x, int y, Intensity value) => GetRowSpan(y)[CheckX(x)] = Rgb24.FromIntensity(value);
+
+    /// <summary>The 8-bit value of pixel (x, y).</summary>
+    /// <param name="x">Column, 0 at the left.</param>
+    /// <param name="y">Row, 0 at the top.</param>
+    /// <exception cref="ArgumentOutOfRangeException">(x, y) is outside the image.</exception>
+    public Rgb24 GetPixel(int x, int y) => GetRowSpan(y)[CheckX(x)];
+
+    /// <summary>
+    /// Saves the image, choosing the format from the extension (<c>.png</c>, <c>.bmp</c>). The file is written
+    /// under a temporary name in the same folder and renamed, so a failure never leaves a partial file.
+    /// </summary>
+    /// <param name="path">The output path.</param>
+    /// <exception cref="NotSupportedException">The extension is not a supported format.</exception>
+    /// <exception cref="IOException">The folder does not exist or cannot be written.</exception>
+    public void Save(string path)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(path);
+        ImageFormat format = ImageFormat.FromPath(path);
+        string full = Path.GetFullPath(path);
+        string temp = Path.Combine(Path.GetDirectoryName(full) ?? ".", $".{Path.GetFileName(full)}.{Guid.NewGuid():N}.tmp");
+        try
+        {
+            using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None))
+            {
+                Save(stream, format);
+                stream.Flush(flushToDisk: true);
+            }
+
+            File.Move(temp, full, overwrite: true);
+        }
+        catch
+        {
+            File.Delete(temp);
+            throw;
+        }
+    }
+
+    /// <summary>Writes the image to a stream in the given format.</summary>
+    /// <param name="stream">A writable stream.</param>
+    /// <param name="format">The format.</param>
+    public void Save(Stream stream, ImageFormat format)
+    {
+        ArgumentNullException.ThrowIfNull(stream);
+        switch (format)
+        {
+            case ImageFormat.Png:
+                PngEncoder.Write(stream, this);
+                break;
+            case ImageFormat.Bmp:
+                BmpEncoder.Write(stream, this);
+                break;
+            default:
+                throw new ArgumentOutOfRangeException(nameof(format), format, "Unknown image format.");
+        }
+    }
+
+    private int CheckX(int x)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(x);
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(x, Width);
+        return x;
+    }
+}

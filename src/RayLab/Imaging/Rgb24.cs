@@ -1,0 +1,16 @@
+using System.Runtime.InteropServices;
+
+namespace RayLab.Imaging;
+
+/// <summary>One 8-bit-per-channel pixel, laid out R, G, B in 3 bytes (ImageSharp's <c>Rgb24</c> layout).</summary>
+/// <param name="R">Red level.</param>
+/// <param name="G">Green level.</param>
+/// <param name="B">Blue level.</param>
+[StructLayout(LayoutKind.Sequential, Pack = 1)]
+public readonly record struct Rgb24(byte R, byte G, byte B)
+{
+    /// <summary>Converts an intensity by the lab's rule <c>int(256·I)</c> clamped to 0..255 (<see cref="Intensity.ToLevel"/>).</summary>
+    /// <param name="intensity">The intensity.</param>
+    public static Rgb24 FromIntensity(Intensity intensity) =>
+        new(Intensity.ToLevel(intensity.R), Intensity.ToLevel(intensity.G), Intensity.ToLevel(intensity.B));
+}

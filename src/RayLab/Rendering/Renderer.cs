@@ -1,0 +1,85 @@
+using System.Diagnostics;
+using RayLab.Cameras;
+using RayLab.Geometry;
+using RayLab.Imaging;
+using RayLab.Sampling;
+
+namespace RayLab.Rendering;
+
+/// <summary>
+/// Renders a scene through a camera into an image: a <see cref="Parallel.For(int, int, Action{int})"/> over
+/// rows (the lab's render loop), each row written straight into the image's row span. Each pixel is the mean
+/// of its samples; every sample is independent of the thread that takes it, so the bytes are the same
+/// whatever <see cref="MaxDegreeOfParallelism"/> is.
+/// </summary>
+public sealed class Renderer
+{
+    private readonly int _threads = -1;
+
+    /// <summary>The most threads to use; −1 (the default) means as many as the runtime likes.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">The value is 0 or less than −1.</exception>
+    public int MaxDegreeOfParallelism
+    {
+        get => _threads;
+        init => _threads = value == -1 || value >= 1
+            ? value
+            : throw new ArgumentOutOfRangeException(nameof(MaxDegreeOfParallelism), value, "Use −1 (all cores) or a count ≥ 1.");
+    }
+
+    /// <summary>Renders <paramref name="scene"/> into <paramref name="image"/>, sized by the image.</summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="sampler">Where the samples go in each pixel.</param>
+    /// <param name="image">The image to fill; its size sets the camera's window.</param>
+    /// <returns>Rays traced and render time.</returns>
+    /// <exception cref="ArgumentException">The camera's settings do not form a valid view (see <see cref="Camera.GetImagePlane"/>).</exception>
+    public RenderStatistics Render(Scene scene, Camera camera, IPixelSampler sampler, Image image)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(camera);
+        ArgumentNullException.ThrowIfNull(sampler);
+        ArgumentNullException.ThrowIfNull(image);
+        ImagePlane plane = camera.GetImagePlane(image.Width, image.Height);
+        var options = new ParallelOptions { MaxDegreeOfParallelism = MaxDegreeOfParallelism };
+        long rays = 0;
+        var clock = Stopwatch.StartNew();
+        Parallel.For(0, image.Height, options, row =>
+        {
+            Span<Rgb24> pixels = image.GetRowSpan(row);
+            for (int x = 0; x < pixels.Length; x++)
+            {
+                pixels[x] = Rgb24.FromIntensity(RenderPixel(scene, plane, sampler, x, row));
+            }
+
+            Interlocked.Add(ref rays, (long)pixels.Length * sampler.SamplesPerPixel);
+        });
+        clock.Stop();
+        return new RenderStatistics(rays, clock.Elapsed);
+    }
+
+    /// <summary>The mean of a pixel's samples, in linear intensity (before the 8-bit rule).</summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="plane">The camera's image plane.</param>
+    /// <param name="sampler">The sampler.</param>
+    /// <param name="x">The pixel column.</param>
+    /// <param name="row">The pixel row, 0 at the top.</param>
+    public static Intensity RenderPixel(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(plane);
+        ArgumentNullException.ThrowIfNull(sampler);
+        int n = sampler.SamplesPerPixel;
+        double r = 0, g = 0, b = 0;
+        for (int i = 0; i < n; i++)
+        {
+            SamplePoint s = sampler.GetSample(x, row, i);
+            Ray ray = plane.GetPixelRay(x, row, s.X, s.Y);
+            Intensity value = scene.Trace(ray, plane.TMin, plane.TMax);
+            r += value.R;
+            g += value.G;
+            b += value.B;
+        }
+
+        return new Intensity(r / n, g / n, b / n);
+    }
+}

@@ -1,0 +1,304 @@
+using System.Text.Json;
+using RayLab.Cameras;
+using RayLab.Geometry;
+
+namespace RayLab.Scenes;
+
+/// <summary>
+/// Reads scene files: JSON (comments and trailing commas allowed) with the fields <c>image</c>,
+/// <c>background</c>, <c>ambient</c>, <c>camera</c>, <c>spheres</c> and <c>sampler</c>; see the README.
+/// Strict: a missing required field, a wrong type, a non-finite or out-of-range number and an unknown field
+/// are all errors that name the file and the field.
+/// </summary>
+public static class SceneFile
+{
+    private static readonly JsonDocumentOptions Options = new()
+    {
+        CommentHandling = JsonCommentHandling.Skip,
+        AllowTrailingCommas = true,
+        MaxDepth = 16,
+    };
+
+    /// <summary>Reads and checks a scene file.</summary>
+    /// <param name="path">The file.</param>
+    /// <exception cref="SceneFileException">The file cannot be read, is not valid JSON, or a field is wrong.</exception>
+    public static SceneDescription Load(string path)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(path);
+        string text;
+        try
+        {
+            text = File.ReadAllText(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
+        {
+            throw new SceneFileException(path, "", $"cannot read the file: {e.Message}", e);
+        }
+
+        return Parse(text, path);
+    }
+
+    /// <summary>Parses and checks scene JSON.</summary>
+    /// <param name="json">The JSON text.</param>
+    /// <param name="source">A name for the source in messages (a file name).</param>
+    /// <exception cref="SceneFileException">The text is not valid JSON, or a field is wrong.</exception>
+    public static SceneDescription Parse(string json, string source = "scene")
+    {
+        ArgumentNullException.ThrowIfNull(json);
+        JsonDocument document;
+        try
+        {
+            document = JsonDocument.Parse(json, Options);
+        }
+        catch (JsonException e)
+        {
+            throw new SceneFileException(source, "", $"not valid JSON: {e.Message}", e);
+        }
+
+        using (document)
+        {
+            var reader = new Reader(source);
+            SceneDescription description = reader.ReadRoot(document.RootElement);
+            description.Prepare(); // cross-field checks (position = target, near ≥ far, …) with field names
+            return description;
+        }
+    }
+
+    /// <summary>Walks the JSON, keeping the path of the current field for messages.</summary>
+    private sealed class Reader(string source)
+    {
+        public SceneDescription ReadRoot(JsonElement root)
+        {
+            JsonElement obj = Object(root, "(root)");
+            Only(obj, "", "image", "background", "ambient", "camera", "spheres", "sampler");
+
+            JsonElement image = Object(Required(obj, "", "image"), "image");
+            Only(image, "image", "width", "height");
+            int width = Int(Required(image, "image", "width"), "image.width", 1, 1 << 20);
+            int height = Int(Required(image, "image", "height"), "image.height", 1, 1 << 20);
+
+            Intensity background = Optional(obj, "background") is { } bg ? Color(bg, "background") : Intensity.Black;
+            Intensity ambient = Optional(obj, "ambient") is { } am ? Color(am, "ambient") : Intensity.White;
+            CameraSettings camera = ReadCamera(Object(Required(obj, "", "camera"), "camera"));
+
+            JsonElement spheresJson = Required(obj, "", "spheres");
+            if (spheresJson.ValueKind != JsonValueKind.Array)
+            {
+                throw Error("spheres", $"must be an array of spheres, got {Describe(spheresJson)}");
+            }
+
+            var spheres = new List<Sphere>();
+            int index = 0;
+            foreach (JsonElement item in spheresJson.EnumerateArray())
+            {
+                spheres.Add(ReadSphere(item, $"spheres[{index++}]"));
+            }
+
+            SamplerSettings sampler = Optional(obj, "sampler") is { } s ? ReadSampler(Object(s, "sampler")) : SamplerSettings.Default;
+            return new SceneDescription(source, width, height, new Scene(spheres, background, ambient), camera, sampler);
+        }
+
+        private CameraSettings ReadCamera(JsonElement camera)
+        {
+            Only(camera, "camera", "type", "position", "target", "up", "fov", "height", "near", "far", "distance", "window");
+            string type = Name(Required(camera, "camera", "type"), "camera.type", CameraSettings.Types);
+            Double3 position = Vector(Required(camera, "camera", "position"), "camera.position");
+            Double3 target = Vector(Required(camera, "camera", "target"), "camera.target");
+            Double3 up = Optional(camera, "up") is { } u ? Vector(u, "camera.up") : Double3.UnitY;
+            double fov = Optional(camera, "fov") is { } f ? Number(f, "camera.fov") : 60;
+            if (!(fov > 0 && fov < 180))
+            {
+                throw Error("camera.fov", $"must be between 0 and 180 degrees (exclusive), got {fov}");
+            }
+
+            double height = Optional(camera, "height") is { } h ? Positive(h, "camera.height") : 2;
+            double near = Optional(camera, "near") is { } n ? Number(n, "camera.near") : 1;
+            if (near < 0)
+            {
+                throw Error("camera.near", $"must be ≥ 0, got {near}");
+            }
+
+            double far = Optional(camera, "far") is { } fa ? Positive(fa, "camera.far") : 1000;
+            if (!(near < far))
+            {
+                throw Error("camera.far", $"must be greater than camera.near ({near}), got {far}");
+            }
+
+            double distance = Optional(camera, "distance") is { } d ? Positive(d, "camera.distance") : 1;
+            Window? window = null;
+            if (Optional(camera, "window") is { } w)
+            {
+                double[] c = Numbers(w, "camera.window", 4);
+                if (!(c[2] > c[0]) || !(c[3] > c[1]))
+                {
+                    throw Error("camera.window", $"must be [u0, v0, u1, v1] with u1 > u0 and v1 > v0, got [{string.Join(", ", c)}]");
+                }
+
+                window = new Window(c[0], c[1], c[2], c[3]);
+            }
+
+            return new CameraSettings(type, position, target, up, fov, height, near, far, distance, window);
+        }
+
+        private Sphere ReadSphere(JsonElement element, string path)
+        {
+            JsonElement sphere = Object(element, path);
+            Only(sphere, path, "center", "radius", "color");
+            Double3 center = Vector(Required(sphere, path, "center"), path + ".center");
+            double radius = Number(Required(sphere, path, "radius"), path + ".radius");
+            if (radius < 0)
+            {
+                throw Error(path + ".radius", $"must be ≥ 0, got {radius}");
+            }
+
+            Intensity color = Color(Required(sphere, path, "color"), path + ".color");
+            return new Sphere(center, radius, color);
+        }
+
+        private SamplerSettings ReadSampler(JsonElement sampler)
+        {
+            Only(sampler, "sampler", "type", "samples", "seed");
+            string type = Name(Required(sampler, "sampler", "type"), "sampler.type", Sampling.Samplers.Names);
+            int samples = Optional(sampler, "samples") is { } s ? Int(s, "sampler.samples", 1, 1 << 16) : 1;
+            uint seed = 0;
+            if (Optional(sampler, "seed") is { } seedJson)
+            {
+                if (seedJson.ValueKind != JsonValueKind.Number || !seedJson.TryGetUInt32(out seed))
+                {
+                    throw Error("sampler.seed", $"must be an integer from 0 to {uint.MaxValue}, got {Describe(seedJson)}");
+                }
+            }
+
+            return new SamplerSettings(type, samples, seed);
+        }
+
+        private JsonElement Object(JsonElement element, string path) =>
+            element.ValueKind == JsonValueKind.Object ? element : throw Error(path, $"must be an object, got {Describe(element)}");
+
+        private JsonElement Required(JsonElement obj, string parent, string name) =>
+            obj.TryGetProperty(name, out JsonElement value) ? value : throw Error(Join(parent, name), "is required but missing");
+
+        private static JsonElement? Optional(JsonElement obj, string name) =>
+            obj.TryGetProperty(name, out JsonElement value) && value.ValueKind != JsonValueKind.Null ? value : null;
+
+        private void Only(JsonElement obj, string parent, params string[] allowed)
+        {
+            var seen = new HashSet<string>(StringComparer.Ordinal);
+            foreach (JsonProperty property in obj.EnumerateObject())
+            {
+                if (Array.IndexOf(allowed, property.Name) < 0)
+                {
+                    throw Error(Join(parent, property.Name), $"unknown field; expected one of: {string.Join(", ", allowed)}");
+                }
+
+                if (!seen.Add(property.Name))
+                {
+                    throw Error(Join(parent, property.Name), "appears more than once");
+                }
+            }
+        }
+
+        private double Number(JsonElement element, string path)
+        {
+            if (element.ValueKind != JsonValueKind.Number)
+            {
+                throw Error(path, $"must be a number, got {Describe(element)}");
+            }
+
+            if (!element.TryGetDouble(out double value) || !double.IsFinite(value))
+            {
+                throw Error(path, $"must be a finite number, got {element.GetRawText()}");
+            }
+
+            return value;
+        }
+
+        private double Positive(JsonElement element, string path)
+        {
+            double value = Number(element, path);
+            return value > 0 ? value : throw Error(path, $"must be > 0, got {value}");
+        }
+
+        private int Int(JsonElement element, string path, int min, int max)
+        {
+            if (element.ValueKind != JsonValueKind.Number)
+            {
+                throw Error(path, $"must be an integer, got {Describe(element)}");
+            }
+
+            if (!element.TryGetInt64(out long value))
+            {
+                throw Error(path, $"must be an integer from {min} to {max}, got {element.GetRawText()}");
+            }
+
+            return value >= min && value <= max
+                ? (int)value
+                : throw Error(path, $"must be an integer from {min} to {max}, got {value}");
+        }
+
+        private double[] Numbers(JsonElement element, string path, int count)
+        {
+            if (element.ValueKind != JsonValueKind.Array || element.GetArrayLength() != count)
+            {
+                throw Error(path, $"must be an array of {count} numbers, got {Describe(element)}");
+            }
+
+            var values = new double[count];
+            for (int i = 0; i < count; i++)
+            {
+                values[i] = Number(element[i], $"{path}[{i}]");
+            }
+
+            return values;
+        }
+
+        private Double3 Vector(JsonElement element, string path)
+        {
+            double[] v = Numbers(element, path, 3);
+            return new Double3(v[0], v[1], v[2]);
+        }
+
+        private Intensity Color(JsonElement element, string path)
+        {
+            double[] v = Numbers(element, path, 3);
+            for (int i = 0; i < 3; i++)
+            {
+                if (v[i] < 0)
+                {
+                    throw Error($"{path}[{i}]", $"must be ≥ 0, got {v[i]}");
+                }
+            }
+
+            return new Intensity(v[0], v[1], v[2]);
+        }
+
+        private string Name(JsonElement element, string path, IReadOnlyList<string> allowed)
+        {
+            if (element.ValueKind != JsonValueKind.String)
+            {
+                throw Error(path, $"must be a string, one of: {string.Join(", ", allowed)}; got {Describe(element)}");
+            }
+
+            string value = element.GetString()!;
+            return allowed.Contains(value, StringComparer.Ordinal)
+                ? value
+                : throw Error(path, $"unknown value '{value}'; expected one of: {string.Join(", ", allowed)}");
+        }
+
+        private SceneFileException Error(string path, string problem) => new(source, path, problem);
+
+        private static string Join(string parent, string name) => parent.Length == 0 ? name : $"{parent}.{name}";
+
+        private static string Describe(JsonElement element) => element.ValueKind switch
+        {
+            JsonValueKind.Array => $"an array of {element.GetArrayLength()}",
+            JsonValueKind.Object => "an object",
+            JsonValueKind.String => $"the string \"{Truncate(element.GetString()!)}\"",
+            JsonValueKind.Number => $"the number {element.GetRawText()}",
+            JsonValueKind.True or JsonValueKind.False => element.GetRawText(),
+            _ => "null",
+        };
+
+        private static string Truncate(string s) => s.Length <= 40 ? s : s[..40] + "…";
+    }
+}
