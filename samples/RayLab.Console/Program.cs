@@ -46,20 +46,22 @@ public static class Program
     {
         var scene = new Argument<string>("scene") { Description = "The scene file (JSON; see the README for its fields)." };
         var output = new Option<string>("--output", "-o") { Description = "The image to write; the format follows the extension (.png, .bmp).", Required = true };
-        var camera = new Option<string?>("--camera") { Description = "Override the scene's camera type.", HelpName = "orthographic|perspective" };
-        camera.AcceptOnlyFromAmong([.. CameraSettings.Types]);
-        var sampler = new Option<string?>("--sampler") { Description = "Override the scene's sampler.", HelpName = string.Join('|', Samplers.Names) };
-        sampler.AcceptOnlyFromAmong([.. Samplers.Names]);
+        var camera = new Option<string?>("--camera") { Description = "Override the scene's camera type.", HelpName = string.Join('|', CameraSettings.Types) };
+        var sampler = new Option<string?>("--sampler") { Description = "Override the scene's sampler.", HelpName = string.Join('|', SamplerSettings.Types) };
         var samples = new Option<int?>("--samples") { Description = "Samples per pixel, ≥ 1 (a perfect square for regular and jittered).", HelpName = "N" };
         var seed = new Option<uint?>("--seed") { Description = "The sampler's seed, 0 to 4294967295.", HelpName = "S" };
         var threads = new Option<int?>("--threads") { Description = "Render threads, ≥ 1 (default: all cores).", HelpName = "T" };
         var width = new Option<int?>("--width") { Description = "Override the image width, ≥ 1.", HelpName = "W" };
         var height = new Option<int?>("--height") { Description = "Override the image height, ≥ 1.", HelpName = "H" };
         var stats = new Option<string?>("--stats") { Description = "Also write render statistics as JSON (rays, renderMs, encodeMs, …).", HelpName = "STATS.json" };
+        var minDepth = new Option<int?>("--min-depth") { Description = $"Adaptive: subdivide every pixel at least this deep, 0 to the maximum depth (default 0).", HelpName = "M" };
+        var maxDepth = new Option<int?>("--max-depth") { Description = $"Adaptive: never subdivide deeper, 0 to {AdaptiveSampler.MaxSupportedDepth} (default 3).", HelpName = "D" };
+        var contrast = new Option<double?>("--contrast") { Description = "Adaptive: split where values differ by more than this in a channel, ≥ 0 (default 0.1).", HelpName = "C" };
+        var heatmap = new Option<string?>("--heatmap") { Description = "Also write the primary rays spent per pixel as a picture with a legend (.png, .bmp).", HelpName = "HEAT.png" };
 
         var render = new Command("render", "Render a scene file into an image.")
         {
-            scene, output, camera, sampler, samples, seed, threads, width, height, stats,
+            scene, output, camera, sampler, samples, seed, threads, width, height, stats, minDepth, maxDepth, contrast, heatmap,
         };
         render.SetAction(result => RenderJob.Run(
             new RenderRequest(
@@ -72,13 +74,17 @@ public static class Program
                 result.GetValue(threads),
                 result.GetValue(width),
                 result.GetValue(height),
-                result.GetValue(stats)),
+                result.GetValue(stats),
+                result.GetValue(minDepth),
+                result.GetValue(maxDepth),
+                result.GetValue(contrast),
+                result.GetValue(heatmap)),
             stdout,
             stderr));
 
         var root = new RootCommand(
             "RayLab: the photorealistic-rendering lab's ray tracer. With no command, renders the two-sphere scene "
-            + "with the orthographic and the perspective camera into out/.")
+            + "with the orthographic and the perspective camera, adaptive antialiasing, into out/ (with heat maps).")
         {
             render,
         };

@@ -14,8 +14,9 @@ public static class RenderJob
     public static string DefaultScenePath => Path.Combine(AppContext.BaseDirectory, "scenes", "two-spheres.json");
 
     /// <summary>
-    /// The no-argument run: the two-sphere scene with the orthographic and the perspective camera, into
-    /// <c>out/two-spheres-orthographic.png</c> and <c>out/two-spheres-perspective.png</c>.
+    /// The no-argument run: the two-sphere scene with the orthographic and the perspective camera and the scene's
+    /// adaptive sampler, into <c>out/two-spheres-orthographic.png</c> and <c>out/two-spheres-perspective.png</c>,
+    /// with the heat maps <c>out/two-spheres-{camera}-heatmap.png</c>.
     /// </summary>
     /// <param name="stdout">Where the summary lines go.</param>
     /// <param name="stderr">Where errors go.</param>
@@ -25,7 +26,9 @@ public static class RenderJob
         Directory.CreateDirectory("out");
         foreach (string camera in CameraSettings.Types.Reverse())
         {
-            int code = Run(new RenderRequest(DefaultScenePath, Path.Combine("out", $"two-spheres-{camera}.png"), Camera: camera), stdout, stderr);
+            var request = new RenderRequest(DefaultScenePath, Path.Combine("out", $"two-spheres-{camera}.png"), Camera: camera,
+                HeatmapPath: Path.Combine("out", $"two-spheres-{camera}-heatmap.png"));
+            int code = Run(request, stdout, stderr);
             if (code != 0)
             {
                 return code;
@@ -65,7 +68,21 @@ public static class RenderJob
         if (request.StatsPath is not null)
         {
             CheckOutputPath(request.StatsPath, "--stats", requireImageFormat: false);
+            CheckDistinct(request.StatsPath, "--stats", request.OutputPath, "--output");
         }
+
+        if (request.HeatmapPath is not null)
+        {
+            CheckOutputPath(request.HeatmapPath, "--heatmap", requireImageFormat: true);
+            CheckDistinct(request.HeatmapPath, "--heatmap", request.OutputPath, "--output");
+            if (request.StatsPath is not null)
+            {
+                CheckDistinct(request.HeatmapPath, "--heatmap", request.StatsPath, "--stats");
+            }
+        }
+
+        CheckChoice(request.Camera, "--camera", "camera", CameraSettings.Types);
+        CheckChoice(request.Sampler, "--sampler", "sampler", SamplerSettings.Types);
 
         if (request.Threads is < 1)
         {
@@ -84,12 +101,17 @@ public static class RenderJob
         }
 
         Image image = prepared.CreateImage();
+        float[]? raysPerPixel = request.HeatmapPath is null ? null : new float[(long)image.Width * image.Height];
         var renderer = new Renderer { MaxDegreeOfParallelism = request.Threads ?? -1 };
-        RenderStatistics stats = renderer.Render(prepared.Scene, prepared.Camera, prepared.Sampler, image);
+        RenderStatistics stats = prepared.Render(renderer, image, raysPerPixel);
 
         var encodeClock = Stopwatch.StartNew();
         image.Save(request.OutputPath);
         double encodeMs = encodeClock.Elapsed.TotalMilliseconds;
+        if (raysPerPixel is not null)
+        {
+            HeatMap.Render(raysPerPixel, image.Width, image.Height).Save(request.HeatmapPath!);
+        }
 
         if (request.StatsPath is not null)
         {
@@ -97,8 +119,8 @@ public static class RenderJob
         }
 
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"{request.OutputPath}: {image.Width}×{image.Height}, {prepared.Camera.Name} camera, {prepared.Sampler.Name} {prepared.Sampler.SamplesPerPixel} spp, "
-            + $"{stats.PrimaryRays:N0} rays, render {stats.RenderTime.TotalMilliseconds:F1} ms ({stats.RaysPerSecond / 1e6:F1} Mrays/s), encode {encodeMs:F1} ms"));
+            $"{request.OutputPath}: {image.Width}×{image.Height}, {prepared.Camera.Name} camera, {prepared.SamplerDescription}, "
+            + $"{stats.PrimaryRays:N0} rays ({stats.PrimaryRays / ((double)image.Width * image.Height):F2}/px), render {stats.RenderTime.TotalMilliseconds:F1} ms ({stats.RaysPerSecond / 1e6:F1} Mrays/s), encode {encodeMs:F1} ms"));
     }
 
     private static SceneDescription ApplyOverrides(SceneDescription d, RenderRequest r)
@@ -108,13 +130,19 @@ public static class RenderJob
             d = d with { Camera = d.Camera with { Type = r.Camera } };
         }
 
-        if (r.Sampler is not null || r.Samples is not null || r.Seed is not null)
+        SamplerSettings s = d.Sampler;
+        d = d with
         {
-            d = d with
+            Sampler = s with
             {
-                Sampler = new SamplerSettings(r.Sampler ?? d.Sampler.Type, r.Samples ?? d.Sampler.Samples, r.Seed ?? d.Sampler.Seed),
-            };
-        }
+                Type = r.Sampler ?? s.Type,
+                Samples = r.Samples ?? s.Samples,
+                Seed = r.Seed ?? s.Seed,
+                MinDepth = r.MinDepth ?? s.MinDepth,
+                MaxDepth = r.MaxDepth ?? s.MaxDepth,
+                Contrast = r.Contrast ?? s.Contrast,
+            },
+        };
 
         return d with { Width = r.Width ?? d.Width, Height = r.Height ?? d.Height };
     }
@@ -124,11 +152,33 @@ public static class RenderJob
     {
         "image.width" when r.Width is not null => "--width",
         "image.height" when r.Height is not null => "--height",
+        "image" when r.Width is not null && r.Height is not null => "--width/--height",
+        "image" when r.Height is not null => "--height",
+        "image" when r.Width is not null => "--width",
+        "sampler.minDepth" when r.MinDepth is not null => "--min-depth",
+        "sampler.maxDepth" when r.MaxDepth is not null => "--max-depth",
+        "sampler.contrast" when r.Contrast is not null => "--contrast",
         "camera.type" when r.Camera is not null => "--camera",
         "sampler.type" when r.Sampler is not null => "--sampler",
         "sampler.samples" when r.Samples is not null || r.Sampler is not null => "--samples",
         _ => null,
     };
+
+    private static void CheckChoice(string? value, string option, string what, IReadOnlyList<string> allowed)
+    {
+        if (value is not null && !allowed.Contains(value, StringComparer.Ordinal))
+        {
+            throw new UsageException($"{option}: unknown {what} '{value}'; expected one of: {string.Join(", ", allowed)}");
+        }
+    }
+
+    private static void CheckDistinct(string path, string option, string other, string otherOption)
+    {
+        if (string.Equals(Path.GetFullPath(path), Path.GetFullPath(other), StringComparison.Ordinal))
+        {
+            throw new UsageException($"{option}: '{path}' is the same file as {otherOption}");
+        }
+    }
 
     private static void CheckOutputPath(string path, string option, bool requireImageFormat)
     {
@@ -170,9 +220,13 @@ public static class RenderJob
             width = prepared.Description.Width,
             height = prepared.Description.Height,
             camera = prepared.Camera.Name,
-            sampler = prepared.Sampler.Name,
-            samplesPerPixel = prepared.Sampler.SamplesPerPixel,
-            seed = prepared.Sampler.Seed,
+            sampler = prepared.SamplerName,
+            samplesPerPixel = prepared.SamplesPerPixel,
+            seed = prepared.Sampler?.Seed ?? 0,
+            minDepth = prepared.Adaptive?.MinDepth,
+            maxDepth = prepared.Adaptive?.MaxDepth,
+            contrast = prepared.Adaptive?.Contrast,
+            raysPerPixel = stats.PrimaryRays / ((double)prepared.Description.Width * prepared.Description.Height),
             threads = request.Threads ?? Environment.ProcessorCount,
             rays = stats.PrimaryRays,
             renderMs = stats.RenderTime.TotalMilliseconds,
@@ -181,5 +235,5 @@ public static class RenderJob
         AtomicFile.WriteAllText(request.StatsPath!, JsonSerializer.Serialize(json, StatsJson) + Environment.NewLine);
     }
 
-    private static readonly JsonSerializerOptions StatsJson = new() { WriteIndented = true };
+    private static readonly JsonSerializerOptions StatsJson = new() { WriteIndented = true, DefaultIgnoreCondition = System.Text.Json.Serialization.JsonIgnoreCondition.WhenWritingNull };
 }

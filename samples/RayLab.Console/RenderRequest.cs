@@ -11,6 +11,11 @@ namespace RayLab.Cli;
 /// <param name="Width">Width override.</param>
 /// <param name="Height">Height override.</param>
 /// <param name="StatsPath">Where to write statistics JSON.</param>
+/// <param name="MinDepth">Adaptive minimum depth override.</param>
+/// <param name="MaxDepth">Adaptive maximum depth override.</param>
+/// <param name="Contrast">Adaptive contrast override.</param>
+/// <param name="HeatmapPath">Where to write the rays-per-pixel heat map.</param>
 public sealed record RenderRequest(
     string ScenePath, string OutputPath, string? Camera = null, string? Sampler = null, int? Samples = null,
-    uint? Seed = null, int? Threads = null, int? Width = null, int? Height = null, string? StatsPath = null);
+    uint? Seed = null, int? Threads = null, int? Width = null, int? Height = null, string? StatsPath = null,
+    int? MinDepth = null, int? MaxDepth = null, double? Contrast = null, string? HeatmapPath = null);

@@ -35,14 +35,17 @@ public sealed class Image
     /// <summary>Throws unless a <paramref name="width"/>×<paramref name="height"/> image can be allocated.</summary>
     /// <param name="width">Width in pixels.</param>
     /// <param name="height">Height in pixels.</param>
-    /// <exception cref="ArgumentOutOfRangeException">A size is less than 1, or W·H·3 exceeds <see cref="MaxBytes"/>.</exception>
+    /// <exception cref="ArgumentOutOfRangeException">
+    /// A size is less than 1 (the exception names <c>width</c> or <c>height</c>), or W·H·3 exceeds
+    /// <see cref="MaxBytes"/> (it names <c>size</c>).
+    /// </exception>
     public static void CheckSize(int width, int height)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
         ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
         if ((long)width * height * 3 > MaxBytes)
         {
-            throw new ArgumentOutOfRangeException(nameof(width), $"{width}×{height} is too large: W·H·3 must be at most {MaxBytes:N0} bytes.");
+            throw new ArgumentOutOfRangeException("size", $"{width}×{height} is too large: W·H·3 must be at most {MaxBytes:N0} bytes.");
         }
     }
 

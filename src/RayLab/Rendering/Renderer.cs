@@ -57,6 +57,56 @@ public sealed class Renderer
         return new RenderStatistics(rays, clock.Elapsed);
     }
 
+    /// <summary>
+    /// Renders with the lab's adaptive antialiasing (<see cref="AdaptiveSampler"/>): pixel corners are traced
+    /// once for the whole image, then each pixel is subdivided where its values disagree.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="sampler">The adaptive settings.</param>
+    /// <param name="image">The image to fill.</param>
+    /// <param name="raysPerPixel">
+    /// Optional, W·H long, row 0 first: receives the rays charged to each pixel — its centre and the points
+    /// inside it, with each pixel corner counted ¼ and each point on a pixel edge ½ (they are shared).
+    /// </param>
+    /// <returns>Rays traced (each point once) and render time.</returns>
+    /// <exception cref="ArgumentException"><paramref name="raysPerPixel"/> has the wrong length, or the camera is invalid.</exception>
+    public RenderStatistics Render(Scene scene, Camera camera, AdaptiveSampler sampler, Image image, float[]? raysPerPixel = null)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(camera);
+        ArgumentNullException.ThrowIfNull(sampler);
+        ArgumentNullException.ThrowIfNull(image);
+        if (raysPerPixel is not null && raysPerPixel.LongLength != (long)image.Width * image.Height)
+        {
+            throw new ArgumentException($"Expected {image.Width}×{image.Height} entries, got {raysPerPixel.Length}.", nameof(raysPerPixel));
+        }
+
+        ImagePlane plane = camera.GetImagePlane(image.Width, image.Height);
+        var options = new ParallelOptions { MaxDegreeOfParallelism = MaxDegreeOfParallelism };
+        var clock = Stopwatch.StartNew();
+        var lattice = new AdaptiveLattice(scene, plane, sampler.MaxDepth, options);
+        long interiorRays = 0;
+        Parallel.For(0, image.Height, options, () => new AdaptiveLattice.Source(lattice), (row, _, source) =>
+        {
+            Span<Rgb24> pixels = image.GetRowSpan(row);
+            for (int x = 0; x < pixels.Length; x++)
+            {
+                source.NextPixel();
+                Intensity value = AdaptivePixel.Evaluate(sampler, ref source, x, row, out double samples);
+                pixels[x] = Rgb24.FromIntensity(value);
+                if (raysPerPixel is not null)
+                {
+                    raysPerPixel[((long)row * pixels.Length) + x] = (float)samples;
+                }
+            }
+
+            return source;
+        }, source => Interlocked.Add(ref interiorRays, source.Rays));
+        clock.Stop();
+        return new RenderStatistics(lattice.SharedRays + interiorRays, clock.Elapsed);
+    }
+
     /// <summary>The mean of a pixel's samples, in linear intensity (before the 8-bit rule).</summary>
     /// <param name="scene">The scene.</param>
     /// <param name="plane">The camera's image plane.</param>

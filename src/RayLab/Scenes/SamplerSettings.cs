@@ -3,15 +3,28 @@ using RayLab.Sampling;
 namespace RayLab.Scenes;
 
 /// <summary>A scene file's <c>sampler</c> object.</summary>
-/// <param name="Type">The sampler name (see <see cref="Samplers.Names"/>).</param>
-/// <param name="Samples">Samples per pixel.</param>
-/// <param name="Seed">The seed.</param>
-public sealed record SamplerSettings(string Type, int Samples, uint Seed)
+/// <param name="Type">The sampler name (see <see cref="Types"/>).</param>
+/// <param name="Samples">Samples per pixel (point samplers).</param>
+/// <param name="Seed">The seed (point samplers with randomness).</param>
+/// <param name="MinDepth">Adaptive: the minimum subdivision depth.</param>
+/// <param name="MaxDepth">Adaptive: the maximum subdivision depth.</param>
+/// <param name="Contrast">Adaptive: the spatial contrast threshold.</param>
+public sealed record SamplerSettings(string Type, int Samples, uint Seed, int MinDepth = 0, int MaxDepth = 3, double Contrast = 0.1)
 {
+    /// <summary>Every sampler name a scene file or the console accepts: the point samplers and <c>adaptive</c>.</summary>
+    public static IReadOnlyList<string> Types { get; } = [.. Samplers.Names, "adaptive"];
+
     /// <summary>One ray through each pixel centre: the lab's first picture.</summary>
     public static SamplerSettings Default { get; } = new("regular", 1, 0);
 
-    /// <summary>Creates the sampler.</summary>
+    /// <summary>True for the lab's adaptive sampler.</summary>
+    public bool IsAdaptive => Type == "adaptive";
+
+    /// <summary>Creates the point sampler.</summary>
     /// <exception cref="ArgumentException">Unknown type or unusable sample count.</exception>
     public IPixelSampler CreateSampler() => Samplers.Create(Type, Samples, Seed);
+
+    /// <summary>Creates the adaptive sampler.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">A depth or the contrast is out of range.</exception>
+    public AdaptiveSampler CreateAdaptive() => new(MinDepth, MaxDepth, Contrast);
 }

@@ -1,5 +1,6 @@
 using RayLab.Cameras;
 using RayLab.Imaging;
+using RayLab.Rendering;
 using RayLab.Sampling;
 
 namespace RayLab.Scenes;
@@ -33,8 +34,9 @@ public sealed record SceneDescription(
             Camera camera = Camera.CreateCamera();
             camera.GetImagePlane(Width, Height);
             field = "sampler";
-            IPixelSampler sampler = Sampler.CreateSampler();
-            return new PreparedScene(this, camera, sampler);
+            return Sampler.IsAdaptive
+                ? new PreparedScene(this, camera, null, Sampler.CreateAdaptive())
+                : new PreparedScene(this, camera, Sampler.CreateSampler(), null);
         }
         catch (ArgumentException e)
         {
@@ -45,7 +47,8 @@ public sealed record SceneDescription(
     private static string FieldOf(string section, string? param) => (section, param) switch
     {
         ("image", "height") => "image.height",
-        ("image", _) => "image.width",
+        ("image", "width") => "image.width",
+        ("image", _) => "image",
         ("camera", "Target") => "camera.target",
         ("camera", "Up") => "camera.up",
         ("camera", "NearPlane") => "camera.near",
@@ -56,6 +59,9 @@ public sealed record SceneDescription(
         ("camera", "Window" or "window") => "camera.window",
         ("camera", "Type") => "camera.type",
         ("sampler", "name") => "sampler.type",
+        ("sampler", "minDepth") => "sampler.minDepth",
+        ("sampler", "maxDepth") => "sampler.maxDepth",
+        ("sampler", "contrast") => "sampler.contrast",
         ("sampler", _) => "sampler.samples",
         _ => section,
     };
@@ -71,9 +77,37 @@ public sealed record SceneDescription(
 /// <summary>A scene description with its camera and sampler built and checked, ready to render.</summary>
 /// <param name="Description">The settings it was built from.</param>
 /// <param name="Camera">The camera.</param>
-/// <param name="Sampler">The sampler.</param>
-public sealed record PreparedScene(SceneDescription Description, Camera Camera, IPixelSampler Sampler)
+/// <param name="Sampler">The point sampler, or null when the sampler is adaptive.</param>
+/// <param name="Adaptive">The adaptive settings, or null for a point sampler.</param>
+public sealed record PreparedScene(SceneDescription Description, Camera Camera, IPixelSampler? Sampler, AdaptiveSampler? Adaptive)
 {
+    /// <summary>The sampler's name (<c>jittered</c>, <c>adaptive</c>, …).</summary>
+    public string SamplerName => Sampler?.Name ?? Adaptive!.Name;
+
+    /// <summary>Samples per pixel of a point sampler; 0 for the adaptive one, whose count varies per pixel.</summary>
+    public int SamplesPerPixel => Sampler?.SamplesPerPixel ?? 0;
+
+    /// <summary>Describes the sampler, e.g. <c>jittered 16 spp</c> or <c>adaptive (depth 0–3, contrast 0.1)</c>.</summary>
+    public string SamplerDescription => Sampler is { } s ? $"{s.Name} {s.SamplesPerPixel} spp" : Adaptive!.ToString();
+
+    /// <summary>Renders into <paramref name="image"/> with whichever sampler this scene has.</summary>
+    /// <param name="renderer">The renderer (thread count).</param>
+    /// <param name="image">An image of the described size.</param>
+    /// <param name="raysPerPixel">Optional W·H array that receives the rays charged to each pixel.</param>
+    /// <returns>Rays traced and render time.</returns>
+    public RenderStatistics Render(Renderer renderer, Image image, float[]? raysPerPixel = null)
+    {
+        ArgumentNullException.ThrowIfNull(renderer);
+        if (Adaptive is not null)
+        {
+            return renderer.Render(Scene, Camera, Adaptive, image, raysPerPixel);
+        }
+
+        RenderStatistics stats = renderer.Render(Scene, Camera, Sampler!, image);
+        raysPerPixel?.AsSpan().Fill(Sampler!.SamplesPerPixel);
+        return stats;
+    }
+
     /// <summary>The scene.</summary>
     public Scene Scene => Description.Scene;
 

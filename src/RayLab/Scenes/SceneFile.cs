@@ -157,8 +157,8 @@ public static class SceneFile
 
         private SamplerSettings ReadSampler(JsonElement sampler)
         {
-            Only(sampler, "sampler", "type", "samples", "seed");
-            string type = Name(Required(sampler, "sampler", "type"), "sampler.type", Sampling.Samplers.Names);
+            Only(sampler, "sampler", "type", "samples", "seed", "minDepth", "maxDepth", "contrast");
+            string type = Name(Required(sampler, "sampler", "type"), "sampler.type", SamplerSettings.Types);
             int samples = Optional(sampler, "samples") is { } s ? Int(s, "sampler.samples", 1, 1 << 16) : 1;
             uint seed = 0;
             if (Optional(sampler, "seed") is { } seedJson)
@@ -169,7 +169,15 @@ public static class SceneFile
                 }
             }
 
-            return new SamplerSettings(type, samples, seed);
+            int maxDepth = Optional(sampler, "maxDepth") is { } max ? Int(max, "sampler.maxDepth", 0, Sampling.AdaptiveSampler.MaxSupportedDepth) : 3;
+            int minDepth = Optional(sampler, "minDepth") is { } min ? Int(min, "sampler.minDepth", 0, maxDepth) : 0;
+            double contrast = Optional(sampler, "contrast") is { } c ? Number(c, "sampler.contrast") : 0.1;
+            if (contrast < 0)
+            {
+                throw Error("sampler.contrast", $"must be ≥ 0, got {contrast}");
+            }
+
+            return new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast);
         }
 
         private JsonElement Object(JsonElement element, string path) =>

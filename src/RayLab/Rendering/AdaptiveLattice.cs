@@ -1,0 +1,114 @@
+using System.Collections.Concurrent;
+using RayLab.Cameras;
+using RayLab.Geometry;
+
+namespace RayLab.Rendering;
+
+/// <summary>
+/// The points an adaptive render traces, each once: the (W+1)×(H+1) pixel corners, traced up front; points on
+/// pixel edges, shared between the two pixels beside them (and so between threads); and points inside a
+/// pixel, kept only while that pixel is evaluated.
+/// </summary>
+internal sealed class AdaptiveLattice
+{
+    private readonly Scene _scene;
+    private readonly ImagePlane _plane;
+    private readonly long _size;
+    private readonly double _latticeWidth, _latticeHeight;
+    private readonly Intensity[] _corners;
+    private readonly ConcurrentDictionary<long, Lazy<Intensity>> _edges = new();
+    private long _edgeRays;
+
+    public AdaptiveLattice(Scene scene, ImagePlane plane, int maxDepth, ParallelOptions options)
+    {
+        _scene = scene;
+        _plane = plane;
+        _size = 1L << (maxDepth + 1);
+        _latticeWidth = plane.Width * (double)_size;
+        _latticeHeight = plane.Height * (double)_size;
+        int stride = plane.Width + 1;
+        _corners = new Intensity[(long)stride * (plane.Height + 1)];
+        Parallel.For(0, plane.Height + 1, options, j =>
+        {
+            for (int i = 0; i < stride; i++)
+            {
+                _corners[(j * stride) + i] = Trace(i * _size, j * _size);
+            }
+        });
+    }
+
+    /// <summary>Steps per pixel side.</summary>
+    public long Size => _size;
+
+    /// <summary>Rays traced for pixel corners and pixel-edge points so far.</summary>
+    public long SharedRays => _corners.LongLength + Interlocked.Read(ref _edgeRays);
+
+    public Intensity Corner(long lx, long ly) => _corners[((ly / _size) * (_plane.Width + 1)) + (lx / _size)];
+
+    public Intensity Edge(long lx, long ly)
+    {
+        long key = (ly * ((_plane.Width * _size) + 1)) + lx;
+        return _edges.GetOrAdd(key, _ => new Lazy<Intensity>(() =>
+        {
+            Interlocked.Increment(ref _edgeRays);
+            return Trace(lx, ly);
+        })).Value;
+    }
+
+    public Intensity Trace(long lx, long ly)
+    {
+        Ray ray = _plane.GetRay(lx / _latticeWidth, 1.0 - (ly / _latticeHeight));
+        return _scene.Trace(ray, _plane.TMin, _plane.TMax);
+    }
+
+    /// <summary>One thread's view: interior points cached per pixel, the rest from the shared lattice.</summary>
+    internal struct Source(AdaptiveLattice lattice) : ILatticeSource
+    {
+        private readonly Dictionary<long, Intensity> _interior = new();
+
+        /// <summary>Interior rays this thread traced.</summary>
+        public long Rays { get; private set; }
+
+        /// <summary>Forgets the previous pixel's interior points.</summary>
+        public readonly void NextPixel()
+        {
+            if (_interior.Count > 0)
+            {
+                _interior.Clear();
+            }
+        }
+
+        public Intensity Centre(long lx, long ly)
+        {
+            Rays++;
+            return lattice.Trace(lx, ly);
+        }
+
+        public Intensity At(long lx, long ly, out double weight)
+        {
+            bool onColumn = lx % lattice.Size == 0, onRow = ly % lattice.Size == 0;
+            if (onColumn && onRow)
+            {
+                weight = 0.25;
+                return lattice.Corner(lx, ly);
+            }
+
+            if (onColumn || onRow)
+            {
+                weight = 0.5;
+                return lattice.Edge(lx, ly);
+            }
+
+            weight = 1;
+            long key = (ly << 32) ^ lx;
+            if (!_interior.TryGetValue(key, out Intensity value))
+            {
+                value = lattice.Trace(lx, ly);
+                _interior.Add(key, value);
+                Rays++;
+            }
+
+            return value;
+        }
+    }
+}

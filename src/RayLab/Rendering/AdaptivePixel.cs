@@ -1,0 +1,106 @@
+using RayLab.Sampling;
+
+namespace RayLab.Rendering;
+
+/// <summary>Gives the value at a point of the adaptive lattice; the lattice has 2^(MaxDepth+1) steps per pixel.</summary>
+internal interface ILatticeSource
+{
+    /// <summary>The value at lattice point (lx, ly), x to the right and y downward from the image's top-left corner.</summary>
+    /// <param name="lx">Lattice column.</param>
+    /// <param name="ly">Lattice row.</param>
+    /// <param name="weight">The share of this point's ray that the asking pixel is charged (for the heat map).</param>
+    Intensity At(long lx, long ly, out double weight);
+
+    /// <summary>The value at the centre of a square: asked for once only, so it needs no cache (weight 1).</summary>
+    /// <param name="lx">Lattice column.</param>
+    /// <param name="ly">Lattice row.</param>
+    Intensity Centre(long lx, long ly);
+}
+
+/// <summary>The lab's adaptive recursion and combination rule for one pixel (see <see cref="AdaptiveSampler"/>).</summary>
+internal static class AdaptivePixel
+{
+    /// <summary>The pixel's value; <paramref name="samples"/> receives the rays charged to it (corners ¼, edge points ½).</summary>
+    public static Intensity Evaluate<TSource>(AdaptiveSampler sampler, ref TSource source, int px, int py, out double samples)
+        where TSource : ILatticeSource
+    {
+        long size = 1L << (sampler.MaxDepth + 1);
+        long x0 = px * size, y0 = py * size;
+        samples = 0;
+        Intensity tl = Take(ref source, x0, y0, ref samples);
+        Intensity tr = Take(ref source, x0 + size, y0, ref samples);
+        Intensity bl = Take(ref source, x0, y0 + size, ref samples);
+        Intensity br = Take(ref source, x0 + size, y0 + size, ref samples);
+        Intensity centre = Centre(ref source, x0 + (size / 2), y0 + (size / 2), ref samples);
+        return Square(sampler, ref source, x0, y0, size, 0, tl, tr, bl, br, centre, ref samples);
+    }
+
+    private static Intensity Square<TSource>(AdaptiveSampler s, ref TSource source, long x0, long y0, long size, int depth,
+        Intensity tl, Intensity tr, Intensity bl, Intensity br, Intensity x, ref double samples)
+        where TSource : ILatticeSource
+    {
+        bool refineTl = false, refineTr = false, refineBl = false, refineBr = false;
+        if (depth < s.MaxDepth)
+        {
+            if (depth < s.MinDepth)
+            {
+                refineTl = refineTr = refineBl = refineBr = true;
+            }
+            else
+            {
+                refineTl = s.Differ(tl, x);
+                refineTr = s.Differ(tr, x);
+                refineBl = s.Differ(bl, x);
+                refineBr = s.Differ(br, x);
+                if (!(refineTl || refineTr || refineBl || refineBr)
+                    && (s.Differ(tl, tr) || s.Differ(tl, bl) || s.Differ(tl, br) || s.Differ(tr, bl) || s.Differ(tr, br) || s.Differ(bl, br)))
+                {
+                    // The corners disagree although each agrees with the centre: refine them all.
+                    refineTl = refineTr = refineBl = refineBr = true;
+                }
+            }
+        }
+
+        if (!(refineTl || refineTr || refineBl || refineBr))
+        {
+            return 0.25 * (((tl + x) * 0.5) + ((tr + x) * 0.5) + ((bl + x) * 0.5) + ((br + x) * 0.5));
+        }
+
+        long h = size / 2, q = size / 4;
+        // The edge midpoints a refined quadrant needs; each is traced once and shared by the two quadrants beside it.
+        Intensity top = default, left = default, right = default, bottom = default;
+        if (refineTl || refineTr) { top = Take(ref source, x0 + h, y0, ref samples); }
+        if (refineTl || refineBl) { left = Take(ref source, x0, y0 + h, ref samples); }
+        if (refineTr || refineBr) { right = Take(ref source, x0 + size, y0 + h, ref samples); }
+        if (refineBl || refineBr) { bottom = Take(ref source, x0 + h, y0 + size, ref samples); }
+
+        Intensity vTl = refineTl
+            ? Square(s, ref source, x0, y0, h, depth + 1, tl, top, left, x, Centre(ref source, x0 + q, y0 + q, ref samples), ref samples)
+            : (tl + x) * 0.5;
+        Intensity vTr = refineTr
+            ? Square(s, ref source, x0 + h, y0, h, depth + 1, top, tr, x, right, Centre(ref source, x0 + h + q, y0 + q, ref samples), ref samples)
+            : (tr + x) * 0.5;
+        Intensity vBl = refineBl
+            ? Square(s, ref source, x0, y0 + h, h, depth + 1, left, x, bl, bottom, Centre(ref source, x0 + q, y0 + h + q, ref samples), ref samples)
+            : (bl + x) * 0.5;
+        Intensity vBr = refineBr
+            ? Square(s, ref source, x0 + h, y0 + h, h, depth + 1, x, right, bottom, br, Centre(ref source, x0 + h + q, y0 + h + q, ref samples), ref samples)
+            : (br + x) * 0.5;
+        return 0.25 * (vTl + vTr + vBl + vBr);
+    }
+
+    private static Intensity Centre<TSource>(ref TSource source, long lx, long ly, ref double samples)
+        where TSource : ILatticeSource
+    {
+        samples += 1;
+        return source.Centre(lx, ly);
+    }
+
+    private static Intensity Take<TSource>(ref TSource source, long lx, long ly, ref double samples)
+        where TSource : ILatticeSource
+    {
+        Intensity value = source.At(lx, ly, out double weight);
+        samples += weight;
+        return value;
+    }
+}
