@@ -28,12 +28,16 @@ public static class CounterHash
         return x;
     }
 
-    /// <summary>The key of one pixel under one seed: distinct for distinct (x, y) below 65 536 × 65 536.</summary>
+    /// <summary>
+    /// The key of one pixel under one seed: distinct for distinct (x, y) below 65 536 × 65 536. The seed is salted
+    /// before hashing so that seed 0 does not give pixel (0, 0) the key 0 (lowbias32 maps 0 to 0), which would put
+    /// its first sample at exactly (0, 0) and make derived patterns degenerate.
+    /// </summary>
     /// <param name="x">The pixel column.</param>
     /// <param name="y">The pixel row.</param>
     /// <param name="seed">The render's seed.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static uint PixelKey(int x, int y, uint seed) => Hash(((uint)y << 16) ^ (uint)x ^ Hash(seed));
+    public static uint PixelKey(int x, int y, uint seed) => Hash(((uint)y << 16) ^ (uint)x ^ Hash(seed + Golden));
 
     /// <summary>The first hash of sample <paramref name="index"/> of a pixel; hash it again for a second number.</summary>
     /// <param name="pixelKey">The pixel's key from <see cref="PixelKey"/>.</param>

@@ -4,11 +4,11 @@ namespace RayLab.Sampling;
 public static class Samplers
 {
     /// <summary>The sampler names, as scene files and the console spell them.</summary>
-    public static IReadOnlyList<string> Names { get; } = ["regular", "random", "jittered"];
+    public static IReadOnlyList<string> Names { get; } = ["regular", "random", "jittered", "cmj", "multijittered", "nrooks", "hammersley", "sobol"];
 
     /// <summary>Creates the sampler called <paramref name="name"/>.</summary>
     /// <param name="name">One of <see cref="Names"/> (case-insensitive).</param>
-    /// <param name="samplesPerPixel">Samples per pixel: a perfect square for <c>regular</c> and <c>jittered</c>.</param>
+    /// <param name="samplesPerPixel">Samples per pixel: a perfect square for <c>regular</c>, <c>jittered</c> and <c>multijittered</c>.</param>
     /// <param name="seed">The seed.</param>
     /// <exception cref="ArgumentException">Unknown name, or a sample count the sampler cannot use.</exception>
     public static IPixelSampler Create(string name, int samplesPerPixel, uint seed)
@@ -19,6 +19,11 @@ public static class Samplers
             "regular" => new RegularSampler(samplesPerPixel),
             "random" => new RandomSampler(samplesPerPixel, seed),
             "jittered" => new JitteredSampler(samplesPerPixel, seed),
+            "cmj" => new CorrelatedMultiJitteredSampler(samplesPerPixel, seed),
+            "multijittered" => new MultiJitteredSampler(samplesPerPixel, seed),
+            "nrooks" => new NRooksSampler(samplesPerPixel, seed),
+            "hammersley" => new HammersleySampler(samplesPerPixel, seed),
+            "sobol" => new SobolSampler(samplesPerPixel, seed),
             _ => throw new ArgumentException(
                 $"Unknown sampler '{name}'; expected one of: {string.Join(", ", Names)}.", nameof(name)),
         };
