@@ -43,7 +43,8 @@ public sealed class Image
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
         ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
-        if ((long)width * height * 3 > MaxBytes)
+        // Compare without forming W·H·3, which can overflow a long for two huge sizes.
+        if (width > MaxBytes / 3 / height)
         {
             throw new ArgumentOutOfRangeException("size", $"{width}×{height} is too large: W·H·3 must be at most {MaxBytes:N0} bytes.");
         }
