@@ -22,6 +22,7 @@ public abstract class Camera
     private readonly double _near = 1;
     private readonly double _far = 1000;
     private readonly double _fov = 60;
+    private readonly Window? _window;
 
     /// <summary>The eye point e (the centre of projection for a perspective camera). Default (0, 0, 0).</summary>
     /// <exception cref="ArgumentException">A component is not finite.</exception>
@@ -69,6 +70,22 @@ public abstract class Camera
         init => _fov = value > 0 && value < 180
             ? value
             : throw new ArgumentException($"Fov must be in (0, 180) degrees, got {value}.", nameof(Fov));
+    }
+
+    /// <summary>
+    /// An explicit window (u0, v0, u1, v1) on the projection plane, or null (the default) for the centred window
+    /// with square pixels that the projection's own setting gives (<see cref="Fov"/> for a perspective camera,
+    /// <see cref="OrthoCamera.ViewHeight"/> for an orthographic one). A window with u0 ≠ −u1 is off-axis.
+    /// </summary>
+    /// <exception cref="ArgumentException">The window is empty, inverted or not finite.</exception>
+    public Window? Window
+    {
+        get => _window;
+        init
+        {
+            value?.Validate(nameof(Window));
+            _window = value;
+        }
     }
 
     /// <summary>A name for messages and file names (the lab lets a camera carry one).</summary>

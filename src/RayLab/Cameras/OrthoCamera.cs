@@ -3,7 +3,8 @@ namespace RayLab.Cameras;
 /// <summary>
 /// The lab's orthographic camera (section 3.1): parallel rays along the gaze, one per sample, starting on the
 /// plane through <see cref="Camera.Position"/>. The window is <see cref="ViewHeight"/> world units high
-/// (default 2: the lab's [−1, 1]) and as wide as the aspect ratio makes it, unless <see cref="Window"/> sets it.
+/// (default 2: the lab's [−1, 1]) and as wide as the aspect ratio makes it, unless <see cref="Camera.Window"/> sets it
+/// (in world units, on the plane through the position).
 /// </summary>
 /// <remarks>
 /// The lab's own loop starts every ray at one point, which is a perspective projection; here each ray starts
@@ -12,7 +13,6 @@ namespace RayLab.Cameras;
 public sealed class OrthoCamera : Camera
 {
     private readonly double _height = 2;
-    private readonly Window? _window;
 
     /// <summary>The view height in world units, &gt; 0. Default 2.</summary>
     /// <exception cref="ArgumentException">The value is not positive or not finite.</exception>
@@ -24,23 +24,11 @@ public sealed class OrthoCamera : Camera
             : throw new ArgumentException($"ViewHeight must be a finite number > 0, got {value}.", nameof(ViewHeight));
     }
 
-    /// <summary>An explicit window (u0, v0, u1, v1) in world units on the plane through the position.</summary>
-    /// <exception cref="ArgumentException">The window is empty, inverted or not finite.</exception>
-    public Window? Window
-    {
-        get => _window;
-        init
-        {
-            value?.Validate(nameof(Window));
-            _window = value;
-        }
-    }
-
     /// <inheritdoc />
     public override bool IsOrthographic => true;
 
     /// <summary>The explicit window, or the centred one <see cref="ViewHeight"/> high with square pixels.</summary>
     /// <param name="aspectRatio">Image width / height.</param>
     protected override Window GetWindow(double aspectRatio) =>
-        _window ?? Cameras.Window.Centered(ViewHeight * aspectRatio, ViewHeight);
+        Window ?? Cameras.Window.Centered(ViewHeight * aspectRatio, ViewHeight);
 }

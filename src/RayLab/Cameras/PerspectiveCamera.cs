@@ -3,12 +3,12 @@ namespace RayLab.Cameras;
 /// <summary>
 /// The lab's perspective camera (section 3.2): rays from the eye e through the window on a plane at distance
 /// s in front of it. The window follows from <see cref="Camera.Fov"/> and the image's aspect ratio (square
-/// pixels, centred), unless <see cref="Window"/> sets it explicitly (an off-axis view).
+/// pixels, centred), unless <see cref="Camera.Window"/> sets it explicitly (an off-axis view) on the plane at
+/// <see cref="Distance"/>.
 /// </summary>
 public sealed class PerspectiveCamera : Camera
 {
     private readonly double _distance = 1;
-    private readonly Window? _window;
 
     /// <summary>The plane distance s, &gt; 0. Default 1.</summary>
     /// <exception cref="ArgumentException">The value is not positive or not finite.</exception>
@@ -18,18 +18,6 @@ public sealed class PerspectiveCamera : Camera
         init => _distance = value > 0 && double.IsFinite(value)
             ? value
             : throw new ArgumentException($"Distance must be a finite number > 0, got {value}.", nameof(Distance));
-    }
-
-    /// <summary>An explicit window (u0, v0, u1, v1) on the plane at <see cref="Distance"/>; overrides the field of view.</summary>
-    /// <exception cref="ArgumentException">The window is empty, inverted or not finite.</exception>
-    public Window? Window
-    {
-        get => _window;
-        init
-        {
-            value?.Validate(nameof(Window));
-            _window = value;
-        }
     }
 
     /// <inheritdoc />
@@ -45,7 +33,7 @@ public sealed class PerspectiveCamera : Camera
     /// <param name="aspectRatio">Image width / height.</param>
     protected override Window GetWindow(double aspectRatio)
     {
-        if (_window is { } window)
+        if (Window is { } window)
         {
             return window;
         }

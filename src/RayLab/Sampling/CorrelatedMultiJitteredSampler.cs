@@ -14,29 +14,21 @@ namespace RayLab.Sampling;
 /// listing unchanged: the sample index is permuted, one permutation of the columns and one of the rows are
 /// shared by the whole pattern (the correlation), and Kensler's <c>randfloat</c> jitters within the fine cell.
 /// </remarks>
-public sealed class CorrelatedMultiJitteredSampler : IPixelSampler
+public sealed class CorrelatedMultiJitteredSampler : PixelSampler
 {
     /// <summary>Creates a correlated multi-jittered sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1.</param>
     /// <param name="seed">The seed; different seeds give different points.</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="samplesPerPixel"/> is less than 1.</exception>
     public CorrelatedMultiJitteredSampler(int samplesPerPixel, uint seed)
+        : base(samplesPerPixel, seed)
     {
-        ArgumentOutOfRangeException.ThrowIfLessThan(samplesPerPixel, 1);
-        SamplesPerPixel = samplesPerPixel;
-        Seed = seed;
         Columns = (int)Math.Sqrt(samplesPerPixel);
         Rows = (samplesPerPixel + Columns - 1) / Columns;
     }
 
     /// <inheritdoc />
-    public string Name => "cmj";
-
-    /// <inheritdoc />
-    public int SamplesPerPixel { get; }
-
-    /// <inheritdoc />
-    public uint Seed { get; }
+    public override string Name => "cmj";
 
     /// <summary>m = ⌊√N⌋: columns of the coarse grid.</summary>
     public int Columns { get; }
@@ -45,7 +37,7 @@ public sealed class CorrelatedMultiJitteredSampler : IPixelSampler
     public int Rows { get; }
 
     /// <inheritdoc />
-    public SamplePoint GetSample(int x, int y, int index) =>
+    public override SamplePoint GetSample(int x, int y, int index) =>
         Sample(index, SamplesPerPixel, Columns, Rows, CounterHash.PixelKey(x, y, Seed));
 
     /// <summary>

@@ -1,19 +1,15 @@
 namespace RayLab.Sampling;
 
 /// <summary>Shared checks for samplers that use an n×n grid of cells.</summary>
-public abstract class GridSampler : IPixelSampler
+public abstract class GridSampler : PixelSampler
 {
     /// <summary>Creates a grid sampler with <paramref name="samplesPerPixel"/> = n² cells.</summary>
     /// <param name="samplesPerPixel">A perfect square ≥ 1.</param>
     /// <param name="seed">The seed.</param>
     /// <exception cref="ArgumentException"><paramref name="samplesPerPixel"/> is not a positive perfect square.</exception>
     protected GridSampler(int samplesPerPixel, uint seed)
+        : base(samplesPerPixel, seed)
     {
-        if (samplesPerPixel < 1)
-        {
-            throw new ArgumentOutOfRangeException(nameof(samplesPerPixel), samplesPerPixel, "Samples per pixel must be at least 1.");
-        }
-
         int n = (int)Math.Round(Math.Sqrt(samplesPerPixel));
         if (n * n != samplesPerPixel)
         {
@@ -23,22 +19,8 @@ public abstract class GridSampler : IPixelSampler
         }
 
         GridSize = n;
-        SamplesPerPixel = samplesPerPixel;
-        Seed = seed;
     }
 
     /// <summary>n: cells per side.</summary>
     public int GridSize { get; }
-
-    /// <inheritdoc />
-    public abstract string Name { get; }
-
-    /// <inheritdoc />
-    public int SamplesPerPixel { get; }
-
-    /// <inheritdoc />
-    public uint Seed { get; }
-
-    /// <inheritdoc />
-    public abstract SamplePoint GetSample(int x, int y, int index);
 }

@@ -6,7 +6,7 @@ namespace RayLab.Sampling;
 /// into [0, 1). The shift keeps the set's low discrepancy and stops every pixel using the same pattern, which
 /// would alias. Any number of samples.
 /// </summary>
-public sealed class HammersleySampler : IPixelSampler
+public sealed class HammersleySampler : PixelSampler
 {
     private const uint ShiftSalt = 0x68e31da4u;
 
@@ -15,23 +15,15 @@ public sealed class HammersleySampler : IPixelSampler
     /// <param name="seed">The seed; different seeds give different shifts.</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="samplesPerPixel"/> is less than 1.</exception>
     public HammersleySampler(int samplesPerPixel, uint seed)
+        : base(samplesPerPixel, seed)
     {
-        ArgumentOutOfRangeException.ThrowIfLessThan(samplesPerPixel, 1);
-        SamplesPerPixel = samplesPerPixel;
-        Seed = seed;
     }
 
     /// <inheritdoc />
-    public string Name => "hammersley";
+    public override string Name => "hammersley";
 
     /// <inheritdoc />
-    public int SamplesPerPixel { get; }
-
-    /// <inheritdoc />
-    public uint Seed { get; }
-
-    /// <inheritdoc />
-    public SamplePoint GetSample(int x, int y, int index)
+    public override SamplePoint GetSample(int x, int y, int index)
     {
         SamplePoint point = Unshifted(index), shift = Shift(x, y);
         return new SamplePoint(Wrap(point.X + shift.X), Wrap(point.Y + shift.Y));

@@ -10,30 +10,22 @@ namespace RayLab.Sampling;
 /// π_y(i) and column π_x(i) of two independent hash permutations (<see cref="Permutation.PermutationElement"/>)
 /// keyed on the pixel, which gives the same distribution with no stored table.
 /// </remarks>
-public sealed class NRooksSampler : IPixelSampler
+public sealed class NRooksSampler : PixelSampler
 {
     /// <summary>Creates an n-rooks sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1.</param>
     /// <param name="seed">The seed; different seeds give different points.</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="samplesPerPixel"/> is less than 1.</exception>
     public NRooksSampler(int samplesPerPixel, uint seed)
+        : base(samplesPerPixel, seed)
     {
-        ArgumentOutOfRangeException.ThrowIfLessThan(samplesPerPixel, 1);
-        SamplesPerPixel = samplesPerPixel;
-        Seed = seed;
     }
 
     /// <inheritdoc />
-    public string Name => "nrooks";
+    public override string Name => "nrooks";
 
     /// <inheritdoc />
-    public int SamplesPerPixel { get; }
-
-    /// <inheritdoc />
-    public uint Seed { get; }
-
-    /// <inheritdoc />
-    public SamplePoint GetSample(int x, int y, int index)
+    public override SamplePoint GetSample(int x, int y, int index)
     {
         int count = SamplesPerPixel;
         uint key = CounterHash.PixelKey(x, y, Seed);

@@ -4,30 +4,22 @@ namespace RayLab.Sampling;
 /// The lab's random sampling (Suffern's <c>rand()</c> in the pixel): uniform, independent points. Any
 /// number of samples; points may clump.
 /// </summary>
-public sealed class RandomSampler : IPixelSampler
+public sealed class RandomSampler : PixelSampler
 {
     /// <summary>Creates a random sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1.</param>
     /// <param name="seed">The seed; different seeds give different points.</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="samplesPerPixel"/> is less than 1.</exception>
     public RandomSampler(int samplesPerPixel, uint seed)
+        : base(samplesPerPixel, seed)
     {
-        ArgumentOutOfRangeException.ThrowIfLessThan(samplesPerPixel, 1);
-        SamplesPerPixel = samplesPerPixel;
-        Seed = seed;
     }
 
     /// <inheritdoc />
-    public string Name => "random";
+    public override string Name => "random";
 
     /// <inheritdoc />
-    public int SamplesPerPixel { get; }
-
-    /// <inheritdoc />
-    public uint Seed { get; }
-
-    /// <inheritdoc />
-    public SamplePoint GetSample(int x, int y, int index)
+    public override SamplePoint GetSample(int x, int y, int index)
     {
         uint h1 = CounterHash.SampleHash(CounterHash.PixelKey(x, y, Seed), index);
         return new SamplePoint(CounterHash.ToUnit(h1), CounterHash.ToUnit(CounterHash.Hash(h1)));

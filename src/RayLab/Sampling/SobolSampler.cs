@@ -13,7 +13,7 @@ namespace RayLab.Sampling;
 /// all three seeds come from the pixel's <see cref="CounterHash.PixelKey"/>. Coordinates keep the top 24 bits,
 /// like <see cref="CounterHash.ToUnit"/>.
 /// </remarks>
-public sealed class SobolSampler : IPixelSampler
+public sealed class SobolSampler : PixelSampler
 {
     private const uint IndexSalt = 0x1b873593u;
 
@@ -22,23 +22,15 @@ public sealed class SobolSampler : IPixelSampler
     /// <param name="seed">The seed; different seeds give different scrambles.</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="samplesPerPixel"/> is less than 1.</exception>
     public SobolSampler(int samplesPerPixel, uint seed)
+        : base(samplesPerPixel, seed)
     {
-        ArgumentOutOfRangeException.ThrowIfLessThan(samplesPerPixel, 1);
-        SamplesPerPixel = samplesPerPixel;
-        Seed = seed;
     }
 
     /// <inheritdoc />
-    public string Name => "sobol";
+    public override string Name => "sobol";
 
     /// <inheritdoc />
-    public int SamplesPerPixel { get; }
-
-    /// <inheritdoc />
-    public uint Seed { get; }
-
-    /// <inheritdoc />
-    public SamplePoint GetSample(int x, int y, int index)
+    public override SamplePoint GetSample(int x, int y, int index)
     {
         uint indexSeed = CounterHash.Hash(CounterHash.PixelKey(x, y, Seed) ^ IndexSalt);
         uint xSeed = CounterHash.Hash(indexSeed);
