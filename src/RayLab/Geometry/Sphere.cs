@@ -77,7 +77,7 @@ public sealed class Sphere
         }
 
         double c = f.LengthSquared - (r * r);
-        double sqrtTerm = Math.Sqrt(a * disc);
+        double sqrtTerm = Math.Sqrt(a) * Math.Sqrt(disc); // not √(a·disc): that product overflows for |d|, r ~ 1e100
         double q = -(b + (b >= 0 ? sqrtTerm : -sqrtTerm));
         double t0, t1;
         if (q == 0)
