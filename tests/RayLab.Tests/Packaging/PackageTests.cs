@@ -1,0 +1,189 @@
+using System.Buffers.Binary;
+using System.Diagnostics;
+using System.Text;
+using System.Text.RegularExpressions;
+
+namespace RayLab.Tests.Packaging;
+
+/// <summary>
+/// What a new user does, end to end, with child <c>dotnet</c> processes: pack the library (<c>RayLab</c>) and the
+/// tool (<c>RayLab.Tool</c>) into a folder feed; build and run a fresh console app whose Program.cs is the README's
+/// "The library in ten lines" example, referencing the package; install the tool from the feed and run it.
+/// The children get an empty NUGET_PACKAGES folder, so no cached copy of an older RayLab package can stand in.
+/// </summary>
+[Trait("Category", "Packaging")]
+public sealed partial class PackageTests : IDisposable
+{
+    private static readonly TimeSpan ChildTimeout = TimeSpan.FromMinutes(5);
+
+    private readonly string _dir = Directory.CreateTempSubdirectory("raylab-packaging-").FullName;
+
+    public void Dispose()
+    {
+        try
+        {
+            Directory.Delete(_dir, recursive: true);
+        }
+        catch (IOException)
+        {
+            // A child that was killed on timeout may still hold a file; the temp folder is not worth failing for.
+        }
+    }
+
+    [Fact]
+    public async Task PackagedLibraryRunsTheReadmeExampleAndTheInstalledToolRenders()
+    {
+        string repo = FindRepoRoot();
+        string feed = Path.Combine(_dir, "feed");
+        string packages = Path.Combine(_dir, "nuget-packages");
+        string artifacts = Path.Combine(_dir, "artifacts");
+
+        // 1. Pack both projects into the feed (bin/obj under the temp folder, not the repository's).
+        foreach (string project in new[] { "src/RayLab/RayLab.csproj", "samples/RayLab.Console/RayLab.Console.csproj" })
+        {
+            await RunAsync(_dir, packages, "dotnet", "pack", Path.Combine(repo, project), "-c", "Release", "-o", feed,
+                "--artifacts-path", artifacts);
+        }
+
+        string libraryPackage = Assert.Single(Directory.GetFiles(feed, "RayLab.*.nupkg"),
+            f => !Path.GetFileName(f).StartsWith("RayLab.Tool.", StringComparison.OrdinalIgnoreCase));
+        string version = Path.GetFileNameWithoutExtension(libraryPackage)["RayLab.".Length..];
+        Assert.True(File.Exists(Path.Combine(feed, $"RayLab.{version}.snupkg")), "the symbols package is missing");
+        Assert.True(File.Exists(Path.Combine(feed, $"RayLab.Tool.{version}.nupkg")), "the tool package is missing");
+
+        // 2. A fresh console app, outside the repository, whose Program.cs is exactly the README's example.
+        string app = Directory.CreateDirectory(Path.Combine(_dir, "app")).FullName;
+        File.WriteAllText(Path.Combine(app, "app.csproj"), $"""
+            <Project Sdk="Microsoft.NET.Sdk">
+              <PropertyGroup>
+                <OutputType>Exe</OutputType>
+                <TargetFramework>net10.0</TargetFramework>
+                <ImplicitUsings>enable</ImplicitUsings>
+                <Nullable>enable</Nullable>
+                <ManagePackageVersionsCentrally>false</ManagePackageVersionsCentrally>
+              </PropertyGroup>
+              <ItemGroup>
+                <PackageReference Include="RayLab" Version="{version}" />
+              </ItemGroup>
+            </Project>
+            """);
+        // The feed is added to the sources the machine already has (no <clear/>): the user and machine configs still apply.
+        File.WriteAllText(Path.Combine(app, "nuget.config"), $"""
+            <?xml version="1.0" encoding="utf-8"?>
+            <configuration>
+              <packageSources>
+                <add key="raylab-test-feed" value="{feed}" />
+              </packageSources>
+            </configuration>
+            """);
+        File.WriteAllText(Path.Combine(app, "Program.cs"), ReadmeLibraryExample(repo));
+
+        await RunAsync(app, packages, "dotnet", "run", "-c", "Release");
+        AssertPng(Path.Combine(app, "two-spheres.png"), 800, 600);
+
+        // 3. The tool, installed from the feed.
+        string tools = Path.Combine(_dir, "tools");
+        await RunAsync(_dir, packages, "dotnet", "tool", "install", "RayLab.Tool", "--tool-path", tools,
+            "--add-source", feed, "--version", version);
+        string raylab = Path.Combine(tools, OperatingSystem.IsWindows() ? "raylab.exe" : "raylab");
+
+        string rendered = Path.Combine(_dir, "t.png");
+        await RunAsync(_dir, packages, raylab, "render", Path.Combine(repo, "samples", "scenes", "two-spheres.json"),
+            "-o", rendered, "--width", "64", "--height", "48");
+        AssertPng(rendered, 64, 48);
+
+        // With no arguments it renders the scene shipped inside the tool package into out/ of the working folder.
+        string work = Directory.CreateDirectory(Path.Combine(_dir, "work")).FullName;
+        await RunAsync(work, packages, raylab);
+        AssertPng(Path.Combine(work, "out", "two-spheres-perspective.png"), 800, 600);
+    }
+
+    /// <summary>The C# block under the README's "## The library in ten lines" heading.</summary>
+    private static string ReadmeLibraryExample(string repo)
+    {
+        string readme = File.ReadAllText(Path.Combine(repo, "README.md")).ReplaceLineEndings("\n");
+        Match m = ReadmeExample().Match(readme);
+        Assert.True(m.Success, "README.md has no ```csharp block under \"## The library in ten lines\"");
+        return m.Groups["code"].Value;
+    }
+
+    [GeneratedRegex(@"^## The library in ten lines\n(?:(?!^## ).)*?^```csharp\n(?<code>.*?)^```", RegexOptions.Multiline | RegexOptions.Singleline)]
+    private static partial Regex ReadmeExample();
+
+    private static void AssertPng(string path, int width, int height)
+    {
+        Assert.True(File.Exists(path), $"{path} was not written");
+        byte[] png = File.ReadAllBytes(path);
+        byte[] signature = [0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A];
+        Assert.True(png.Length > 24 && png.AsSpan(0, 8).SequenceEqual(signature), $"{path} is not a PNG");
+        Assert.Equal("IHDR", Encoding.ASCII.GetString(png, 12, 4));
+        Assert.Equal(width, BinaryPrimitives.ReadInt32BigEndian(png.AsSpan(16)));
+        Assert.Equal(height, BinaryPrimitives.ReadInt32BigEndian(png.AsSpan(20)));
+    }
+
+    private static string FindRepoRoot()
+    {
+        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
+        {
+            if (File.Exists(Path.Combine(dir.FullName, "RayLab.sln")))
+            {
+                return dir.FullName;
+            }
+        }
+
+        throw new InvalidOperationException($"RayLab.sln not found above {AppContext.BaseDirectory}");
+    }
+
+    /// <summary>Runs a child process to completion; fails with its command line, stdout and stderr unless it exits 0.</summary>
+    private static async Task RunAsync(string workingDirectory, string nugetPackages, string fileName, params string[] args)
+    {
+        var psi = new ProcessStartInfo(fileName)
+        {
+            WorkingDirectory = workingDirectory,
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            UseShellExecute = false,
+        };
+        foreach (string arg in args)
+        {
+            psi.ArgumentList.Add(arg);
+        }
+
+        // What the test host inherited from the outer `dotnet test` build must not steer the child builds.
+        foreach (string key in psi.Environment.Keys.Where(k => k.StartsWith("MSBuild", StringComparison.OrdinalIgnoreCase)).ToList())
+        {
+            psi.Environment.Remove(key);
+        }
+
+        psi.Environment["NUGET_PACKAGES"] = nugetPackages;
+        psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
+        psi.Environment["DOTNET_NOLOGO"] = "1";
+        psi.Environment["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1";
+
+        using var process = new Process { StartInfo = psi };
+        var stdout = new StringBuilder();
+        var stderr = new StringBuilder();
+        process.OutputDataReceived += (_, e) => { if (e.Data is not null) { lock (stdout) { stdout.AppendLine(e.Data); } } };
+        process.ErrorDataReceived += (_, e) => { if (e.Data is not null) { lock (stderr) { stderr.AppendLine(e.Data); } } };
+        process.Start();
+        process.BeginOutputReadLine();
+        process.BeginErrorReadLine();
+
+        string command = $"{fileName} {string.Join(' ', args)} (in {workingDirectory})";
+        using var timeout = CancellationTokenSource.CreateLinkedTokenSource(TestContext.Current.CancellationToken);
+        timeout.CancelAfter(ChildTimeout);
+        try
+        {
+            await process.WaitForExitAsync(timeout.Token);
+        }
+        catch (OperationCanceledException)
+        {
+            process.Kill(entireProcessTree: true);
+            Assert.Fail($"timed out after {ChildTimeout} or cancelled: {command}\n--- stdout\n{stdout}\n--- stderr\n{stderr}");
+        }
+
+        process.WaitForExit(); // drains the redirected streams
+        Assert.True(process.ExitCode == 0,
+            $"exit code {process.ExitCode}: {command}\n--- stdout\n{stdout}\n--- stderr\n{stderr}");
+    }
+}
