@@ -26,6 +26,11 @@ public sealed class Renderer
             : throw new ArgumentOutOfRangeException(nameof(MaxDegreeOfParallelism), value, "Use −1 (all cores) or a count ≥ 1.");
     }
 
+    /// <summary>
+    /// Optional: counts finished rows while a render runs, for a progress bar polled from another thread.
+    /// </summary>
+    public RenderProgress? Progress { get; init; }
+
     /// <summary>Renders <paramref name="scene"/> into <paramref name="image"/>, sized by the image.</summary>
     /// <param name="scene">The scene.</param>
     /// <param name="camera">The camera.</param>
@@ -42,6 +47,7 @@ public sealed class Renderer
         ImagePlane plane = camera.GetImagePlane(image.Width, image.Height);
         var options = new ParallelOptions { MaxDegreeOfParallelism = MaxDegreeOfParallelism };
         long rays = 0;
+        Progress?.Start(image.Height);
         var clock = Stopwatch.StartNew();
         Parallel.For(0, image.Height, options, row =>
         {
@@ -52,6 +58,7 @@ public sealed class Renderer
             }
 
             Interlocked.Add(ref rays, (long)pixels.Length * sampler.SamplesPerPixel);
+            Progress?.CompleteRow();
         });
         clock.Stop();
         return new RenderStatistics(rays, clock.Elapsed);
@@ -84,6 +91,7 @@ public sealed class Renderer
 
         ImagePlane plane = camera.GetImagePlane(image.Width, image.Height);
         var options = new ParallelOptions { MaxDegreeOfParallelism = MaxDegreeOfParallelism };
+        Progress?.Start(image.Height);
         var clock = Stopwatch.StartNew();
         var lattice = new AdaptiveLattice(scene, plane, sampler.MaxDepth, options);
         long interiorRays = 0;
@@ -101,6 +109,7 @@ public sealed class Renderer
                 }
             }
 
+            Progress?.CompleteRow();
             return source;
         }, source => Interlocked.Add(ref interiorRays, source.Rays));
         clock.Stop();

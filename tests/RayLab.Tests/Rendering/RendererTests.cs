@@ -45,6 +45,18 @@ public class RendererTests
     }
 
     [Fact]
+    public void ProgressCountsEveryRowOfEachRender()
+    {
+        var progress = new RenderProgress();
+        Assert.Equal(0, progress.Fraction);
+        var renderer = new Renderer { MaxDegreeOfParallelism = 2, Progress = progress };
+        renderer.Render(TwoSpheres(), Camera, Samplers.Create("jittered", 4, 1), new Image(20, 13));
+        Assert.Equal((13, 13, 1.0), (progress.RowsCompleted, progress.TotalRows, progress.Fraction));
+        renderer.Render(TwoSpheres(), Camera, new AdaptiveSampler(), new Image(9, 7));
+        Assert.Equal((7, 7), (progress.RowsCompleted, progress.TotalRows));
+    }
+
+    [Fact]
     public void StatisticsCountEveryPrimaryRay()
     {
         var image = new Image(31, 17);
