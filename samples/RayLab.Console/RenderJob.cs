@@ -231,6 +231,9 @@ public static class RenderJob
             rays = stats.PrimaryRays,
             renderMs = stats.RenderTime.TotalMilliseconds,
             encodeMs,
+            kernel = stats.Kernel.ToString().ToLowerInvariant(),
+            retracedSamples = stats.RetracedSamples,
+            scalarReason = stats.ScalarReason,
         };
         AtomicFile.WriteAllText(request.StatsPath!, JsonSerializer.Serialize(json, StatsJson) + Environment.NewLine);
     }

@@ -7,4 +7,16 @@ public readonly record struct RenderStatistics(long PrimaryRays, TimeSpan Render
 {
     /// <summary>Primary rays per second (0 for an instant render).</summary>
     public double RaysPerSecond => RenderTime > TimeSpan.Zero ? PrimaryRays / RenderTime.TotalSeconds : 0;
+
+    /// <summary>The loop that rendered the image (<see cref="RenderKernel.Scalar"/> for adaptive and exact renders).</summary>
+    public RenderKernel Kernel { get; init; }
+
+    /// <summary>
+    /// Packet kernels: samples whose float answer was within its error bound of a silhouette or of another
+    /// sphere, and were traced again in double (each still counts once in <see cref="PrimaryRays"/>).
+    /// </summary>
+    public long RetracedSamples { get; init; }
+
+    /// <summary>Why an <see cref="RenderKernel.Auto"/> render took the scalar path, when the scene was the reason; else null.</summary>
+    public string? ScalarReason { get; init; }
 }

@@ -1,0 +1,94 @@
+namespace RayLab.Rendering.Packets;
+
+/// <summary>
+/// A SIMD register of float lanes, one lane per pixel of a packet: the operations the packet kernel needs,
+/// behind one interface so that one generic kernel serves every width (<see cref="Lanes512"/>,
+/// <see cref="Lanes256"/>, <see cref="Lanes128"/>). The JIT specialises the kernel per struct, so these
+/// calls compile to single instructions. (The runtime's <c>Vector512&lt;T&gt;</c> family implements no
+/// generic-math interface a kernel could be written against, hence these thin wrappers.)
+/// </summary>
+/// <remarks>
+/// Masks are lanes with all bits set (true) or clear (false), as the comparison operations return them.
+/// The hash operations treat the lanes' bits as unsigned 32-bit integers.
+/// </remarks>
+/// <typeparam name="TSelf">The implementing struct.</typeparam>
+internal interface ILanes<TSelf>
+    where TSelf : struct, ILanes<TSelf>
+{
+    /// <summary>Lanes per register.</summary>
+    static abstract int Count { get; }
+
+    /// <summary>True when the hardware runs this width natively.</summary>
+    static abstract bool IsHardwareAccelerated { get; }
+
+    /// <summary>Every lane set to <paramref name="value"/>.</summary>
+    static abstract TSelf Broadcast(float value);
+
+    /// <summary>0, 1, 2, … as floats.</summary>
+    static abstract TSelf Indices { get; }
+
+    static abstract TSelf operator +(TSelf a, TSelf b);
+
+    static abstract TSelf operator -(TSelf a, TSelf b);
+
+    static abstract TSelf operator *(TSelf a, TSelf b);
+
+    static abstract TSelf operator /(TSelf a, TSelf b);
+
+    /// <summary>Lane-wise <c>a·b + c</c>, fused (one rounding) where the hardware has FMA.</summary>
+    static abstract TSelf MultiplyAdd(TSelf a, TSelf b, TSelf c);
+
+    /// <summary>Lane-wise <c>c − a·b</c>, fused where the hardware has FMA.</summary>
+    static abstract TSelf NegatedMultiplyAdd(TSelf a, TSelf b, TSelf c);
+
+    static abstract TSelf Sqrt(TSelf x);
+
+    static abstract TSelf Abs(TSelf x);
+
+    static abstract TSelf Max(TSelf a, TSelf b);
+
+    static abstract TSelf Min(TSelf a, TSelf b);
+
+    /// <summary>Mask of lanes where <c>a ≥ b</c>.</summary>
+    static abstract TSelf GreaterThanOrEqual(TSelf a, TSelf b);
+
+    /// <summary>Mask of lanes where <c>a ≤ b</c>.</summary>
+    static abstract TSelf LessThanOrEqual(TSelf a, TSelf b);
+
+    /// <summary>Mask of lanes where <c>a &lt; b</c>.</summary>
+    static abstract TSelf LessThan(TSelf a, TSelf b);
+
+    /// <summary>Lanes of <paramref name="whenTrue"/> where the mask is set, else of <paramref name="whenFalse"/>.</summary>
+    static abstract TSelf Select(TSelf mask, TSelf whenTrue, TSelf whenFalse);
+
+    static abstract TSelf operator &(TSelf a, TSelf b);
+
+    static abstract TSelf operator |(TSelf a, TSelf b);
+
+    /// <summary>Bit i set where lane i of the mask is set.</summary>
+    static abstract uint MaskBits(TSelf mask);
+
+    /// <summary>Reads <see cref="Count"/> floats.</summary>
+    static abstract TSelf Load(ReadOnlySpan<float> source);
+
+    /// <summary>Writes <see cref="Count"/> floats.</summary>
+    void Store(Span<float> destination);
+
+    /// <summary>Each lane truncated to an integer (the lab's 8-bit rule takes ⌊256·I⌋), written as ints.</summary>
+    void StoreTruncated(Span<int> destination);
+
+    /// <summary>Every lane's bits set to the unsigned integer <paramref name="bits"/>.</summary>
+    static abstract TSelf BroadcastBits(uint bits);
+
+    /// <summary>Lane i's bits set to the unsigned integer <c>start + i</c>.</summary>
+    static abstract TSelf SequenceBits(uint start);
+
+    /// <summary>Bitwise exclusive or of the lanes' bits.</summary>
+    static abstract TSelf Xor(TSelf a, TSelf b);
+
+    /// <summary><see cref="Sampling.CounterHash.Hash"/> (lowbias32) of each lane's bits.</summary>
+    static abstract TSelf Hash(TSelf bits);
+
+    /// <summary><see cref="Sampling.CounterHash.ToUnit"/> of each lane's bits: the top 24 bits as a float in [0, 1).</summary>
+    static abstract TSelf ToUnit(TSelf bits);
+}

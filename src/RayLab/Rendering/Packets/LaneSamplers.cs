@@ -1,0 +1,129 @@
+using System.Runtime.CompilerServices;
+using RayLab.Sampling;
+
+namespace RayLab.Rendering.Packets;
+
+/// <summary>
+/// Where the samples of a packet's pixels go, lane by lane: sample <c>index</c> of pixels
+/// <c>x0 … x0 + Count − 1</c> of one row. The same points as the scalar <see cref="IPixelSampler"/>, up to
+/// float rounding.
+/// </summary>
+/// <typeparam name="TL">The lane type.</typeparam>
+internal interface ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    /// <summary>Moves to the packet whose first pixel is (<paramref name="x0"/>, <paramref name="row"/>).</summary>
+    void BeginPacket(int x0, int row);
+
+    /// <summary>Sample <paramref name="index"/> of every lane's pixel, as offsets in [0, 1)² inside the pixel.</summary>
+    void Sample(int index, out TL sx, out TL sy);
+}
+
+/// <summary><see cref="JitteredSampler"/> in lanes: the counter hash runs in SIMD, one lane per pixel.</summary>
+internal struct JitteredLanes<TL>(JitteredSampler sampler) : ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    private readonly uint _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
+    private readonly TL _invN = TL.Broadcast(1f / sampler.GridSize);
+    private readonly (float Column, float Row)[] _cells = Cells(sampler.GridSize);
+    private TL _keys;
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void BeginPacket(int x0, int row) =>
+        _keys = TL.Hash(TL.Xor(TL.BroadcastBits(((uint)row << 16) ^ _salt), TL.SequenceBits((uint)x0)));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Sample(int index, out TL sx, out TL sy)
+    {
+        TL h1 = TL.Hash(TL.Xor(_keys, TL.BroadcastBits((uint)index * CounterHash.Golden)));
+        TL h2 = TL.Hash(h1);
+        (float column, float row) = _cells[index];
+        sx = (TL.Broadcast(column) + TL.ToUnit(h1)) * _invN;
+        sy = (TL.Broadcast(row) + TL.ToUnit(h2)) * _invN;
+    }
+
+    /// <summary>Sample i's cell (i mod n, i div n), looked up rather than divided for in the hot loop.</summary>
+    private static (float Column, float Row)[] Cells(int n)
+    {
+        var cells = new (float, float)[n * n];
+        for (int i = 0; i < cells.Length; i++)
+        {
+            cells[i] = (i % n, i / n);
+        }
+
+        return cells;
+    }
+}
+
+/// <summary><see cref="RandomSampler"/> in lanes: the counter hash runs in SIMD, one lane per pixel.</summary>
+internal struct RandomLanes<TL>(RandomSampler sampler) : ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    private readonly uint _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
+    private TL _keys;
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void BeginPacket(int x0, int row) =>
+        _keys = TL.Hash(TL.Xor(TL.BroadcastBits(((uint)row << 16) ^ _salt), TL.SequenceBits((uint)x0)));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Sample(int index, out TL sx, out TL sy)
+    {
+        TL h1 = TL.Hash(TL.Xor(_keys, TL.BroadcastBits((uint)index * CounterHash.Golden)));
+        sx = TL.ToUnit(h1);
+        sy = TL.ToUnit(TL.Hash(h1));
+    }
+}
+
+/// <summary><see cref="RegularSampler"/> in lanes: the same point in every pixel.</summary>
+internal readonly struct RegularLanes<TL>(RegularSampler sampler) : ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    private readonly IPixelSampler _sampler = sampler;
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void BeginPacket(int x0, int row)
+    {
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void Sample(int index, out TL sx, out TL sy)
+    {
+        SamplePoint p = _sampler.GetSample(0, 0, index);
+        sx = TL.Broadcast((float)p.X);
+        sy = TL.Broadcast((float)p.Y);
+    }
+}
+
+/// <summary>
+/// Any other <see cref="IPixelSampler"/>: its points for a whole packet are asked for once per packet (one
+/// scalar call per sample) and kept in a buffer that belongs to one thread.
+/// </summary>
+internal readonly struct BufferedLanes<TL>(IPixelSampler sampler) : ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    private readonly float[] _x = new float[sampler.SamplesPerPixel * TL.Count];
+    private readonly float[] _y = new float[sampler.SamplesPerPixel * TL.Count];
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void BeginPacket(int x0, int row)
+    {
+        int lanes = TL.Count;
+        for (int index = 0; index < sampler.SamplesPerPixel; index++)
+        {
+            for (int lane = 0; lane < lanes; lane++)
+            {
+                SamplePoint p = sampler.GetSample(x0 + lane, row, index);
+                _x[(index * lanes) + lane] = (float)p.X;
+                _y[(index * lanes) + lane] = (float)p.Y;
+            }
+        }
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void Sample(int index, out TL sx, out TL sy)
+    {
+        sx = TL.Load(_x.AsSpan(index * TL.Count, TL.Count));
+        sy = TL.Load(_y.AsSpan(index * TL.Count, TL.Count));
+    }
+}

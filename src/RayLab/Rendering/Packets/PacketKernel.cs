@@ -1,0 +1,199 @@
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using RayLab.Cameras;
+using RayLab.Geometry;
+using RayLab.Imaging;
+
+namespace RayLab.Rendering.Packets;
+
+/// <summary>
+/// The packet tracer: the renderer's loop with one SIMD lane per pixel (16 pixels per packet with AVX-512,
+/// 8 with AVX2, 4 with SSE or NEON). For each sample index it makes the packet's rays, tests every sphere in
+/// float and keeps the nearest hit's colour per lane; lanes whose float answer is not certain (see
+/// <see cref="PacketFrame"/>) are traced again in double. The work per ray is the scalar path's
+/// (<see cref="Scene.Trace"/>), so a student can read that one and trust this one.
+/// </summary>
+internal static class PacketKernel
+{
+    /// <summary>Renders one row of the image into <paramref name="pixels"/>; returns the samples traced again in double.</summary>
+    /// <remarks>
+    /// Compiled fully optimised at once: a render is often the process's only call, and the first tier's
+    /// unoptimised SIMD code would run most of it.
+    /// </remarks>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    public static int RenderRow<TL, TS, TP>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int row, Span<Rgb24> pixels)
+        where TL : struct, ILanes<TL>
+        where TS : struct, ILaneSampler<TL>
+        where TP : struct, IProjection
+    {
+        int lanes = TL.Count;
+        var buffer = default(LevelBuffer);
+        Span<int> levels = buffer;
+        int retraced = 0;
+        TL scale = TL.Broadcast(256f / samplesPerPixel);
+        TL top = TL.Broadcast(255f);
+        TL one = TL.Broadcast(1f);
+        TL invWidth = TL.Broadcast(1f / frame.Width), invHeight = TL.Broadcast(1f / frame.Height), y = TL.Broadcast(row);
+        Float3 a = frame.A, b = frame.B, c = frame.C, direction = frame.Direction, background = frame.Background;
+        (TL ax, TL ay, TL az) = (TL.Broadcast(a.X), TL.Broadcast(a.Y), TL.Broadcast(a.Z));
+        (TL bx, TL by, TL bz) = (TL.Broadcast(b.X), TL.Broadcast(b.Y), TL.Broadcast(b.Z));
+        (TL cx, TL cy, TL cz) = (TL.Broadcast(c.X), TL.Broadcast(c.Y), TL.Broadcast(c.Z));
+        Float3[] offsets = frame.Offset;
+        float[] radiusSquared = frame.RadiusSquared;
+        float[] bounds = frame.Bound;
+        Float3[] colours = frame.Colour;
+        bool checkOrder = frame.CheckDepthOrder;
+        for (int x0 = 0; x0 < frame.Width; x0 += lanes)
+        {
+            sampler.BeginPacket(x0, row);
+            TL x = TL.Broadcast(x0) + TL.Indices;
+            TL accumulatedRed = default, accumulatedGreen = default, accumulatedBlue = default;
+            for (int index = 0; index < samplesPerPixel; index++)
+            {
+                sampler.Sample(index, out TL sx, out TL sy);
+                // α = (x + sx)/W and β = 1 − (row + sy)/H, as in ImagePlane.
+                TL alpha = (x + sx) * invWidth;
+                TL beta = TL.NegatedMultiplyAdd(y + sy, invHeight, one);
+                TL dx, dy, dz, ox, oy, oz;
+                if (TP.IsOrthographic)
+                {
+                    // From the window point e + c + α a + β b along −w; the sphere offsets hold e + c − C.
+                    (dx, dy, dz) = (TL.Broadcast(direction.X), TL.Broadcast(direction.Y), TL.Broadcast(direction.Z));
+                    ox = TL.MultiplyAdd(alpha, ax, beta * bx);
+                    oy = TL.MultiplyAdd(alpha, ay, beta * by);
+                    oz = TL.MultiplyAdd(alpha, az, beta * bz);
+                }
+                else
+                {
+                    // From e through the window point: d = c + α a + β b; the sphere offsets hold e − C.
+                    dx = TL.MultiplyAdd(alpha, ax, TL.MultiplyAdd(beta, bx, cx));
+                    dy = TL.MultiplyAdd(alpha, ay, TL.MultiplyAdd(beta, by, cy));
+                    dz = TL.MultiplyAdd(alpha, az, TL.MultiplyAdd(beta, bz, cz));
+                    (ox, oy, oz) = (default, default, default);
+                }
+
+                TL dd = TL.MultiplyAdd(dx, dx, TL.MultiplyAdd(dy, dy, dz * dz));
+                TL rdd = one / dd;
+                TL nearest = TL.Broadcast(float.NegativeInfinity);  // −t of the nearest hit so far (kept negated: saves a negation per sphere)
+                TL red = TL.Broadcast(background.X);
+                TL green = TL.Broadcast(background.Y);
+                TL blue = TL.Broadcast(background.Z);
+                TL unsure = default;
+                TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
+                for (int k = 0; k < offsets.Length; k++)
+                {
+                    Float3 offset = offsets[k];
+                    TL fx = TL.Broadcast(offset.X), fy = TL.Broadcast(offset.Y), fz = TL.Broadcast(offset.Z);
+                    if (TP.IsOrthographic)
+                    {
+                        (fx, fy, fz) = (fx + ox, fy + oy, fz + oz);
+                    }
+
+                    TL half = TL.MultiplyAdd(fx, dx, TL.MultiplyAdd(fy, dy, fz * dz));   // (o − C)·d
+                    TL along = half * rdd;
+                    TL px = TL.NegatedMultiplyAdd(dx, along, fx);                       // (o − C) minus its projection on d
+                    TL py = TL.NegatedMultiplyAdd(dy, along, fy);
+                    TL pz = TL.NegatedMultiplyAdd(dz, along, fz);
+                    TL disc = TL.Broadcast(radiusSquared[k]) - TL.MultiplyAdd(px, px, TL.MultiplyAdd(py, py, pz * pz));
+                    TL negatedT = (half + TL.Sqrt(disc * dd)) * rdd;                    // −(near root); NaN when Δ < 0
+                    TL hit = TL.LessThan(nearest, negatedT);                             // t < best (false for NaN)
+                    unsure |= TL.LessThanOrEqual(TL.Abs(disc), TL.Broadcast(bounds[k]));
+                    if (checkOrder)
+                    {
+                        unsure |= hit & TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
+                    }
+
+                    nearest = TL.Select(hit, negatedT, nearest);
+                    Float3 colour = colours[k];
+                    red = TL.Select(hit, TL.Broadcast(colour.X), red);
+                    green = TL.Select(hit, TL.Broadcast(colour.Y), green);
+                    blue = TL.Select(hit, TL.Broadcast(colour.Z), blue);
+                }
+
+                // The colour of the nearest sphere hit in each lane, or the background; uncertain lanes again in double.
+                uint uncertain = TL.MaskBits(unsure);
+                if (uncertain != 0)
+                {
+                    LaneColour<TL> exact = Retrace(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertain));
+                    (red, green, blue) = (exact.R, exact.G, exact.B);
+                    retraced += BitOperations.PopCount(exact.Unsure);
+                }
+
+                accumulatedRed += red;
+                accumulatedGreen += green;
+                accumulatedBlue += blue;
+            }
+
+            // The lab's 8-bit rule, ⌊256·I⌋ clamped to 0..255 (the sums are never negative).
+            TL.Min(accumulatedRed * scale, top).StoreTruncated(levels);
+            TL.Min(accumulatedGreen * scale, top).StoreTruncated(levels[lanes..]);
+            TL.Min(accumulatedBlue * scale, top).StoreTruncated(levels[(2 * lanes)..]);
+            int count = Math.Min(lanes, frame.Width - x0);
+            Span<Rgb24> packet = pixels.Slice(x0, count);
+            for (int lane = 0; lane < count; lane++)
+            {
+                packet[lane] = new Rgb24((byte)levels[lane], (byte)levels[lanes + lane], (byte)levels[(2 * lanes) + lane]);
+            }
+        }
+
+        return retraced;
+    }
+
+    /// <summary>The lanes whose float answer is uncertain, traced again in double (<see cref="Scene.Trace"/>).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static LaneColour<TL> Retrace<TL>(PacketFrame frame, int x0, int row, TL sx, TL sy, LaneColour<TL> colour)
+        where TL : struct, ILanes<TL>
+    {
+        int count = TL.Count;
+        Span<float> values = stackalloc float[count * 5];
+        sx.Store(values);
+        sy.Store(values[count..]);
+        colour.R.Store(values[(2 * count)..]);
+        colour.G.Store(values[(3 * count)..]);
+        colour.B.Store(values[(4 * count)..]);
+        uint lanes = colour.Unsure & (uint)((1UL << Math.Min(count, frame.Width - x0)) - 1); // not the lanes past the image
+        ImagePlane plane = frame.Plane;
+        for (uint rest = lanes; rest != 0; rest &= rest - 1)
+        {
+            int lane = BitOperations.TrailingZeroCount(rest);
+
+            Ray ray = plane.GetPixelRay(x0 + lane, row, values[lane], values[count + lane]);
+            Intensity value = frame.Scene.Trace(ray, plane.TMin, plane.TMax);
+            values[(2 * count) + lane] = (float)value.R;
+            values[(3 * count) + lane] = (float)value.G;
+            values[(4 * count) + lane] = (float)value.B;
+        }
+
+        return new LaneColour<TL>(TL.Load(values[(2 * count)..]), TL.Load(values[(3 * count)..]), TL.Load(values[(4 * count)..]), lanes);
+    }
+}
+
+/// <summary>Room for three registers of 8-bit levels (red, green, blue) of the widest packet, on the stack.</summary>
+[InlineArray(3 * 16)]
+internal struct LevelBuffer
+{
+    private int _element;
+}
+
+/// <summary>One sample's colour in every lane, and the lanes whose float answer was uncertain.</summary>
+internal readonly record struct LaneColour<TL>(TL R, TL G, TL B, uint Unsure)
+    where TL : struct, ILanes<TL>;
+
+/// <summary>The camera kind as a type, so the kernel is compiled once per projection without a branch per ray.</summary>
+internal interface IProjection
+{
+    /// <summary>True for parallel rays.</summary>
+    static abstract bool IsOrthographic { get; }
+}
+
+/// <summary>The perspective camera's rays: from the eye through the window.</summary>
+internal readonly struct PerspectiveRays : IProjection
+{
+    public static bool IsOrthographic => false;
+}
+
+/// <summary>The orthographic camera's rays: parallel, from the window.</summary>
+internal readonly struct OrthographicRays : IProjection
+{
+    public static bool IsOrthographic => true;
+}
