@@ -226,6 +226,7 @@ public static class RenderJob
             minDepth = prepared.Adaptive?.MinDepth,
             maxDepth = prepared.Adaptive?.MaxDepth,
             contrast = prepared.Adaptive?.Contrast,
+            quincunx = prepared.Adaptive?.Quincunx,
             raysPerPixel = stats.PrimaryRays / ((double)prepared.Description.Width * prepared.Description.Height),
             threads = request.Threads ?? Environment.ProcessorCount,
             rays = stats.PrimaryRays,

@@ -48,17 +48,24 @@ public sealed class Scene
     /// <param name="tMax">The largest visible parameter (the far plane).</param>
     public Intensity Trace(in Ray ray, double tMin, double tMax)
     {
-        Sphere? nearest = null;
+        int nearest = Nearest(ray, tMin, tMax);
+        return nearest < 0 ? Background : _spheres[nearest].Color * Ambient;
+    }
+
+    /// <summary>The index of the nearest sphere hit with parameter in [<paramref name="tMin"/>, <paramref name="tMax"/>], or −1.</summary>
+    internal int Nearest(in Ray ray, double tMin, double tMax)
+    {
+        int nearest = -1;
         double best = tMax;
-        foreach (Sphere sphere in _spheres)
+        for (int k = 0; k < _spheres.Length; k++)
         {
-            if (sphere.TryIntersect(ray, tMin, best, out double t))
+            if (_spheres[k].TryIntersect(ray, tMin, best, out double t))
             {
                 best = t;
-                nearest = sphere;
+                nearest = k;
             }
         }
 
-        return nearest is null ? Background : nearest.Color * Ambient;
+        return nearest;
     }
 }

@@ -31,6 +31,12 @@ internal static class AdaptivePixel
         Intensity tr = Take(ref source, x0 + size, y0, ref samples);
         Intensity bl = Take(ref source, x0, y0 + size, ref samples);
         Intensity br = Take(ref source, x0 + size, y0 + size, ref samples);
+        if (!sampler.Quincunx && sampler.MinDepth == 0 && !CornersDiffer(sampler, tl, tr, bl, br))
+        {
+            // A flat pixel: the mean of its corners, which is what the combination rule gives for any centre that agrees.
+            return 0.25 * (tl + tr + bl + br);
+        }
+
         Intensity centre = Centre(ref source, x0 + (size / 2), y0 + (size / 2), ref samples);
         return Square(sampler, ref source, x0, y0, size, 0, tl, tr, bl, br, centre, ref samples);
     }
@@ -52,8 +58,7 @@ internal static class AdaptivePixel
                 refineTr = s.Differ(tr, x);
                 refineBl = s.Differ(bl, x);
                 refineBr = s.Differ(br, x);
-                if (!(refineTl || refineTr || refineBl || refineBr)
-                    && (s.Differ(tl, tr) || s.Differ(tl, bl) || s.Differ(tl, br) || s.Differ(tr, bl) || s.Differ(tr, br) || s.Differ(bl, br)))
+                if (!(refineTl || refineTr || refineBl || refineBr) && CornersDiffer(s, tl, tr, bl, br))
                 {
                     // The corners disagree although each agrees with the centre: refine them all.
                     refineTl = refineTr = refineBl = refineBr = true;
@@ -88,6 +93,9 @@ internal static class AdaptivePixel
             : (br + x) * 0.5;
         return 0.25 * (vTl + vTr + vBl + vBr);
     }
+
+    private static bool CornersDiffer(AdaptiveSampler s, Intensity tl, Intensity tr, Intensity bl, Intensity br) =>
+        s.Differ(tl, tr) || s.Differ(tl, bl) || s.Differ(tl, br) || s.Differ(tr, bl) || s.Differ(tr, br) || s.Differ(bl, br);
 
     private static Intensity Centre<TSource>(ref TSource source, long lx, long ly, ref double samples)
         where TSource : ILatticeSource

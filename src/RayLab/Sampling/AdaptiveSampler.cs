@@ -3,9 +3,9 @@ using System.Globalization;
 namespace RayLab.Sampling;
 
 /// <summary>
-/// The lab's adaptive antialiasing (section 4, after mental ray): trace the four corners and the centre of a
-/// pixel (a quincunx) and subdivide where the values disagree by more than <see cref="Contrast"/>, down to
-/// <see cref="MaxDepth"/>. Rendered by <see cref="Rendering.Renderer.Render(Scene, Cameras.Camera, AdaptiveSampler, Imaging.Image, float[])"/>.
+/// The lab's adaptive antialiasing (section 4, after mental ray): trace the four corners of a pixel, and where
+/// they disagree by more than <see cref="Contrast"/> its centre too (the quincunx), subdividing where the values
+/// disagree, down to <see cref="MaxDepth"/>. Rendered by <see cref="Rendering.Renderer.Render(Scene, Cameras.Camera, AdaptiveSampler, Imaging.Image, float[])"/>.
 /// </summary>
 /// <remarks>
 /// <para>The rule, for a square at depth d (the pixel is depth 0) with corners c₁…c₄ and centre X: quadrant q
@@ -15,6 +15,10 @@ namespace RayLab.Sampling;
 /// two of the square's corners differ by more than <see cref="Contrast"/> while every corner agrees with X
 /// (then all four quadrants are refined). This is the lab's worked example: quadrants whose corner agrees
 /// with the centre stay as they are, the others are subdivided.</para>
+/// <para>A pixel whose four corners agree (and <see cref="MinDepth"/> is 0) is flat: its value is the mean of
+/// its corners and its centre is not traced, so a flat image costs one ray per pixel (the corners are shared).
+/// With <see cref="Quincunx"/> every pixel's centre is traced, as the lab's description lists it (A, B, C, D and
+/// E), at two rays per pixel or more; the combination rule gives the same value for a flat pixel either way.</para>
 /// <para>The value follows the lab's combination rule: <c>value = ¼ Σ_q v(q)</c> with
 /// <c>v(q) = (c_q + X)/2</c> for a quadrant that was not refined and <c>v(q) = value(q)</c> for one that was.</para>
 /// <para>No point is traced twice: pixel corners are shared by up to four pixels, sub-square corners by
@@ -30,8 +34,9 @@ public sealed class AdaptiveSampler
     /// <param name="minDepth">Subdivide every pixel at least this deep (0 ≤ minDepth ≤ maxDepth).</param>
     /// <param name="maxDepth">Never subdivide deeper (0 to <see cref="MaxSupportedDepth"/>).</param>
     /// <param name="contrast">The spatial contrast threshold per channel, ≥ 0 and finite.</param>
+    /// <param name="quincunx">Trace every pixel's centre, even where its corners agree.</param>
     /// <exception cref="ArgumentOutOfRangeException">A depth or the contrast is out of range.</exception>
-    public AdaptiveSampler(int minDepth = 0, int maxDepth = 3, double contrast = 0.1)
+    public AdaptiveSampler(int minDepth = 0, int maxDepth = 3, double contrast = 0.1, bool quincunx = false)
     {
         if (maxDepth is < 0 or > MaxSupportedDepth)
         {
@@ -51,6 +56,7 @@ public sealed class AdaptiveSampler
         MinDepth = minDepth;
         MaxDepth = maxDepth;
         Contrast = contrast;
+        Quincunx = quincunx;
     }
 
     /// <summary>The name the console and scene files use.</summary>
@@ -65,6 +71,12 @@ public sealed class AdaptiveSampler
     /// <summary>The spatial contrast: two values differ when some channel differs by more than this.</summary>
     public double Contrast { get; }
 
+    /// <summary>
+    /// True: every pixel's centre is traced (the lab's quincunx, ≥ 2 rays per pixel). False (the default): only
+    /// where the pixel's corners disagree (about 1 ray per pixel where the image is flat).
+    /// </summary>
+    public bool Quincunx { get; }
+
     /// <summary>True when <paramref name="a"/> and <paramref name="b"/> differ by more than <see cref="Contrast"/> in some channel.</summary>
     /// <param name="a">One value.</param>
     /// <param name="b">The other.</param>
@@ -73,5 +85,5 @@ public sealed class AdaptiveSampler
 
     /// <summary>Describes the settings, e.g. <c>adaptive (depth 0–3, contrast 0.1)</c>.</summary>
     public override string ToString() =>
-        string.Create(CultureInfo.InvariantCulture, $"adaptive (depth {MinDepth}–{MaxDepth}, contrast {Contrast:G6})");
+        string.Create(CultureInfo.InvariantCulture, $"adaptive (depth {MinDepth}–{MaxDepth}, contrast {Contrast:G6}{(Quincunx ? ", quincunx" : "")})");
 }

@@ -9,7 +9,8 @@ namespace RayLab.Scenes;
 /// <param name="MinDepth">Adaptive: the minimum subdivision depth.</param>
 /// <param name="MaxDepth">Adaptive: the maximum subdivision depth.</param>
 /// <param name="Contrast">Adaptive: the spatial contrast threshold.</param>
-public sealed record SamplerSettings(string Type, int Samples, uint Seed, int MinDepth = 0, int MaxDepth = 3, double Contrast = 0.1)
+/// <param name="Quincunx">Adaptive: trace every pixel's centre, even where its corners agree.</param>
+public sealed record SamplerSettings(string Type, int Samples, uint Seed, int MinDepth = 0, int MaxDepth = 3, double Contrast = 0.1, bool Quincunx = false)
 {
     /// <summary>Every sampler name a scene file or the console accepts: the point samplers and <c>adaptive</c>.</summary>
     public static IReadOnlyList<string> Types { get; } = [.. Samplers.Names, "adaptive"];
@@ -26,5 +27,5 @@ public sealed record SamplerSettings(string Type, int Samples, uint Seed, int Mi
 
     /// <summary>Creates the adaptive sampler.</summary>
     /// <exception cref="ArgumentOutOfRangeException">A depth or the contrast is out of range.</exception>
-    public AdaptiveSampler CreateAdaptive() => new(MinDepth, MaxDepth, Contrast);
+    public AdaptiveSampler CreateAdaptive() => new(MinDepth, MaxDepth, Contrast, Quincunx);
 }

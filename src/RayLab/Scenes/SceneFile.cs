@@ -157,7 +157,7 @@ public static class SceneFile
 
         private SamplerSettings ReadSampler(JsonElement sampler)
         {
-            Only(sampler, "sampler", "type", "samples", "seed", "minDepth", "maxDepth", "contrast");
+            Only(sampler, "sampler", "type", "samples", "seed", "minDepth", "maxDepth", "contrast", "quincunx");
             string type = Name(Required(sampler, "sampler", "type"), "sampler.type", SamplerSettings.Types);
             int samples = Optional(sampler, "samples") is { } s ? Int(s, "sampler.samples", 1, 1 << 16) : 1;
             uint seed = 0;
@@ -177,7 +177,9 @@ public static class SceneFile
                 throw Error("sampler.contrast", $"must be ≥ 0, got {contrast}");
             }
 
-            return new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast);
+            bool quincunx = Optional(sampler, "quincunx") is { } q
+                && (q.ValueKind is JsonValueKind.True or JsonValueKind.False ? q.GetBoolean() : throw Error("sampler.quincunx", $"must be true or false, got {Describe(q)}"));
+            return new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast, quincunx);
         }
 
         private JsonElement Object(JsonElement element, string path) =>

@@ -36,8 +36,8 @@ public sealed class AdaptiveCliTests : IDisposable
         Assert.Equal("adaptive", root.GetProperty("sampler").GetString());
         Assert.Equal(2, root.GetProperty("maxDepth").GetInt32());
         long rays = root.GetProperty("rays").GetInt64();
-        // At least the corners and centres; with edges in the picture, more.
-        Assert.True(rays > (81L * 61) + (80L * 60), $"rays = {rays}");
+        // At least the corners; with edges in the picture (centres and subdivisions there), more.
+        Assert.True(rays > 81L * 61, $"rays = {rays}");
         Assert.Contains($"{rays:N0} rays", r.Out);
     }
 

@@ -69,18 +69,43 @@ public class AdaptiveTests
     }
 
     [Theory]
-    [InlineData(0, 0)]
-    [InlineData(0, 3)]
-    public void AnImageWithNoEdgesCostsCornersPlusCentres(int minDepth, int maxDepth)
+    [InlineData(0, 0, true)]
+    [InlineData(0, 3, true)]
+    [InlineData(0, 0, false)]
+    [InlineData(0, 3, false)]
+    public void AnImageWithNoEdgesCostsItsCornersAndWithTheQuincunxItsCentres(int minDepth, int maxDepth, bool quincunx)
     {
         // One huge sphere fills the view: every value agrees, so no pixel is split.
         var scene = new Scene([new Sphere(Double3.Zero, 100, Intensity.White)], Intensity.Black, Intensity.White);
         var camera = new PerspectiveCamera { Position = new Double3(0, 0, 150), Target = Double3.Zero, Fov = 20 };
         const int W = 37, H = 23;
         var image = new Image(W, H);
-        RenderStatistics stats = new Renderer().Render(scene, camera, new AdaptiveSampler(minDepth, maxDepth, 0.1), image);
-        Assert.Equal(((W + 1L) * (H + 1)) + ((long)W * H), stats.PrimaryRays);
+        RenderStatistics stats = new Renderer().Render(scene, camera, new AdaptiveSampler(minDepth, maxDepth, 0.1, quincunx), image);
+        Assert.Equal(((W + 1L) * (H + 1)) + (quincunx ? (long)W * H : 0), stats.PrimaryRays);
         Assert.All(image.PixelBytes.ToArray(), b => Assert.Equal(255, b));
+    }
+
+    [Theory]
+    [InlineData(800, 600, 1.2)]
+    [InlineData(1920, 1080, 1.1)]
+    public void AtItsDefaultSettingsTheTwoSphereSceneCostsLittleMoreThanARayPerPixel(int w, int h, double most)
+    {
+        // Corners (shared: one per pixel) everywhere, centres and subdivisions only at the silhouettes.
+        RenderStatistics stats = new Renderer().Render(TwoSpheres(), Camera, new AdaptiveSampler(), new Image(w, h));
+        Assert.InRange((double)stats.PrimaryRays / (w * h), 1, most);
+    }
+
+    [Fact]
+    public void AFlatPixelHasTheSameValueWithOrWithoutTheQuincunx()
+    {
+        // Same picture either way, the quincunx costs a ray per pixel more.
+        var with = new Image(96, 72);
+        var without = new Image(96, 72);
+        long raysWith = new Renderer().Render(TwoSpheres(), Camera, new AdaptiveSampler(0, 3, 0.05, quincunx: true), with).PrimaryRays;
+        long raysWithout = new Renderer().Render(TwoSpheres(), Camera, new AdaptiveSampler(0, 3, 0.05), without).PrimaryRays;
+        Assert.True(raysWith > raysWithout + (96 * 72 * 9 / 10));
+        byte[] a = with.PixelBytes.ToArray(), b = without.PixelBytes.ToArray();
+        Assert.True(a.Zip(b).Count(p => p.First != p.Second) < a.Length / 100, "more than 1% of the bytes differ");
     }
 
     [Fact]
@@ -108,11 +133,11 @@ public class AdaptiveTests
         RenderStatistics s2 = new Renderer { MaxDegreeOfParallelism = 2 }.Render(TwoSpheres(), Camera, sampler, two);
         Assert.Equal(one.PixelBytes.ToArray(), two.PixelBytes.ToArray());
         Assert.Equal(s1.PrimaryRays, s2.PrimaryRays);
-        // Flat pixels cost their centre plus a quarter of each corner: 2. Edge pixels cost more.
-        Assert.Equal(2f, heat[0]);
+        // Flat pixels cost a quarter of each corner: 1. Edge pixels cost more.
+        Assert.Equal(1f, heat[0]);
         Assert.Contains(heat, h => h > 10);
         double perPixel = (double)s1.PrimaryRays / (W * H);
-        Assert.InRange(perPixel, 2, 6);
+        Assert.InRange(perPixel, 1, 6);
         // Shared points are charged in halves and quarters, so the heat map sums to at most the rays traced.
         Assert.InRange(heat.Sum(), s1.PrimaryRays * 0.9, s1.PrimaryRays + 1e-3);
     }
@@ -150,6 +175,9 @@ public class AdaptiveTests
         var image = new Image(4, 4);
         RenderStatistics stats = new Renderer().Render(scene, camera, new AdaptiveSampler(0, 8, 0.001), image);
         Assert.Equal(0, image.GetPixel(1, 1).R); // the truth is π·0.1² ≈ 0.0314 of the pixel: level 8
+        Assert.Equal(5L * 5, stats.PrimaryRays); // the corners only: they all agree, so no centre is traced
+        stats = new Renderer().Render(scene, camera, new AdaptiveSampler(0, 8, 0.001, quincunx: true), image);
+        Assert.Equal(0, image.GetPixel(1, 1).R);
         Assert.Equal((5L * 5) + 16, stats.PrimaryRays);
 
         // With MinDepth 1 the quadrant centres are traced; (1.25, 2.75) is the top-left quadrant's centre, so it is found.

@@ -211,6 +211,32 @@ public sealed class SceneFileTests : IDisposable
     }
 
     [Theory]
+    [InlineData("true", true)]
+    [InlineData("false", false)]
+    public void TheAdaptiveSamplerMayAskForTheQuincunx(string value, bool expected)
+    {
+        string json = Mutate(Base, SamplerLine, $$"""  "sampler": { "type": "adaptive", "quincunx": {{value}} }""" + "\n");
+
+        SamplerSettings sampler = SceneFile.Parse(json, Source).Sampler;
+
+        Assert.Equal(expected, sampler.Quincunx);
+        Assert.Equal(expected, sampler.CreateAdaptive().Quincunx);
+    }
+
+    [Theory]
+    [InlineData("1")]
+    [InlineData("\"yes\"")]
+    public void AQuincunxThatIsNotABooleanIsReported(string value)
+    {
+        string json = Mutate(Base, SamplerLine, $$"""  "sampler": { "type": "adaptive", "quincunx": {{value}} }""" + "\n");
+
+        SceneFileException e = Assert.Throws<SceneFileException>(() => SceneFile.Parse(json, Source));
+
+        Assert.Equal("sampler.quincunx", e.Field);
+        Assert.Contains("true or false", e.Problem, StringComparison.Ordinal);
+    }
+
+    [Theory]
     [InlineData("\"radius\": 1e999")]
     [InlineData("\"radius\": -1e999")]
     public void ANonFiniteNumberIsReportedAsSuch(string radius)
