@@ -57,11 +57,13 @@ public static class Program
         var minDepth = new Option<int?>("--min-depth") { Description = $"Adaptive: subdivide every pixel at least this deep, 0 to the maximum depth (default 0).", HelpName = "M" };
         var maxDepth = new Option<int?>("--max-depth") { Description = $"Adaptive: never subdivide deeper, 0 to {AdaptiveSampler.MaxSupportedDepth} (default 3).", HelpName = "D" };
         var contrast = new Option<double?>("--contrast") { Description = "Adaptive: split where values differ by more than this in a channel, ≥ 0 (default 0.1).", HelpName = "C" };
+        var kernel = new Option<string?>("--kernel") { Description = "Point samplers: the render loop; auto (default) takes the widest SIMD packet the CPU runs, scalar the double-precision reference loop.", HelpName = string.Join('|', RenderJob.Kernels) };
+        var quincunx = new Option<bool>("--quincunx") { Description = "Adaptive: trace every pixel's centre, even where its corners agree (≈ 1 ray per pixel more)." };
         var heatmap = new Option<string?>("--heatmap") { Description = "Also write the primary rays spent per pixel as a picture with a legend (.png, .bmp).", HelpName = "HEAT.png" };
 
         var render = new Command("render", "Render a scene file into an image.")
         {
-            scene, output, camera, sampler, samples, seed, threads, width, height, stats, minDepth, maxDepth, contrast, heatmap,
+            scene, output, camera, sampler, samples, seed, threads, width, height, stats, minDepth, maxDepth, contrast, quincunx, heatmap, kernel,
         };
         render.SetAction(result => RenderJob.Run(
             new RenderRequest(
@@ -78,7 +80,9 @@ public static class Program
                 result.GetValue(minDepth),
                 result.GetValue(maxDepth),
                 result.GetValue(contrast),
-                result.GetValue(heatmap)),
+                result.GetValue(heatmap),
+                result.GetValue(kernel),
+                result.GetValue(quincunx)),
             stdout,
             stderr));
 

@@ -83,6 +83,7 @@ public static class RenderJob
 
         CheckChoice(request.Camera, "--camera", "camera", CameraSettings.Types);
         CheckChoice(request.Sampler, "--sampler", "sampler", SamplerSettings.Types);
+        CheckChoice(request.Kernel, "--kernel", "kernel", Kernels);
 
         if (request.Threads is < 1)
         {
@@ -102,7 +103,12 @@ public static class RenderJob
 
         Image image = prepared.CreateImage();
         float[]? raysPerPixel = request.HeatmapPath is null ? null : new float[(long)image.Width * image.Height];
-        var renderer = new Renderer { MaxDegreeOfParallelism = request.Threads ?? -1 };
+        var renderer = new Renderer { MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel) };
+        // A small render of the same scene first, so that renderMs is the render and not the JIT compiling it
+        // (the native anchors are compiled ahead of time too); its time is reported as warmupMs.
+        var warmupClock = Stopwatch.StartNew();
+        prepared.Render(renderer, new Image(Math.Min(image.Width, 64), Math.Min(image.Height, 2)), null);
+        double warmupMs = warmupClock.Elapsed.TotalMilliseconds;
         RenderStatistics stats = prepared.Render(renderer, image, raysPerPixel);
 
         var encodeClock = Stopwatch.StartNew();
@@ -115,7 +121,7 @@ public static class RenderJob
 
         if (request.StatsPath is not null)
         {
-            WriteStats(request, prepared, stats, encodeMs);
+            WriteStats(request, prepared, stats, encodeMs, warmupMs);
         }
 
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
@@ -141,6 +147,7 @@ public static class RenderJob
                 MinDepth = r.MinDepth ?? s.MinDepth,
                 MaxDepth = r.MaxDepth ?? s.MaxDepth,
                 Contrast = r.Contrast ?? s.Contrast,
+                Quincunx = r.Quincunx || s.Quincunx,
             },
         };
 
@@ -211,7 +218,13 @@ public static class RenderJob
         }
     }
 
-    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double encodeMs)
+    /// <summary>The kernel names the console accepts, as <see cref="RenderKernel"/> values in lower case.</summary>
+    public static IReadOnlyList<string> Kernels { get; } = [.. Enum.GetNames<RenderKernel>().Select(n => n.ToLowerInvariant())];
+
+    private static RenderKernel ParseKernel(string? name) =>
+        name is null ? RenderKernel.Auto : Enum.Parse<RenderKernel>(name, ignoreCase: true);
+
+    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double encodeMs, double warmupMs)
     {
         var json = new
         {
@@ -231,6 +244,7 @@ public static class RenderJob
             threads = request.Threads ?? Environment.ProcessorCount,
             rays = stats.PrimaryRays,
             renderMs = stats.RenderTime.TotalMilliseconds,
+            warmupMs,
             encodeMs,
             kernel = stats.Kernel.ToString().ToLowerInvariant(),
             retracedSamples = stats.RetracedSamples,

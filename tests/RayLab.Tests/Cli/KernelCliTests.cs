@@ -1,0 +1,62 @@
+using System.Text.Json;
+using RayLab.Cli;
+
+namespace RayLab.Tests.Cli;
+
+/// <summary>The console's --kernel and --quincunx options and the statistics they show.</summary>
+public sealed class KernelCliTests : IDisposable
+{
+    private readonly string _dir = Directory.CreateTempSubdirectory("raylab-kernel-").FullName;
+
+    public void Dispose() => Directory.Delete(_dir, recursive: true);
+
+    private static string Scene => Path.Combine(AppContext.BaseDirectory, "scenes", "two-spheres.json");
+
+    private (int Code, string Out, string Err) Run(params string[] args)
+    {
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        int code = Program.Run(args, stdout, stderr);
+        return (code, stdout.ToString(), stderr.ToString());
+    }
+
+    private JsonElement Stats(params string[] options)
+    {
+        string image = Path.Combine(_dir, "k.png"), stats = Path.Combine(_dir, "k.json");
+        var r = Run(["render", Scene, "-o", image, "--width", "48", "--height", "32", "--stats", stats, .. options]);
+        Assert.True(r.Code == 0, r.Err);
+        return JsonDocument.Parse(File.ReadAllText(stats)).RootElement;
+    }
+
+    [Theory]
+    [InlineData("scalar")]
+    [InlineData("vector128")]
+    [InlineData("vector256")]
+    [InlineData("vector512")]
+    public void TheKernelAskedForIsTheOneThatRendersAndTheStatsSaySo(string kernel)
+    {
+        JsonElement stats = Stats("--sampler", "jittered", "--samples", "4", "--kernel", kernel);
+        Assert.Equal(kernel, stats.GetProperty("kernel").GetString());
+        Assert.True(stats.GetProperty("warmupMs").GetDouble() > 0);
+        Assert.True(stats.GetProperty("retracedSamples").GetInt64() >= 0);
+    }
+
+    [Fact]
+    public void AnUnknownKernelIsAOneLineErrorListingTheChoices()
+    {
+        string image = Path.Combine(_dir, "k.png");
+        var r = Run("render", Scene, "-o", image, "--kernel", "avx");
+        Assert.Equal(1, r.Code);
+        Assert.Equal("raylab: error: --kernel: unknown kernel 'avx'; expected one of: auto, scalar, vector128, vector256, vector512", r.Err.TrimEnd());
+        Assert.Empty(Directory.GetFiles(_dir));
+    }
+
+    [Fact]
+    public void TheQuincunxTracesEveryCentre()
+    {
+        long without = Stats("--sampler", "adaptive").GetProperty("rays").GetInt64();
+        JsonElement with = Stats("--sampler", "adaptive", "--quincunx");
+        Assert.True(with.GetProperty("quincunx").GetBoolean());
+        Assert.True(with.GetProperty("rays").GetInt64() >= without + (48 * 32 * 9 / 10), $"{with.GetProperty("rays")} vs {without}");
+    }
+}
