@@ -17,7 +17,8 @@ public static class PngEncoder
     /// <param name="stream">A writable stream.</param>
     /// <param name="image">The image.</param>
     /// <param name="level">The DEFLATE compression level.</param>
-    public static void Write(Stream stream, Image image, CompressionLevel level = CompressionLevel.Optimal)
+    /// <param name="filter">The row filter; <see cref="PngFilter.Adaptive"/> (the default) picks one per row.</param>
+    public static void Write(Stream stream, Image image, CompressionLevel level = CompressionLevel.Optimal, PngFilter filter = PngFilter.Adaptive)
     {
         ArgumentNullException.ThrowIfNull(stream);
         ArgumentNullException.ThrowIfNull(image);
@@ -44,14 +45,21 @@ public static class PngEncoder
             for (int y = 0; y < image.Height; y++)
             {
                 ReadOnlySpan<byte> row = pixels.Slice(y * rowBytes, rowBytes);
-                long bestScore = long.MaxValue;
-                for (byte filter = 0; filter <= 4; filter++)
+                if (filter != PngFilter.Adaptive)
                 {
-                    long score = Filter(filter, row, previous, trial);
-                    if (score < bestScore)
+                    Filter(filter, row, previous, best);
+                }
+                else
+                {
+                    long bestScore = long.MaxValue;
+                    for (PngFilter candidate = PngFilter.None; candidate <= PngFilter.Paeth; candidate++)
                     {
-                        bestScore = score;
-                        (best, trial) = (trial, best);
+                        long score = Filter(candidate, row, previous, trial);
+                        if (score < bestScore)
+                        {
+                            bestScore = score;
+                            (best, trial) = (trial, best);
+                        }
                     }
                 }
 
@@ -66,26 +74,53 @@ public static class PngEncoder
 
     /// <summary>Applies PNG filter <paramref name="type"/> to one row into <paramref name="output"/> (type byte first).</summary>
     /// <returns>The sum of the filtered bytes taken as signed values (smaller compresses better).</returns>
-    private static long Filter(byte type, ReadOnlySpan<byte> row, ReadOnlySpan<byte> up, Span<byte> output)
+    /// <summary>
+    /// Filters one row into <paramref name="output"/> (type byte first) and scores it by the sum of the
+    /// filtered bytes taken as signed (the PNG book's minimum-sum heuristic). One loop per filter type.
+    /// </summary>
+    private static long Filter(PngFilter type, ReadOnlySpan<byte> row, ReadOnlySpan<byte> up, Span<byte> output)
     {
         const int Bpp = 3;
-        output[0] = type;
-        long score = 0;
-        for (int i = 0; i < row.Length; i++)
+        output[0] = (byte)type;
+        Span<byte> filtered = output.Slice(1, row.Length);
+        switch (type)
         {
-            int a = i >= Bpp ? row[i - Bpp] : 0;
-            int b = up[i];
-            int c = i >= Bpp ? up[i - Bpp] : 0;
-            int predictor = type switch
-            {
-                0 => 0,
-                1 => a,
-                2 => b,
-                3 => (a + b) >> 1,
-                _ => Paeth(a, b, c),
-            };
-            byte value = (byte)(row[i] - predictor);
-            output[i + 1] = value;
+            case PngFilter.None:
+                row.CopyTo(filtered);
+                break;
+            case PngFilter.Sub:
+                for (int i = 0; i < row.Length; i++)
+                {
+                    filtered[i] = (byte)(row[i] - (i >= Bpp ? row[i - Bpp] : 0));
+                }
+
+                break;
+            case PngFilter.Up:
+                for (int i = 0; i < row.Length; i++)
+                {
+                    filtered[i] = (byte)(row[i] - up[i]);
+                }
+
+                break;
+            case PngFilter.Average:
+                for (int i = 0; i < row.Length; i++)
+                {
+                    filtered[i] = (byte)(row[i] - (((i >= Bpp ? row[i - Bpp] : 0) + up[i]) >> 1));
+                }
+
+                break;
+            default:
+                for (int i = 0; i < row.Length; i++)
+                {
+                    filtered[i] = (byte)(row[i] - (i >= Bpp ? Paeth(row[i - Bpp], up[i], up[i - Bpp]) : up[i]));
+                }
+
+                break;
+        }
+
+        long score = 0;
+        foreach (byte value in filtered)
+        {
             score += value < 128 ? value : 256 - value; // |value| taken as a signed byte
         }
 

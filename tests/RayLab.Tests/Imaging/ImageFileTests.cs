@@ -72,6 +72,24 @@ public sealed class ImageFileTests : IDisposable
     }
 
     [Theory]
+    [InlineData(PngFilter.None)]
+    [InlineData(PngFilter.Sub)]
+    [InlineData(PngFilter.Up)]
+    [InlineData(PngFilter.Average)]
+    [InlineData(PngFilter.Paeth)]
+    public void Png_with_one_fixed_filter_uses_it_on_every_row_and_decodes(PngFilter filter)
+    {
+        Image image = TestImages.Varied(67, 23, seed: 5);
+        using var stream = new MemoryStream();
+        PngEncoder.Write(stream, image, System.IO.Compression.CompressionLevel.Fastest, filter);
+
+        PngTestDecoder.Result png = PngTestDecoder.Decode(stream.ToArray());
+
+        Assert.All(png.RowFilters, f => Assert.Equal((byte)filter, f));
+        Assert.Equal(image.PixelBytes.ToArray(), png.Rgb);
+    }
+
+    [Theory]
     [InlineData(16, 1)]
     [InlineData(96, 2)]
     [InlineData(333, 3)]
