@@ -1,0 +1,92 @@
+using BenchmarkDotNet.Attributes;
+using RayLab.Cameras;
+using RayLab.Geometry;
+using RayLab.Imaging;
+using RayLab.Rendering.Packets;
+using RayLab.Sampling;
+
+namespace RayLab.Benchmarks;
+
+/// <summary>The ray–sphere test alone: the scalar double test on 4096 rays, and the packet kernel on one 1920-pixel row (16 spp).</summary>
+[MemoryDiagnoser]
+public class IntersectionBenchmarks
+{
+    private Ray[] _rays = null!;
+    private Sphere _sphere = null!;
+    private PacketFrame _frame = null!;
+    private readonly Rgb24[] _row = new Rgb24[BenchScene.Width];
+    private JitteredSampler _jittered = null!;
+
+    [GlobalSetup]
+    public void Setup()
+    {
+        ImagePlane plane = BenchScene.Camera.GetImagePlane(BenchScene.Width, BenchScene.Height);
+        _sphere = BenchScene.Scene.Spheres[0];
+        _rays = new Ray[4096];
+        for (int i = 0; i < _rays.Length; i++)
+        {
+            _rays[i] = plane.GetPixelRay(600 + (i % 64), 400 + (i / 64), 0.5, 0.5);
+        }
+
+        PacketFrame.TryCreate(BenchScene.Scene, plane, out PacketFrame? frame, out _);
+        _frame = frame!;
+        _jittered = new JitteredSampler(16, 1);
+    }
+
+    [Benchmark(OperationsPerInvoke = 4096)]
+    public int ScalarDoublePerRay()
+    {
+        int hits = 0;
+        foreach (Ray ray in _rays)
+        {
+            hits += _sphere.TryIntersect(ray, 0, double.PositiveInfinity, out _) ? 1 : 0;
+        }
+
+        return hits;
+    }
+
+    [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
+    public int Packet512RowPerSample()
+    {
+        var sampler = new JitteredLanes<Lanes512>(_jittered);
+        return PacketKernel.RenderRow<Lanes512, JitteredLanes<Lanes512>, PerspectiveRays>(_frame, ref sampler, 16, 540, _row);
+    }
+
+    [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
+    public int Packet256RowPerSample()
+    {
+        var sampler = new JitteredLanes<Lanes256>(_jittered);
+        return PacketKernel.RenderRow<Lanes256, JitteredLanes<Lanes256>, PerspectiveRays>(_frame, ref sampler, 16, 540, _row);
+    }
+}
+
+/// <summary>Each sampler's point generation alone: 16 samples for each pixel of a 1920-pixel row.</summary>
+[MemoryDiagnoser]
+public class SamplerBenchmarks
+{
+    private IPixelSampler _sampler = null!;
+
+    [ParamsSource(nameof(Names))]
+    public string Sampler { get; set; } = "jittered";
+
+    public static IEnumerable<string> Names => Samplers.Names;
+
+    [GlobalSetup]
+    public void Setup() => _sampler = Samplers.Create(Sampler, 16, 1);
+
+    [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
+    public double PerSample()
+    {
+        double sum = 0;
+        for (int x = 0; x < BenchScene.Width; x++)
+        {
+            for (int i = 0; i < 16; i++)
+            {
+                SamplePoint p = _sampler.GetSample(x, 540, i);
+                sum += p.X + p.Y;
+            }
+        }
+
+        return sum;
+    }
+}

@@ -1,0 +1,22 @@
+using BenchmarkDotNet.Running;
+
+namespace RayLab.Benchmarks;
+
+/// <summary>
+/// RayLab's benchmarks (BenchmarkDotNet): <c>dotnet run -c Release --project benchmarks/RayLab.Benchmarks -- --filter '*'</c>,
+/// or one class, e.g. <c>--filter '*Frame*'</c>. <c>-- png-sizes</c> prints the PNG size table instead.
+/// </summary>
+public static class Program
+{
+    public static int Main(string[] args)
+    {
+        if (args is ["png-sizes"])
+        {
+            PngSizes.Print(Console.Out);
+            return 0;
+        }
+
+        BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+        return 0;
+    }
+}
