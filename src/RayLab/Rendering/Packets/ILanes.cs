@@ -45,8 +45,10 @@ internal interface ILanes<TSelf>
 
     static abstract TSelf Abs(TSelf x);
 
+    /// <summary>The larger lane, as the hardware's max instruction gives it (NaN and −0 are not treated specially).</summary>
     static abstract TSelf Max(TSelf a, TSelf b);
 
+    /// <summary>The smaller lane, as the hardware's min instruction gives it (NaN and −0 are not treated specially).</summary>
     static abstract TSelf Min(TSelf a, TSelf b);
 
     /// <summary>Mask of lanes where <c>a ≥ b</c>.</summary>

@@ -48,28 +48,22 @@ internal sealed class PacketFrame
         C = plane.C;
         Direction = plane.IsOrthographic ? -plane.W : Double3.Zero;
         Background = Vector(scene.Background);
-        Count = spheres.Length;
-        Offset = new Float3[Count];
-        RadiusSquared = new float[Count];
-        Bound = new float[Count];
-        Colour = new Float3[Count];
-        double[] reach = new double[Count];
-        for (int k = 0; k < Count; k++)
+        Spheres = new SphereConstants[spheres.Length];
+        double[] reach = new double[spheres.Length];
+        for (int k = 0; k < spheres.Length; k++)
         {
             Sphere sphere = spheres[k];
             // Perspective: o − C = e − C for every ray. Orthographic: o − C = (e + c − C) + α a + β b.
             Double3 offset = plane.Eye - sphere.Center + (plane.IsOrthographic ? plane.C : Double3.Zero);
             double largest = plane.IsOrthographic ? LargestOffset(offset, plane.A, plane.B) : offset.Length;
-            Offset[k] = new Float3(offset);
-            RadiusSquared[k] = (float)(sphere.Radius * sphere.Radius);
-            Bound[k] = (float)(32 * Epsilon * ((sphere.Radius * sphere.Radius) + (largest * largest)));
-            Colour[k] = Vector(sphere.Color * scene.Ambient);
+            double bound = 32 * Epsilon * ((sphere.Radius * sphere.Radius) + (largest * largest));
+            Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(sphere.Color * scene.Ambient));
             reach[k] = 3e-3 * (sphere.Radius + largest);
         }
 
-        for (int j = 0; j < Count && !CheckDepthOrder; j++)
+        for (int j = 0; j < spheres.Length && !CheckDepthOrder; j++)
         {
-            for (int k = j + 1; k < Count; k++)
+            for (int k = j + 1; k < spheres.Length; k++)
             {
                 double gap = (spheres[j].Center - spheres[k].Center).Length - spheres[j].Radius - spheres[k].Radius;
                 if (gap <= 2 * (reach[j] + reach[k]))
@@ -106,19 +100,8 @@ internal sealed class PacketFrame
 
     public Float3 Background { get; }
 
-    /// <summary>Spheres the kernel tests (radius 0 left out: never hit).</summary>
-    public int Count { get; }
-
-    /// <summary>Per sphere: e − C (perspective) or e + c − C (orthographic).</summary>
-    public Float3[] Offset { get; }
-
-    public float[] RadiusSquared { get; }
-
-    /// <summary>Per sphere: |Δ| at or below this is uncertain in float.</summary>
-    public float[] Bound { get; }
-
-    /// <summary>Per sphere: colour × ambient.</summary>
-    public Float3[] Colour { get; }
+    /// <summary>The spheres the kernel tests (radius 0 left out: never hit).</summary>
+    public SphereConstants[] Spheres { get; }
 
     /// <summary>True when two spheres are close enough that float could order their hits wrongly.</summary>
     public bool CheckDepthOrder { get; }
@@ -187,6 +170,13 @@ internal sealed class PacketFrame
 
     private static Float3 Vector(Intensity i) => new((float)i.R, (float)i.G, (float)i.B);
 }
+
+/// <summary>One sphere's constants for the kernel.</summary>
+/// <param name="Offset">e − C (perspective) or e + c − C (orthographic).</param>
+/// <param name="RadiusSquared">r².</param>
+/// <param name="InverseBound">1 / the error bound of Δ: |Δ|·this ≤ 1 is uncertain in float.</param>
+/// <param name="Colour">Colour × ambient.</param>
+internal readonly record struct SphereConstants(Float3 Offset, float RadiusSquared, float InverseBound, Float3 Colour);
 
 /// <summary>Three floats: a frame constant the kernel broadcasts into lanes.</summary>
 /// <param name="X">x (or red).</param>

@@ -38,10 +38,7 @@ internal static class PacketKernel
         (TL ax, TL ay, TL az) = (TL.Broadcast(a.X), TL.Broadcast(a.Y), TL.Broadcast(a.Z));
         (TL bx, TL by, TL bz) = (TL.Broadcast(b.X), TL.Broadcast(b.Y), TL.Broadcast(b.Z));
         (TL cx, TL cy, TL cz) = (TL.Broadcast(c.X), TL.Broadcast(c.Y), TL.Broadcast(c.Z));
-        Float3[] offsets = frame.Offset;
-        float[] radiusSquared = frame.RadiusSquared;
-        float[] bounds = frame.Bound;
-        Float3[] colours = frame.Colour;
+        ReadOnlySpan<SphereConstants> spheres = frame.Spheres;
         bool checkOrder = frame.CheckDepthOrder;
         for (int x0 = 0; x0 < frame.Width; x0 += lanes)
         {
@@ -78,11 +75,12 @@ internal static class PacketKernel
                 TL red = TL.Broadcast(background.X);
                 TL green = TL.Broadcast(background.Y);
                 TL blue = TL.Broadcast(background.Z);
+                TL closest = TL.Broadcast(float.PositiveInfinity);   // the smallest |Δ| / bound over the spheres
                 TL unsure = default;
                 TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
-                for (int k = 0; k < offsets.Length; k++)
+                foreach (ref readonly SphereConstants sphere in spheres)
                 {
-                    Float3 offset = offsets[k];
+                    Float3 offset = sphere.Offset;
                     TL fx = TL.Broadcast(offset.X), fy = TL.Broadcast(offset.Y), fz = TL.Broadcast(offset.Z);
                     if (TP.IsOrthographic)
                     {
@@ -94,24 +92,24 @@ internal static class PacketKernel
                     TL px = TL.NegatedMultiplyAdd(dx, along, fx);                       // (o − C) minus its projection on d
                     TL py = TL.NegatedMultiplyAdd(dy, along, fy);
                     TL pz = TL.NegatedMultiplyAdd(dz, along, fz);
-                    TL disc = TL.Broadcast(radiusSquared[k]) - TL.MultiplyAdd(px, px, TL.MultiplyAdd(py, py, pz * pz));
+                    TL disc = TL.Broadcast(sphere.RadiusSquared) - TL.MultiplyAdd(px, px, TL.MultiplyAdd(py, py, pz * pz));
                     TL negatedT = (half + TL.Sqrt(disc * dd)) * rdd;                    // −(near root); NaN when Δ < 0
                     TL hit = TL.LessThan(nearest, negatedT);                             // t < best (false for NaN)
-                    unsure |= TL.LessThanOrEqual(TL.Abs(disc), TL.Broadcast(bounds[k]));
+                    closest = TL.Min(closest, TL.Abs(disc) * TL.Broadcast(sphere.InverseBound));
                     if (checkOrder)
                     {
                         unsure |= hit & TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
                     }
 
                     nearest = TL.Select(hit, negatedT, nearest);
-                    Float3 colour = colours[k];
+                    Float3 colour = sphere.Colour;
                     red = TL.Select(hit, TL.Broadcast(colour.X), red);
                     green = TL.Select(hit, TL.Broadcast(colour.Y), green);
                     blue = TL.Select(hit, TL.Broadcast(colour.Z), blue);
                 }
 
                 // The colour of the nearest sphere hit in each lane, or the background; uncertain lanes again in double.
-                uint uncertain = TL.MaskBits(unsure);
+                uint uncertain = TL.MaskBits(unsure | TL.LessThanOrEqual(closest, one));
                 if (uncertain != 0)
                 {
                     LaneColour<TL> exact = Retrace(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertain));
