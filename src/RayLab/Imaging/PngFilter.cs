@@ -13,7 +13,7 @@ public enum PngFilter
     /// <summary>Minus the byte to the left.</summary>
     Sub = 1,
 
-    /// <summary>Minus the byte above.</summary>
+    /// <summary>Minus the byte above; <see cref="PngEncoder"/>'s default.</summary>
     Up = 2,
 
     /// <summary>Minus the mean of left and above.</summary>
@@ -22,6 +22,6 @@ public enum PngFilter
     /// <summary>Minus the Paeth predictor of left, above and upper left.</summary>
     Paeth = 4,
 
-    /// <summary>The best of the five for each row (the minimum-sum heuristic); the default.</summary>
+    /// <summary>The best of the five for each row (the minimum-sum heuristic).</summary>
     Adaptive = 5,
 }

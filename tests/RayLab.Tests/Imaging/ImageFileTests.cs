@@ -61,13 +61,26 @@ public sealed class ImageFileTests : IDisposable
     }
 
     [Fact]
-    public void Png_encoder_uses_every_filter_type_and_each_still_decodes()
+    public void Png_adaptive_filter_uses_every_filter_type_and_each_still_decodes()
     {
         Image image = TestImages.Varied(96, 40, seed: 42);
+        using var stream = new MemoryStream();
+        PngEncoder.Write(stream, image, System.IO.Compression.CompressionLevel.Optimal, PngFilter.Adaptive);
+
+        PngTestDecoder.Result png = PngTestDecoder.Decode(stream.ToArray());
+
+        Assert.Equal(new byte[] { 0, 1, 2, 3, 4 }, png.RowFilters.Distinct().Order());
+        Assert.Equal(image.PixelBytes.ToArray(), png.Rgb);
+    }
+
+    [Fact]
+    public void Png_files_use_the_up_filter_by_default()
+    {
+        Image image = TestImages.Varied(40, 12, seed: 9);
 
         PngTestDecoder.Result png = PngTestDecoder.Decode(ToBytes(image, ImageFormat.Png));
 
-        Assert.Equal(new byte[] { 0, 1, 2, 3, 4 }, png.RowFilters.Distinct().Order());
+        Assert.All(png.RowFilters, f => Assert.Equal((byte)PngFilter.Up, f));
         Assert.Equal(image.PixelBytes.ToArray(), png.Rgb);
     }
 
@@ -93,11 +106,13 @@ public sealed class ImageFileTests : IDisposable
     [InlineData(16, 1)]
     [InlineData(96, 2)]
     [InlineData(333, 3)]
-    public void Png_encoder_picks_the_filter_with_the_smallest_sum_for_each_kind_of_row(int width, int seed)
+    public void Png_adaptive_filter_picks_the_filter_with_the_smallest_sum_for_each_kind_of_row(int width, int seed)
     {
         Image image = TestImages.Varied(width, 2 * TestImages.BandHeight, seed);
+        using var stream = new MemoryStream();
+        PngEncoder.Write(stream, image, System.IO.Compression.CompressionLevel.Optimal, PngFilter.Adaptive);
 
-        PngTestDecoder.Result png = PngTestDecoder.Decode(ToBytes(image, ImageFormat.Png));
+        PngTestDecoder.Result png = PngTestDecoder.Decode(stream.ToArray());
 
         // Rows 1, 3, 4, 6 and 8 of each band are built so that Sub, Up, None, Average and Paeth win outright.
         for (int band = 0; band < image.Height; band += TestImages.BandHeight)
