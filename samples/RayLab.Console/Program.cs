@@ -26,7 +26,7 @@ public static class Program
         ParseResult parsed = root.Parse(args);
         if (parsed.Errors.Count > 0)
         {
-            stderr.WriteLine($"raylab: error: {parsed.Errors[0].Message} (see 'raylab --help')");
+            stderr.WriteLine(CommandLineError.Describe(parsed));
             return 2;
         }
 

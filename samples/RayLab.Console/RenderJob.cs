@@ -175,7 +175,8 @@ public static class RenderJob
     {
         if (value is not null && !allowed.Contains(value, StringComparer.Ordinal))
         {
-            throw new UsageException($"{option}: unknown {what} '{value}'; expected one of: {string.Join(", ", allowed)}");
+            throw new UsageException(
+                $"{option}: unknown {what} '{value}'; expected one of: {string.Join(", ", allowed)}{Suggestions.DidYouMean(value, allowed)}");
         }
     }
 
