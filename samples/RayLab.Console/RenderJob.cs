@@ -103,13 +103,18 @@ public static class RenderJob
 
         Image image = prepared.CreateImage();
         float[]? raysPerPixel = request.HeatmapPath is null ? null : new float[(long)image.Width * image.Height];
-        var renderer = new Renderer { MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel) };
+        var progress = new RenderProgress();
+        var renderer = new Renderer { MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress };
         // A small render of the same scene first, so that renderMs is the render and not the JIT compiling it
         // (the native anchors are compiled ahead of time too); its time is reported as warmupMs.
         var warmupClock = Stopwatch.StartNew();
         prepared.Render(renderer, new Image(Math.Min(image.Width, 64), Math.Min(image.Height, 2)), null);
         double warmupMs = warmupClock.Elapsed.TotalMilliseconds;
-        RenderStatistics stats = prepared.Render(renderer, image, raysPerPixel);
+        RenderStatistics stats;
+        using (ProgressDisplay.ForTerminal(stdout, progress, Path.GetFileName(request.OutputPath)))
+        {
+            stats = prepared.Render(renderer, image, raysPerPixel);
+        }
 
         var encodeClock = Stopwatch.StartNew();
         image.Save(request.OutputPath);
