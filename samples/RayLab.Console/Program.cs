@@ -1,4 +1,7 @@
 using System.CommandLine;
+using System.CommandLine.Help;
+using System.Globalization;
+using RayLab.Imaging;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -44,26 +47,29 @@ public static class Program
 
     private static RootCommand BuildCommands(TextWriter stdout, TextWriter stderr)
     {
-        var scene = new Argument<string>("scene") { Description = "The scene file (JSON; see the README for its fields)." };
-        var output = new Option<string>("--output", "-o") { Description = "The image to write; the format follows the extension (.png, .bmp).", Required = true };
-        var camera = new Option<string?>("--camera") { Description = "Override the scene's camera type.", HelpName = string.Join('|', CameraSettings.Types) };
-        var sampler = new Option<string?>("--sampler") { Description = "Override the scene's sampler.", HelpName = string.Join('|', SamplerSettings.Types) };
-        var samples = new Option<int?>("--samples") { Description = "Samples per pixel, ≥ 1 (a perfect square for regular and jittered).", HelpName = "N" };
-        var seed = new Option<uint?>("--seed") { Description = "The sampler's seed, 0 to 4294967295.", HelpName = "S" };
-        var threads = new Option<int?>("--threads") { Description = "Render threads, ≥ 1 (default: all cores).", HelpName = "T" };
-        var width = new Option<int?>("--width") { Description = "Override the image width, ≥ 1.", HelpName = "W" };
-        var height = new Option<int?>("--height") { Description = "Override the image height, ≥ 1.", HelpName = "H" };
-        var stats = new Option<string?>("--stats") { Description = "Also write render statistics as JSON (rays, renderMs, encodeMs, …).", HelpName = "STATS.json" };
-        var minDepth = new Option<int?>("--min-depth") { Description = $"Adaptive: subdivide every pixel at least this deep, 0 to the maximum depth (default 0).", HelpName = "M" };
-        var maxDepth = new Option<int?>("--max-depth") { Description = $"Adaptive: never subdivide deeper, 0 to {AdaptiveSampler.MaxSupportedDepth} (default 3).", HelpName = "D" };
-        var contrast = new Option<double?>("--contrast") { Description = "Adaptive: split where values differ by more than this in a channel, ≥ 0 (default 0.1).", HelpName = "C" };
-        var kernel = new Option<string?>("--kernel") { Description = "Point samplers: the render loop; auto (default) takes the widest SIMD packet the CPU runs, scalar the double-precision reference loop.", HelpName = string.Join('|', RenderJob.Kernels) };
-        var quincunx = new Option<bool>("--quincunx") { Description = "Adaptive: trace every pixel's centre, even where its corners agree (≈ 1 ray per pixel more)." };
-        var heatmap = new Option<string?>("--heatmap") { Description = "Also write the primary rays spent per pixel as a picture with a legend (.png, .bmp).", HelpName = "HEAT.png" };
+        // Options override the scene file, so each says what it falls back to: the scene's field, and the value
+        // a scene file that omits the field gets (SamplerSettings' defaults, as SceneFile reads them).
+        SamplerSettings d = SamplerSettings.Default;
+        var scene = new Argument<string>("scene") { Description = "The scene file: JSON with image, camera, spheres, … (see the README's \"Scene files\")." };
+        var output = new Option<string>("--output", "-o") { Description = "The image to write, .png or .bmp (the format follows the extension).", HelpName = "OUT.png", Required = true };
+        var camera = new Option<string?>("--camera") { Description = $"{Choices(CameraSettings.Types)}. Default: the scene's camera.type.", HelpName = "TYPE" };
+        var sampler = new Option<string?>("--sampler") { Description = $"{Choices(SamplerSettings.Types)}. Default: the scene's sampler.type; {d.Type} if omitted.", HelpName = "NAME" };
+        var samples = new Option<int?>("--samples") { Description = $"Samples per pixel, ≥ 1; a perfect square (1, 4, 9, …) for regular, jittered and multijittered. Default: the scene's sampler.samples; {d.Samples} if omitted.", HelpName = "N" };
+        var seed = new Option<uint?>("--seed") { Description = $"The sampler's seed, 0 to {uint.MaxValue}. Default: the scene's sampler.seed; {d.Seed} if omitted.", HelpName = "S" };
+        var threads = new Option<int?>("--threads") { Description = $"Render threads, ≥ 1. Default: all cores ({Environment.ProcessorCount} here).", HelpName = "T" };
+        var width = new Option<int?>("--width") { Description = $"Image width in pixels, ≥ 1, with W·H·3 ≤ {Image.MaxBytes:N0} bytes. Default: the scene's image.width.", HelpName = "W" };
+        var height = new Option<int?>("--height") { Description = $"Image height in pixels, ≥ 1, with W·H·3 ≤ {Image.MaxBytes:N0} bytes. Default: the scene's image.height.", HelpName = "H" };
+        var stats = new Option<string?>("--stats") { Description = "Also write render statistics as JSON (rays, renderMs, encodeMs, …). Default: none.", HelpName = "STATS.json" };
+        var minDepth = new Option<int?>("--min-depth") { Description = $"Adaptive: subdivide every pixel at least this deep, 0 to the maximum depth. Default: the scene's sampler.minDepth; {d.MinDepth} if omitted.", HelpName = "M" };
+        var maxDepth = new Option<int?>("--max-depth") { Description = $"Adaptive: never subdivide deeper, 0 to {AdaptiveSampler.MaxSupportedDepth}. Default: the scene's sampler.maxDepth; {d.MaxDepth} if omitted.", HelpName = "D" };
+        var contrast = new Option<double?>("--contrast") { Description = $"Adaptive: subdivide where a channel differs by more than this, ≥ 0. Default: the scene's sampler.contrast; {d.Contrast.ToString(CultureInfo.InvariantCulture)} if omitted.", HelpName = "C" };
+        var quincunx = new Option<bool>("--quincunx") { Description = $"Adaptive: trace every pixel's centre, even where its corners agree (≈ 1 ray per pixel more). Default: the scene's sampler.quincunx; {(d.Quincunx ? "true" : "false")} if omitted." };
+        var kernel = new Option<string?>("--kernel") { Description = $"Point samplers: the render loop, {Choices(RenderJob.Kernels)}; auto takes the widest SIMD packet the CPU runs, scalar is the double-precision reference loop. Default: auto.", HelpName = "KERNEL" };
+        var heatmap = new Option<string?>("--heatmap") { Description = "Also write the primary rays spent per pixel as an image with a legend, .png or .bmp. Default: none.", HelpName = "HEAT.png" };
 
         var render = new Command("render", "Render a scene file into an image.")
         {
-            scene, output, camera, sampler, samples, seed, threads, width, height, stats, minDepth, maxDepth, contrast, quincunx, heatmap, kernel,
+            scene, output, camera, sampler, samples, seed, minDepth, maxDepth, contrast, quincunx, width, height, threads, kernel, stats, heatmap,
         };
         render.SetAction(result => RenderJob.Run(
             new RenderRequest(
@@ -88,11 +94,22 @@ public static class Program
 
         var root = new RootCommand(
             "RayLab: the photorealistic-rendering lab's ray tracer. With no command, renders the two-sphere scene "
-            + "with the orthographic and the perspective camera, adaptive antialiasing, into out/ (with heat maps).")
+            + "with the orthographic and the perspective camera, adaptive antialiasing, into out/ (with heat maps). "
+            + "'raylab render --help' lists the options of a render.")
         {
             render,
         };
+        root.HelpName = "raylab"; // not the host's name (dotnet, testhost) in the usage lines
         root.SetAction(_ => RenderJob.RunDefault(stdout, stderr));
+
+        // Help wraps at the terminal's width, else at 80 columns (the parser's default for redirected output is one long line).
+        if (root.Options.OfType<HelpOption>().FirstOrDefault()?.Action is HelpAction help)
+        {
+            help.MaxWidth = ProgressDisplay.IsTerminal(stdout) ? Math.Max(Console.WindowWidth, 40) : 80;
+        }
+
         return root;
     }
+
+    private static string Choices(IReadOnlyList<string> names) => $"{string.Join(", ", names.SkipLast(1))} or {names[^1]}";
 }
