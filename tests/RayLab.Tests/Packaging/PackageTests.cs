@@ -8,7 +8,8 @@ namespace RayLab.Tests.Packaging;
 /// <summary>
 /// What a new user does, end to end, with child <c>dotnet</c> processes: pack the library (<c>RayLab</c>) and the
 /// tool (<c>RayLab.Tool</c>) into a folder feed; build and run a fresh console app whose Program.cs is the README's
-/// "The library in ten lines" example, referencing the package; install the tool from the feed and run it.
+/// "The library in ten lines" example, referencing the package; build and run the README's test project, a copy of
+/// tests/RayLab.Tests/Examples, against the package; install the tool from the feed and run it.
 /// The children get an empty NUGET_PACKAGES folder, so no cached copy of an older RayLab package can stand in.
 /// </summary>
 [Trait("Category", "Packaging")]
@@ -31,7 +32,7 @@ public sealed partial class PackageTests : IDisposable
     }
 
     [Fact]
-    public async Task PackagedLibraryRunsTheReadmeExampleAndTheInstalledToolRenders()
+    public async Task PackagedLibraryRunsTheReadmeExampleAndTestProjectAndTheInstalledToolRenders()
     {
         string repo = FindRepoRoot();
         string feed = Path.Combine(_dir, "feed");
@@ -81,7 +82,19 @@ public sealed partial class PackageTests : IDisposable
         await RunAsync(app, packages, "dotnet", "run", "-c", "Release");
         AssertPng(Path.Combine(app, "two-spheres.png"), 800, 600);
 
-        // 3. The tool, installed from the feed.
+        // 3. The README's own test project (quick start, part 3): the Examples folder copied beside its project file,
+        // so the examples a student starts from build against the package alone and pass.
+        string tests = Directory.CreateDirectory(Path.Combine(_dir, "tests")).FullName;
+        foreach (string file in Directory.GetFiles(Path.Combine(repo, "tests", "RayLab.Tests", "Examples"), "*.cs"))
+        {
+            File.Copy(file, Path.Combine(tests, Path.GetFileName(file)));
+        }
+
+        File.WriteAllText(Path.Combine(tests, "RayLabTests.csproj"), ReadmeTestProject(repo));
+        File.Copy(Path.Combine(app, "nuget.config"), Path.Combine(tests, "nuget.config"));
+        await RunAsync(tests, packages, "dotnet", "test", "-c", "Release");
+
+        // 4. The tool, installed from the feed.
         string tools = Path.Combine(_dir, "tools");
         await RunAsync(_dir, packages, "dotnet", "tool", "install", "RayLab.Tool", "--tool-path", tools,
             "--add-source", feed, "--version", version);
@@ -106,6 +119,18 @@ public sealed partial class PackageTests : IDisposable
         Assert.True(m.Success, "README.md has no ```csharp block under \"## The library in ten lines\"");
         return m.Groups["code"].Value;
     }
+
+    /// <summary>The project file the README's quick start writes with <c>cat &gt; RayLabTests.csproj &lt;&lt;'EOF'</c>.</summary>
+    private static string ReadmeTestProject(string repo)
+    {
+        string readme = File.ReadAllText(Path.Combine(repo, "README.md")).ReplaceLineEndings("\n");
+        Match m = ReadmeTestProjectFile().Match(readme);
+        Assert.True(m.Success, "README.md has no \"cat > RayLabTests.csproj <<'EOF'\" block under \"### 3. Tests\"");
+        return m.Groups["project"].Value;
+    }
+
+    [GeneratedRegex(@"^### 3\. Tests\n(?:(?!^##).)*?^cat > RayLabTests\.csproj <<'EOF'\n(?<project>.*?)^EOF$", RegexOptions.Multiline | RegexOptions.Singleline)]
+    private static partial Regex ReadmeTestProjectFile();
 
     [GeneratedRegex(@"^## The library in ten lines\n(?:(?!^## ).)*?^```csharp\n(?<code>.*?)^```", RegexOptions.Multiline | RegexOptions.Singleline)]
     private static partial Regex ReadmeExample();
