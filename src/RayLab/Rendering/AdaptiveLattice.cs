@@ -43,6 +43,19 @@ internal sealed class AdaptiveLattice
         });
     }
 
+    /// <summary>
+    /// True when pixel (<paramref name="x"/>, <paramref name="y"/>)'s four corners hit the same thing: a flat pixel
+    /// (when the sampler does not insist on centres), whose value is that thing's, <paramref name="value"/>.
+    /// </summary>
+    public bool TryFlat(int x, int y, out Intensity value)
+    {
+        int stride = _plane.Width + 1;
+        ReadOnlySpan<int> top = _corners.AsSpan((y * stride) + x, 2), bottom = _corners.AsSpan(((y + 1) * stride) + x, 2);
+        int id = top[0];
+        value = _palette[id];
+        return top[1] == id && bottom[0] == id && bottom[1] == id;
+    }
+
     /// <summary>Steps per pixel side.</summary>
     public long Size => _size;
 

@@ -33,8 +33,9 @@ internal static class AdaptivePixel
         Intensity br = Take(ref source, x0 + size, y0 + size, ref samples);
         if (!sampler.Quincunx && sampler.MinDepth == 0 && !CornersDiffer(sampler, tl, tr, bl, br))
         {
-            // A flat pixel: the mean of its corners, which is what the combination rule gives for any centre that agrees.
-            return 0.25 * (tl + tr + bl + br);
+            // A flat pixel: the mean of its corners, which is what the combination rule gives for any centre that
+            // agrees (exactly the corners' value when they are equal, as AdaptiveLattice.TryFlat takes it).
+            return tl == tr && tl == bl && tl == br ? tl : 0.25 * (tl + tr + bl + br);
         }
 
         Intensity centre = Centre(ref source, x0 + (size / 2), y0 + (size / 2), ref samples);

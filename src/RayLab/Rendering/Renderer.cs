@@ -180,8 +180,21 @@ public sealed class Renderer
         Parallel.For(0, image.Height, options, () => new AdaptiveLattice.Source(lattice), (row, _, source) =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
+            bool flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
             for (int x = 0; x < pixels.Length; x++)
             {
+                // Most pixels: four corners on the same sphere (or the background), nothing more to trace.
+                if (flatWithoutCentre && lattice.TryFlat(x, row, out Intensity flat))
+                {
+                    pixels[x] = Rgb24.FromIntensity(flat);
+                    if (raysPerPixel is not null)
+                    {
+                        raysPerPixel[((long)row * pixels.Length) + x] = 1;
+                    }
+
+                    continue;
+                }
+
                 source.NextPixel();
                 Intensity value = AdaptivePixel.Evaluate(sampler, ref source, x, row, out double samples);
                 pixels[x] = Rgb24.FromIntensity(value);
