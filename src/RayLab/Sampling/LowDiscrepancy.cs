@@ -40,18 +40,45 @@ internal static class LowDiscrepancy
     /// </summary>
     /// <param name="index">The index.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    internal static uint SobolDimension1(uint index)
+    internal static uint SobolDimension1(uint index) =>
+        Dimension1Bytes[index & 0xff] ^ Dimension1Bytes[256 + ((index >> 8) & 0xff)]
+        ^ Dimension1Bytes[512 + ((index >> 16) & 0xff)] ^ Dimension1Bytes[768 + (index >> 24)];
+
+    /// <summary>
+    /// <see cref="SobolDimension1"/> a byte at a time: entry 256·k + b is the XOR of the generator columns for the
+    /// set bits of byte b in position k. Four lookups instead of a loop over up to 32 bits (scrambled indices use
+    /// all 32, and the loop's branches made this sampler twenty times slower than jittered).
+    /// </summary>
+    private static readonly uint[] Dimension1Bytes = BuildDimension1Bytes();
+
+    private static uint[] BuildDimension1Bytes()
     {
-        uint v = 0x80000000u, result = 0;
-        for (; index != 0; index >>= 1, v ^= v >> 1)
+        var columns = new uint[32];
+        uint v = 0x80000000u;
+        for (int k = 0; k < 32; k++, v ^= v >> 1)
         {
-            if ((index & 1) != 0)
+            columns[k] = v;
+        }
+
+        var table = new uint[4 * 256];
+        for (int k = 0; k < 4; k++)
+        {
+            for (int b = 0; b < 256; b++)
             {
-                result ^= v;
+                uint result = 0;
+                for (int bit = 0; bit < 8; bit++)
+                {
+                    if ((b & (1 << bit)) != 0)
+                    {
+                        result ^= columns[(8 * k) + bit];
+                    }
+                }
+
+                table[(256 * k) + b] = result;
             }
         }
 
-        return result;
+        return table;
     }
 
     /// <summary>

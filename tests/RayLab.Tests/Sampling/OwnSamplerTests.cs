@@ -535,6 +535,28 @@ public class OwnSamplerTests
     }
 
     [Fact]
+    public void SobolSecondDimensionByBytesEqualsTheBitByBitDefinition()
+    {
+        // The byte tables against the definition: xor of v_k over the set bits k, v₀ = 2³¹, v_k = v_{k−1} ⊕ (v_{k−1} ≫ 1).
+        static uint BitByBit(uint index)
+        {
+            uint v = 0x80000000u, result = 0;
+            for (; index != 0; index >>= 1, v ^= v >> 1)
+            {
+                result ^= (index & 1) != 0 ? v : 0;
+            }
+
+            return result;
+        }
+
+        for (uint k = 0; k < 20000; k++)
+        {
+            uint index = CounterHash.Hash(k) ^ (k << 7);
+            Assert.Equal(BitByBit(index), LowDiscrepancy.SobolDimension1(index));
+        }
+    }
+
+    [Fact]
     public void ReverseBitsMirrorsAll32Bits()
     {
         for (uint k = 0; k < 5000; k++)
