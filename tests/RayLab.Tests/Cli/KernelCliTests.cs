@@ -1,5 +1,4 @@
 using System.Text.Json;
-using RayLab.Cli;
 
 namespace RayLab.Tests.Cli;
 
@@ -12,13 +11,7 @@ public sealed class KernelCliTests : IDisposable
 
     private static string Scene => Path.Combine(AppContext.BaseDirectory, "scenes", "two-spheres.json");
 
-    private (int Code, string Out, string Err) Run(params string[] args)
-    {
-        var stdout = new StringWriter();
-        var stderr = new StringWriter();
-        int code = Program.Run(args, stdout, stderr);
-        return (code, stdout.ToString(), stderr.ToString());
-    }
+    private static (int Code, string Out, string Err) Run(params string[] args) => ConsoleRunner.Run(args);
 
     private JsonElement Stats(params string[] options)
     {

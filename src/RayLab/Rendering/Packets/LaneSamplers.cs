@@ -19,6 +19,22 @@ internal interface ILaneSampler<TL>
     void Sample(int index, out TL sx, out TL sy);
 }
 
+/// <summary><see cref="CounterHash"/> in lanes: one pixel per lane.</summary>
+internal static class LaneHash
+{
+    /// <summary><see cref="CounterHash.PixelKey"/> of pixels x0 … x0 + Count − 1 of a row; <paramref name="salt"/> is the hashed, salted seed.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL PixelKeys<TL>(int x0, int row, uint salt)
+        where TL : struct, ILanes<TL> =>
+        TL.Hash(TL.Xor(TL.BroadcastBits(((uint)row << 16) ^ salt), TL.SequenceBits((uint)x0)));
+
+    /// <summary><see cref="CounterHash.SampleHash"/> of sample <paramref name="index"/> in every lane.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL SampleHash<TL>(TL keys, int index)
+        where TL : struct, ILanes<TL> =>
+        TL.Hash(TL.Xor(keys, TL.BroadcastBits((uint)index * CounterHash.Golden)));
+}
+
 /// <summary><see cref="JitteredSampler"/> in lanes: the counter hash runs in SIMD, one lane per pixel.</summary>
 internal struct JitteredLanes<TL>(JitteredSampler sampler) : ILaneSampler<TL>
     where TL : struct, ILanes<TL>
@@ -29,13 +45,12 @@ internal struct JitteredLanes<TL>(JitteredSampler sampler) : ILaneSampler<TL>
     private TL _keys;
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public void BeginPacket(int x0, int row) =>
-        _keys = TL.Hash(TL.Xor(TL.BroadcastBits(((uint)row << 16) ^ _salt), TL.SequenceBits((uint)x0)));
+    public void BeginPacket(int x0, int row) => _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
-        TL h1 = TL.Hash(TL.Xor(_keys, TL.BroadcastBits((uint)index * CounterHash.Golden)));
+        TL h1 = LaneHash.SampleHash(_keys, index);
         TL h2 = TL.Hash(h1);
         (float column, float row) = _cells[index];
         sx = (TL.Broadcast(column) + TL.ToUnit(h1)) * _invN;
@@ -63,13 +78,12 @@ internal struct RandomLanes<TL>(RandomSampler sampler) : ILaneSampler<TL>
     private TL _keys;
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public void BeginPacket(int x0, int row) =>
-        _keys = TL.Hash(TL.Xor(TL.BroadcastBits(((uint)row << 16) ^ _salt), TL.SequenceBits((uint)x0)));
+    public void BeginPacket(int x0, int row) => _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
-        TL h1 = TL.Hash(TL.Xor(_keys, TL.BroadcastBits((uint)index * CounterHash.Golden)));
+        TL h1 = LaneHash.SampleHash(_keys, index);
         sx = TL.ToUnit(h1);
         sy = TL.ToUnit(TL.Hash(h1));
     }
