@@ -11,7 +11,9 @@ namespace RayLab.PrecisionReport;
 /// <param name="NaiveFloatError">The worst surface error | |p − C| − R | of the textbook float test's hit points.</param>
 /// <param name="RtgFloatError">The same for Ray Tracing Gems in float.</param>
 /// <param name="DoubleError">The same for Ray Tracing Gems in plain double.</param>
+/// <param name="AccurateError">The same for RayLab's <c>TryIntersectAccurate</c>.</param>
 /// <param name="DoubleErrorUlps">The plain-double surface error in ulp(|p|), worst over the hits.</param>
+/// <param name="AccurateErrorUlps">RayLab's accurate surface error in ulp(|p|), worst over the hits.</param>
 public sealed record CaseResult(
     HardCase Case, int Pixels, int ExactHits, int NaiveFloatWrong, int RtgFloatWrong, int RayLabWrong, int DoubleWrong,
-    double NaiveFloatError, double RtgFloatError, double DoubleError, double DoubleErrorUlps);
+    double NaiveFloatError, double RtgFloatError, double DoubleError, double AccurateError, double DoubleErrorUlps, double AccurateErrorUlps);

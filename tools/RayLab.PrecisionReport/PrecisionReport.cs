@@ -43,7 +43,7 @@ public static class PrecisionReport
 
         ImagePlane plane = hardCase.Camera.GetImagePlane(size, size);
         int exactHits = 0, naiveWrong = 0, rtgWrong = 0, rayLabWrong = 0, doubleWrong = 0;
-        Worst naive = Worst.None, rtg = Worst.None, plain = Worst.None;
+        Worst naive = Worst.None, rtg = Worst.None, plain = Worst.None, accurate = Worst.None;
         for (int row = 0; row < size; row++)
         {
             for (int x = 0; x < size; x++)
@@ -64,6 +64,9 @@ public static class PrecisionReport
                 doubleWrong += hit != exact ? 1 : 0;
                 plain = plain.Add(hit && exact, p, sphere);
 
+                hit = sphere.TryIntersectAccurate(ray, plane.TMin, plane.TMax, out _, out p);
+                accurate = accurate.Add(hit && exact, p, sphere);
+
                 Rgb24 pixel = image.GetPixel(x, row);
                 Rgb24 expected = exact ? new Rgb24(255, 255, 255) : new Rgb24(0, 0, 0);
                 rayLabWrong += pixel != expected ? 1 : 0;
@@ -71,7 +74,7 @@ public static class PrecisionReport
         }
 
         return new CaseResult(hardCase, size * size, exactHits, naiveWrong, rtgWrong, rayLabWrong, doubleWrong,
-            naive.Error, rtg.Error, plain.Error, plain.Ulps);
+            naive.Error, rtg.Error, plain.Error, accurate.Error, plain.Ulps, accurate.Ulps);
     }
 
     /// <summary>The page: what was measured, how, and the two tables.</summary>
@@ -101,7 +104,9 @@ public static class PrecisionReport
         Line($"  formula `Sphere.TryIntersect` uses, kept here as a fixed reference whatever the renderer's path becomes.");
         Line($"");
         int rayLabWrong = results.Sum(r => r.RayLabWrong);
-        Line($"In this run RayLab's renderer got {rayLabWrong} of {results.Sum(r => r.Pixels)} pixels wrong over {results.Count} cases.");
+        double worstUlps = results.Max(r => double.IsNaN(r.AccurateErrorUlps) ? 0 : r.AccurateErrorUlps);
+        Line($"In this run RayLab's renderer got {rayLabWrong} of {results.Sum(r => r.Pixels)} pixels wrong over {results.Count} cases, and");
+        Line($"`TryIntersectAccurate` put every hit point within {worstUlps:G2} ulp(|p|) of the surface.");
         Line($"");
         Line($"## Wrong pixels");
         Line($"");
@@ -116,14 +121,16 @@ public static class PrecisionReport
         Line($"## How far hit points lie from the surface");
         Line($"");
         Line($"The worst | |p − C| − R | over the pixels where both the method and the exact decision see a hit, evaluated");
-        Line($"exactly (`ExactSphere.Residual`), for p = o + t d as each method computes it. ulp(|p|) is the spacing of");
+        Line($"exactly (`ExactSphere.Residual`), for p = o + t d as each method computes it. **RayLab accurate** is");
+        Line($"`sphere.TryIntersectAccurate(ray, tMin, tMax, out t, out p)`: the renderer's decision, then the root recomputed");
+        Line($"in double-double from the exact o − C (see `src/RayLab/Geometry/AccurateHit.cs`). ulp(|p|) is the spacing of");
         Line($"doubles at the hit point's distance from the origin: the floor that rounding p's coordinates imposes.");
         Line($"");
-        Line($"| case | float32 textbook | float32 RTG | double RTG | double RTG, ulp(\\|p\\|) |");
-        Line($"|---|---:|---:|---:|---:|");
+        Line($"| case | float32 textbook | float32 RTG | double RTG | double RTG, ulp(\\|p\\|) | RayLab accurate | RayLab accurate, ulp(\\|p\\|) |");
+        Line($"|---|---:|---:|---:|---:|---:|---:|");
         foreach (CaseResult r in results)
         {
-            Line($"| {r.Case.Name} | {Error(r.NaiveFloatError)} | {Error(r.RtgFloatError)} | {Error(r.DoubleError)} | {Ulps(r.DoubleErrorUlps)} |");
+            Line($"| {r.Case.Name} | {Error(r.NaiveFloatError)} | {Error(r.RtgFloatError)} | {Error(r.DoubleError)} | {Ulps(r.DoubleErrorUlps)} | {Error(r.AccurateError)} | {Ulps(r.AccurateErrorUlps)} |");
         }
 
         Line($"");

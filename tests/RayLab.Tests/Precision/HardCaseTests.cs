@@ -67,6 +67,7 @@ public class HardCaseTests
     {
         // Bound: | |p − C| − R | ≤ 2 ulp(R) = 2 ulp(|p − C|): what double arithmetic on quantities of size R
         // (o − C is already rounded to ulp(R)/2 when h = 0.01) can promise. Residual evaluated exactly as above.
+        // Code that needs the point itself uses TryIntersectAccurate: within an ulp of |p| (AccurateHitTests).
         (int n, double worstResidual, double worstUlpsOfP, double worstUlpsOfR) = HorizonResiduals(height);
         _output.WriteLine($"R=1e6, h={height}: {n} hits, worst residual {worstResidual:G3} = {worstUlpsOfP:G3} ulp(|p|) = {worstUlpsOfR:G3} ulp(R)");
         Assert.True(n > 0);

@@ -42,6 +42,17 @@ public class PrecisionReportTests
     }
 
     [Fact]
+    public void AccurateHitPointsAreWithinAnUlpOfTheSurfaceAndPlainDoubleOnesAreNot()
+    {
+        foreach (CaseResult r in Results.Value)
+        {
+            Assert.True(r.AccurateErrorUlps <= 1, $"{r.Case.Name}: {r.AccurateErrorUlps:G3} ulp(|p|)");
+        }
+
+        Assert.True(Results.Value.Single(r => r.Case.Name == HardCase.Horizon(0.01).Name).DoubleErrorUlps > 1000);
+    }
+
+    [Fact]
     public void TheMarkdownHasTheCommandAndOneRowPerCaseInBothTables()
     {
         string markdown = PrecisionReport.PrecisionReport.ToMarkdown(Results.Value, Size);
