@@ -30,7 +30,7 @@ public sealed record HardCase(string Name, Sphere Sphere, Camera Camera)
     /// A sphere of radius 0.37 at distance r/<paramref name="ratio"/>, seen along a generic (not axis-aligned)
     /// gaze. <paramref name="edge"/> false: the window frames the whole sphere. True: the window is zoomed onto
     /// the right-hand silhouette, 2·10⁻⁸ of the silhouette radius wide, so pixel centres straddle it at
-    /// relative distances of 10⁻⁸ down to ~10⁻¹¹.
+    /// relative distances from 10⁻⁸ down to the pixel spacing (10⁻¹⁰ at 100×100).
     /// </summary>
     /// <param name="type"><c>perspective</c> or <c>orthographic</c>.</param>
     /// <param name="ratio">Radius over distance, r/D.</param>

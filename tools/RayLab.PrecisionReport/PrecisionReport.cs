@@ -134,7 +134,8 @@ public static class PrecisionReport
         }
 
         Line($"");
-        Line($"A dash: the method found no hit that the exact decision shares (float overflows for the centre at 1e100).");
+        Line($"A dash: the method found no hit that the exact decision shares (the float32 textbook test overflows for both distant");
+        Line($"centres and float32 RTG for the one at 1e100; float32 RTG misses the whole silhouette strip at r/D = 1e-6).");
         return s.ToString();
     }
 

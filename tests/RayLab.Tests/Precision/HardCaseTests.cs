@@ -36,7 +36,7 @@ public class HardCaseTests
     {
         // edge = false: the 32×32 window frames the whole sphere. edge = true: it is zoomed onto the right-hand
         // silhouette, 2e-8 of the silhouette radius wide, so pixel centres straddle it at relative distances
-        // of 1e-8 down to ~1e-11 (the same cases as docs/precision.md).
+        // from 1e-8 down to the pixel spacing, 6e-10 here (the same cases as docs/precision.md).
         HardCase hard = HardCase.TinyFarSphere(type, ratio, edge);
         Sphere sphere = hard.Sphere;
         Camera camera = hard.Camera;
