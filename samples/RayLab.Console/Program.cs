@@ -29,7 +29,7 @@ public static class Program
         ParseResult parsed = root.Parse(args);
         if (parsed.Errors.Count > 0)
         {
-            stderr.WriteLine(CommandLineError.Describe(parsed));
+            stderr.WriteLine(SceneFileException.OneLine(CommandLineError.Describe(parsed)));
             return 2;
         }
 
@@ -40,7 +40,7 @@ public static class Program
         catch (Exception e)
         {
             // A bug, not bad input: still one line and no stack trace, but a distinct exit code.
-            stderr.WriteLine($"raylab: internal error: {e.GetType().Name}: {e.Message}");
+            stderr.WriteLine($"raylab: internal error: {e.GetType().Name}: {SceneFileException.OneLine(e.Message)}");
             return 70;
         }
     }

@@ -52,12 +52,12 @@ public static class RenderJob
         }
         catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException or NotSupportedException)
         {
-            stderr.WriteLine($"raylab: error: {e.Message}");
+            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
             return 1;
         }
         catch (OutOfMemoryException)
         {
-            stderr.WriteLine($"raylab: error: not enough memory to render {request.ScenePath} at the requested size");
+            stderr.WriteLine($"raylab: error: not enough memory to render {SceneFileException.OneLine(request.ScenePath)} at the requested size");
             return 1;
         }
     }

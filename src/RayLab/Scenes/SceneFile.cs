@@ -69,6 +69,7 @@ public static class SceneFile
     {
         public SceneDescription ReadRoot(JsonElement root)
         {
+            CheckText(root, "");
             JsonElement obj = Object(root, "(root)");
             Only(obj, "", "image", "background", "ambient", "camera", "spheres", "sampler");
 
@@ -180,6 +181,53 @@ public static class SceneFile
             bool quincunx = Optional(sampler, "quincunx") is { } q
                 && (q.ValueKind is JsonValueKind.True or JsonValueKind.False ? q.GetBoolean() : throw Error("sampler.quincunx", $"must be true or false, got {Describe(q)}"));
             return new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast, quincunx);
+        }
+
+        // JSON allows "\ud800" (an unpaired surrogate escape), but System.Text.Json cannot turn it into a .NET
+        // string and throws InvalidOperationException wherever it is read (a field name, TryGetProperty, a
+        // value). Find it first, with its path.
+        private void CheckText(JsonElement element, string path)
+        {
+            const string Unpaired = "holds an unpaired UTF-16 surrogate escape (\\uD800 to \\uDFFF alone)";
+            switch (element.ValueKind)
+            {
+                case JsonValueKind.Object:
+                    foreach (JsonProperty property in element.EnumerateObject())
+                    {
+                        string name;
+                        try
+                        {
+                            name = property.Name;
+                        }
+                        catch (InvalidOperationException)
+                        {
+                            throw Error(path.Length == 0 ? "(root)" : path, $"a field name {Unpaired}");
+                        }
+
+                        CheckText(property.Value, Join(path, name));
+                    }
+
+                    break;
+                case JsonValueKind.Array:
+                    int index = 0;
+                    foreach (JsonElement item in element.EnumerateArray())
+                    {
+                        CheckText(item, $"{path}[{index++}]");
+                    }
+
+                    break;
+                case JsonValueKind.String:
+                    try
+                    {
+                        _ = element.GetString();
+                    }
+                    catch (InvalidOperationException)
+                    {
+                        throw Error(path.Length == 0 ? "(root)" : path, $"the string {Unpaired}");
+                    }
+
+                    break;
+            }
         }
 
         private JsonElement Object(JsonElement element, string path) =>

@@ -187,6 +187,12 @@ public sealed class SceneFileTests : IDisposable
     [InlineData("camera.target", "\"position\": [0, 0, 5]", "\"position\": [0, 0, 0]")]
     [InlineData("camera.up", "\"up\": [0, 1, 0]", "\"up\": [0, 0, 1]")]
     [InlineData("camera.up", "\"up\": [0, 1, 0]", "\"up\": [0, 0, 0]")]
+    // Text the message must not break over lines, and text System.Text.Json cannot read (found by ConsoleFuzzTests).
+    [InlineData("camera.line\\nbreak", "\"fov\": 40", "\"line\\nbreak\": 40")]
+    [InlineData("", "", "{ \"image\": tru\ne }")]
+    [InlineData("camera.type", "\"type\": \"perspective\"", "\"type\": \"\\ud800\"")]
+    [InlineData("spheres[0]", "\"radius\": 1", "\"\\udc00\": 1")]
+    [InlineData("(root)", AmbientLine, "  \"a\\ud83d\": [1, 1, 1],\n")]
     // Non-finite numbers.
     [InlineData("spheres[0].radius", "\"radius\": 1", "\"radius\": 1e999")]
     [InlineData("spheres[0].center[0]", "\"center\": [0, 0, 0]", "\"center\": [-1e999, 0, 0]")]
