@@ -64,6 +64,11 @@ public static class RenderJob
 
     private static void RunOrThrow(RenderRequest request, TextWriter stdout)
     {
+        if (string.IsNullOrWhiteSpace(request.ScenePath))
+        {
+            throw new UsageException("scene: the path is empty");
+        }
+
         CheckOutputPath(request.OutputPath, "--output", requireImageFormat: true);
         if (request.StatsPath is not null)
         {
@@ -212,7 +217,16 @@ public static class RenderJob
             }
         }
 
-        string folder = Path.GetDirectoryName(Path.GetFullPath(path)) ?? ".";
+        string folder;
+        try
+        {
+            folder = Path.GetDirectoryName(Path.GetFullPath(path)) ?? ".";
+        }
+        catch (Exception e) when (e is ArgumentException or NotSupportedException or PathTooLongException)
+        {
+            throw new UsageException($"{option}: '{path}' is not a usable path: {e.Message}");
+        }
+
         if (!Directory.Exists(folder))
         {
             throw new UsageException($"{option}: the folder '{folder}' does not exist");

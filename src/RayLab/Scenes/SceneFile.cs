@@ -12,6 +12,12 @@ namespace RayLab.Scenes;
 /// </summary>
 public static class SceneFile
 {
+    /// <summary>The largest image width or height a scene (or an override of it) may ask for: 1 048 576.</summary>
+    public const int MaxImageSide = 1 << 20;
+
+    /// <summary>The most samples per pixel a scene (or an override of it) may ask for: 65 536.</summary>
+    public const int MaxSamples = 1 << 16;
+
     private static readonly JsonDocumentOptions Options = new()
     {
         CommentHandling = JsonCommentHandling.Skip,
@@ -75,8 +81,8 @@ public static class SceneFile
 
             JsonElement image = Object(Required(obj, "", "image"), "image");
             Only(image, "image", "width", "height");
-            int width = Int(Required(image, "image", "width"), "image.width", 1, 1 << 20);
-            int height = Int(Required(image, "image", "height"), "image.height", 1, 1 << 20);
+            int width = Int(Required(image, "image", "width"), "image.width", 1, MaxImageSide);
+            int height = Int(Required(image, "image", "height"), "image.height", 1, MaxImageSide);
 
             Intensity background = Optional(obj, "background") is { } bg ? Color(bg, "background") : Intensity.Black;
             Intensity ambient = Optional(obj, "ambient") is { } am ? Color(am, "ambient") : Intensity.White;
@@ -160,7 +166,7 @@ public static class SceneFile
         {
             Only(sampler, "sampler", "type", "samples", "seed", "minDepth", "maxDepth", "contrast", "quincunx");
             string type = Name(Required(sampler, "sampler", "type"), "sampler.type", SamplerSettings.Types);
-            int samples = Optional(sampler, "samples") is { } s ? Int(s, "sampler.samples", 1, 1 << 16) : 1;
+            int samples = Optional(sampler, "samples") is { } s ? Int(s, "sampler.samples", 1, MaxSamples) : 1;
             uint seed = 0;
             if (Optional(sampler, "seed") is { } seedJson)
             {
