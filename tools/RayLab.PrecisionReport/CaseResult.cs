@@ -6,7 +6,7 @@ namespace RayLab.PrecisionReport;
 /// <param name="ExactHits">Pixels whose ray hits the sphere by the exact decision.</param>
 /// <param name="NaiveFloatWrong">Pixels where the textbook b² − 4ac test in float disagrees with the exact decision.</param>
 /// <param name="RtgFloatWrong">Pixels where Ray Tracing Gems' test in float disagrees.</param>
-/// <param name="RayLabWrong">Pixels of RayLab's rendered image (Renderer.Render, one sample at each centre) that disagree.</param>
+/// <param name="RayLab">RayLab's renderer (Renderer.Render, one sample at each centre) with each kernel setting, Auto first.</param>
 /// <param name="DoubleWrong">Pixels where Ray Tracing Gems' test in plain double disagrees.</param>
 /// <param name="NaiveFloatError">The worst surface error | |p − C| − R | of the textbook float test's hit points.</param>
 /// <param name="RtgFloatError">The same for Ray Tracing Gems in float.</param>
@@ -15,5 +15,12 @@ namespace RayLab.PrecisionReport;
 /// <param name="DoubleErrorUlps">The plain-double surface error in ulp(|p|), worst over the hits.</param>
 /// <param name="AccurateErrorUlps">RayLab's accurate surface error in ulp(|p|), worst over the hits.</param>
 public sealed record CaseResult(
-    HardCase Case, int Pixels, int ExactHits, int NaiveFloatWrong, int RtgFloatWrong, int RayLabWrong, int DoubleWrong,
-    double NaiveFloatError, double RtgFloatError, double DoubleError, double AccurateError, double DoubleErrorUlps, double AccurateErrorUlps);
+    HardCase Case, int Pixels, int ExactHits, int NaiveFloatWrong, int RtgFloatWrong, IReadOnlyList<KernelRun> RayLab, int DoubleWrong,
+    double NaiveFloatError, double RtgFloatError, double DoubleError, double AccurateError, double DoubleErrorUlps, double AccurateErrorUlps)
+{
+    /// <summary>Wrong pixels of the image users get (<see cref="Rendering.RenderKernel.Auto"/>).</summary>
+    public int RayLabWrong => RayLab[0].Wrong;
+
+    /// <summary>The most wrong pixels over every kernel setting.</summary>
+    public int RayLabWorstWrong => RayLab.Max(k => k.Wrong);
+}

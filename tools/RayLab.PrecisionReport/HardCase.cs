@@ -11,8 +11,12 @@ namespace RayLab.PrecisionReport;
 /// <param name="Name">A short name for the table.</param>
 /// <param name="Sphere">The sphere.</param>
 /// <param name="Camera">The camera (an explicit window, so any image size frames the same view).</param>
-public sealed record HardCase(string Name, Sphere Sphere, Camera Camera)
+/// <param name="Size">A fixed image side for cases built around their pixel lattice; null: the report's size.</param>
+public sealed record HardCase(string Name, Sphere Sphere, Camera Camera, int? Size = null)
 {
+    /// <summary>The image side of <see cref="Grazing"/>: 64 pixels, centres at half-odd offsets from the window's centre.</summary>
+    public const int GrazingSize = 64;
+
     /// <summary>Every case of the report, in table order.</summary>
     public static IReadOnlyList<HardCase> All { get; } =
     [
@@ -24,7 +28,41 @@ public sealed record HardCase(string Name, Sphere Sphere, Camera Camera)
         Horizon(0.01),
         FarCentre(1e19),
         FarCentre(1e100),
+        .. from type in new[] { "perspective", "orthographic" }
+           from inside in new[] { true, false }
+           select Grazing(type, inside),
     ];
+
+    /// <summary>
+    /// An ordinary frame — a sphere of radius ~0.37 ten units away, generic gaze, 64×64 — that a float packet
+    /// renderer accepts, but whose silhouette passes 10⁻⁹ (relative) inside or outside 24 pixel centres: the
+    /// sphere is on the gaze axis and the window centred on it, so pixel centres lie at half-odd multiples of the
+    /// pixel size from the axis, and the circle of radius √650/2 pixels goes through 24 of them
+    /// (25² + 5² = 23² + 11² = 19² + 17² = 650). Float cannot decide those pixels; double can.
+    /// </summary>
+    /// <param name="type"><c>perspective</c> or <c>orthographic</c>.</param>
+    /// <param name="inside">True: the 24 centres are just inside the silhouette (hits); false: just outside.</param>
+    public static HardCase Grazing(string type, bool inside)
+    {
+        var centre = new Double3(3.25, -1.75, 2.5);
+        var toEye = new Double3(0.36, -0.48, 0.8);
+        const double distance = 10;
+        Double3 eye = centre + (distance * toEye);
+        double silhouette = Math.Sqrt(650) / 2; // in pixels
+        bool perspective = type == "perspective";
+        const double pixel = 0.0029; // window units per pixel
+        double rho = silhouette * pixel; // silhouette radius on the window
+        // Perspective (s = 1): ρ = r/√(D² − r²), so r = Dρ/√(1 + ρ²). Orthographic: r = ρ.
+        double radius = (perspective ? distance * rho / Math.Sqrt(1 + (rho * rho)) : rho) * (inside ? 1 + 1e-9 : 1 - 1e-9);
+        double half = GrazingSize / 2 * pixel;
+        var window = new Window(-half, -half, half, half);
+        var up = new Double3(0.1, 1, 0.2);
+        Camera camera = perspective
+            ? new PerspectiveCamera { Position = eye, Target = centre, Up = up, NearPlane = 0.5, FarPlane = 10 * distance, Window = window }
+            : new OrthoCamera { Position = eye, Target = centre, Up = up, NearPlane = 0.5, FarPlane = 10 * distance, Window = window };
+        string name = $"{type}, 24 centres 1e-9 {(inside ? "inside" : "outside")} the silhouette";
+        return new HardCase(name, new Sphere(centre, radius, Intensity.White), camera, GrazingSize);
+    }
 
     /// <summary>
     /// A sphere of radius 0.37 at distance r/<paramref name="ratio"/>, seen along a generic (not axis-aligned)
