@@ -14,7 +14,11 @@ internal static class AtomicFile
         }
         catch
         {
-            File.Delete(temp);
+            if (File.Exists(temp))
+            {
+                File.Delete(temp); // when the folder itself is gone, deleting would throw and hide the real error
+            }
+
             throw;
         }
     }

@@ -29,7 +29,7 @@ public static class Program
         ParseResult parsed = root.Parse(args);
         if (parsed.Errors.Count > 0)
         {
-            stderr.WriteLine(CommandLineError.Describe(parsed));
+            stderr.WriteLine(SceneFileException.OneLine(CommandLineError.Describe(parsed)));
             return 2;
         }
 
@@ -40,7 +40,7 @@ public static class Program
         catch (Exception e)
         {
             // A bug, not bad input: still one line and no stack trace, but a distinct exit code.
-            stderr.WriteLine($"raylab: internal error: {e.GetType().Name}: {e.Message}");
+            stderr.WriteLine($"raylab: internal error: {e.GetType().Name}: {SceneFileException.OneLine(e.Message)}");
             return 70;
         }
     }
@@ -54,11 +54,11 @@ public static class Program
         var output = new Option<string>("--output", "-o") { Description = "The image to write, .png or .bmp (the format follows the extension).", HelpName = "OUT.png", Required = true };
         var camera = new Option<string?>("--camera") { Description = $"{Choices(CameraSettings.Types)}. Default: the scene's camera.type.", HelpName = "TYPE" };
         var sampler = new Option<string?>("--sampler") { Description = $"{Choices(SamplerSettings.Types)}. Default: the scene's sampler.type; {d.Type} if omitted.", HelpName = "NAME" };
-        var samples = new Option<int?>("--samples") { Description = $"Samples per pixel, ≥ 1; a perfect square (1, 4, 9, …) for regular, jittered and multijittered. Default: the scene's sampler.samples; {d.Samples} if omitted.", HelpName = "N" };
+        var samples = new Option<int?>("--samples") { Description = $"Samples per pixel, 1 to {SceneFile.MaxSamples}; a perfect square (1, 4, 9, …) for regular, jittered and multijittered. Default: the scene's sampler.samples; {d.Samples} if omitted.", HelpName = "N" };
         var seed = new Option<uint?>("--seed") { Description = $"The sampler's seed, 0 to {uint.MaxValue}. Default: the scene's sampler.seed; {d.Seed} if omitted.", HelpName = "S" };
         var threads = new Option<int?>("--threads") { Description = $"Render threads, ≥ 1. Default: all cores ({Environment.ProcessorCount} here).", HelpName = "T" };
-        var width = new Option<int?>("--width") { Description = $"Image width in pixels, ≥ 1, with W·H·3 ≤ {Image.MaxBytes:N0} bytes. Default: the scene's image.width.", HelpName = "W" };
-        var height = new Option<int?>("--height") { Description = $"Image height in pixels, ≥ 1, with W·H·3 ≤ {Image.MaxBytes:N0} bytes. Default: the scene's image.height.", HelpName = "H" };
+        var width = new Option<int?>("--width") { Description = $"Image width in pixels, 1 to {SceneFile.MaxImageSide}, with W·H·3 ≤ {Image.MaxBytes:N0} bytes. Default: the scene's image.width.", HelpName = "W" };
+        var height = new Option<int?>("--height") { Description = $"Image height in pixels, 1 to {SceneFile.MaxImageSide}, with W·H·3 ≤ {Image.MaxBytes:N0} bytes. Default: the scene's image.height.", HelpName = "H" };
         var stats = new Option<string?>("--stats") { Description = "Also write render statistics as JSON (rays, renderMs, encodeMs, …). Default: none.", HelpName = "STATS.json" };
         var minDepth = new Option<int?>("--min-depth") { Description = $"Adaptive: subdivide every pixel at least this deep, 0 to the maximum depth. Default: the scene's sampler.minDepth; {d.MinDepth} if omitted.", HelpName = "M" };
         var maxDepth = new Option<int?>("--max-depth") { Description = $"Adaptive: never subdivide deeper, 0 to {AdaptiveSampler.MaxSupportedDepth}. Default: the scene's sampler.maxDepth; {d.MaxDepth} if omitted.", HelpName = "D" };

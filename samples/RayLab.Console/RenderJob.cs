@@ -52,18 +52,23 @@ public static class RenderJob
         }
         catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException or NotSupportedException)
         {
-            stderr.WriteLine($"raylab: error: {e.Message}");
+            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
             return 1;
         }
         catch (OutOfMemoryException)
         {
-            stderr.WriteLine($"raylab: error: not enough memory to render {request.ScenePath} at the requested size");
+            stderr.WriteLine($"raylab: error: not enough memory to render {SceneFileException.OneLine(request.ScenePath)} at the requested size");
             return 1;
         }
     }
 
     private static void RunOrThrow(RenderRequest request, TextWriter stdout)
     {
+        if (string.IsNullOrWhiteSpace(request.ScenePath))
+        {
+            throw new UsageException("scene: the path is empty");
+        }
+
         CheckOutputPath(request.OutputPath, "--output", requireImageFormat: true);
         if (request.StatsPath is not null)
         {
@@ -212,7 +217,16 @@ public static class RenderJob
             }
         }
 
-        string folder = Path.GetDirectoryName(Path.GetFullPath(path)) ?? ".";
+        string folder;
+        try
+        {
+            folder = Path.GetDirectoryName(Path.GetFullPath(path)) ?? ".";
+        }
+        catch (Exception e) when (e is ArgumentException or NotSupportedException or PathTooLongException)
+        {
+            throw new UsageException($"{option}: '{path}' is not a usable path: {e.Message}");
+        }
+
         if (!Directory.Exists(folder))
         {
             throw new UsageException($"{option}: the folder '{folder}' does not exist");

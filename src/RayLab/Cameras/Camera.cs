@@ -102,7 +102,9 @@ public abstract class Camera
     /// <param name="height">The image height in pixels, ≥ 1.</param>
     /// <exception cref="ArgumentException">
     /// The size is not positive; <see cref="Position"/> equals <see cref="Target"/>; <see cref="Up"/> is
-    /// parallel to the gaze; <see cref="NearPlane"/> ≥ <see cref="FarPlane"/>; or the window is invalid.
+    /// parallel to the gaze; <see cref="NearPlane"/> ≥ <see cref="FarPlane"/>; the window is invalid; or the
+    /// numbers are so large or small that the rays overflow double (their directions must square to a finite,
+    /// normal double). The exception names the property to change.
     /// </exception>
     public ImagePlane GetImagePlane(int width, int height)
     {
@@ -114,14 +116,21 @@ public abstract class Camera
         }
 
         Double3 gaze = Target - Position;
-        if (!(gaze.LengthSquared > 0))
+        if (!gaze.IsFinite)
+        {
+            throw new ArgumentException($"Target − Position overflows: the gaze from {Position} to {Target} is not finite.", nameof(Target));
+        }
+
+        if (gaze == Double3.Zero)
         {
             throw new ArgumentException($"Position and Target are the same point {Position}: there is no gaze direction.", nameof(Target));
         }
 
-        Double3 w = -Double3.Normalize(gaze);
-        double upLength = Up.Length;
-        Double3 upCrossW = Double3.Cross(Up, w);
+        // Gaze and up scaled by a power of two (exact, so the frame is the same) to keep their squares in range.
+        Double3 w = -Double3.Normalize(ScaleToUnit(gaze));
+        Double3 up = ScaleToUnit(Up);
+        double upLength = up.Length;
+        Double3 upCrossW = Double3.Cross(up, w);
         // |up × w| = |up| sin(angle): reject an up vector within ~1e-10 rad of the gaze axis.
         if (!(upLength > 0) || !(upCrossW.Length > 1e-10 * upLength))
         {
@@ -131,16 +140,55 @@ public abstract class Camera
         Double3 u = Double3.Normalize(upCrossW);
         Double3 v = Double3.Cross(w, u);
         Window window = GetWindow((double)width / height);
-        window.Validate(nameof(window));
-        return new ImagePlane(width, height, Position, u, v, w, window, PlaneDistance, IsOrthographic, NearPlane, FarPlane);
+        window.Validate(Window is null ? WindowSource : nameof(Window));
+        var plane = new ImagePlane(width, height, Position, u, v, w, window, PlaneDistance, IsOrthographic, NearPlane, FarPlane);
+        CheckRays(plane);
+        return plane;
     }
 
     /// <summary>The window for an image of the given aspect ratio (width / height).</summary>
     /// <param name="aspectRatio">Image width divided by image height.</param>
     protected abstract Window GetWindow(double aspectRatio);
 
+    /// <summary>The property the window comes from when <see cref="Window"/> is null (for error messages).</summary>
+    protected abstract string WindowSource { get; }
+
     /// <summary>The distance s from <see cref="Position"/> to the projection plane (1 where it does not matter).</summary>
     protected virtual double PlaneDistance => 1;
+
+    // Every ray must be usable: origin finite and |d|² a finite, normal double (a sphere test squares d). |d|² is
+    // convex over the window, so its corners bound it from above; from below, d·w = −s bounds it by s².
+    private void CheckRays(ImagePlane plane)
+    {
+        string source = Window is null ? WindowSource : nameof(Window);
+        if (!plane.IsOrthographic && !(plane.Distance * plane.Distance >= SmallestNormal))
+        {
+            throw new ArgumentException($"Distance {plane.Distance} is too small: ray directions would underflow (s² must be at least {SmallestNormal:G3}).", nameof(PerspectiveCamera.Distance));
+        }
+
+        foreach ((double alpha, double beta) in new[] { (0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0) })
+        {
+            Ray ray = plane.GetRay(alpha, beta);
+            double d2 = ray.Direction.LengthSquared;
+            if (!double.IsFinite(d2))
+            {
+                throw new ArgumentException($"The view is too large for double: a corner ray's direction {ray.Direction} squares to infinity (keep Distance and the window within about 1e154).", source);
+            }
+
+            if (!ray.Origin.IsFinite)
+            {
+                throw new ArgumentException($"Position {Position} plus the window overflows: the corner ray starts at {ray.Origin}.", Window is null && IsOrthographic ? nameof(Position) : source);
+            }
+        }
+    }
+
+    private const double SmallestNormal = 2.2250738585072014E-308; // 2^−1022
+
+    private static Double3 ScaleToUnit(Double3 v)
+    {
+        double max = Math.Max(Math.Abs(v.X), Math.Max(Math.Abs(v.Y), Math.Abs(v.Z)));
+        return max > 0 ? v * Math.ScaleB(1.0, -Math.ILogB(max)) : v;
+    }
 
     private static Double3 Finite(Double3 value, string name) =>
         value.IsFinite ? value : throw new ArgumentException($"{name} must be finite, got {value}.", name);

@@ -29,6 +29,21 @@ public sealed class OrthoCamera : Camera
 
     /// <summary>The explicit window, or the centred one <see cref="ViewHeight"/> high with square pixels.</summary>
     /// <param name="aspectRatio">Image width / height.</param>
-    protected override Window GetWindow(double aspectRatio) =>
-        Window ?? Cameras.Window.Centered(ViewHeight * aspectRatio, ViewHeight);
+    protected override Window GetWindow(double aspectRatio)
+    {
+        if (Window is { } window)
+        {
+            return window;
+        }
+
+        if (!double.IsFinite(ViewHeight * aspectRatio))
+        {
+            throw new ArgumentException($"ViewHeight {ViewHeight} × W/H overflows: the window would be infinite.", nameof(ViewHeight));
+        }
+
+        return Cameras.Window.Centered(ViewHeight * aspectRatio, ViewHeight);
+    }
+
+    /// <inheritdoc />
+    protected override string WindowSource => nameof(ViewHeight);
 }

@@ -39,6 +39,14 @@ public sealed class PerspectiveCamera : Camera
         }
 
         double v1 = Distance * Math.Tan(Fov * Math.PI / 360.0);
+        if (!double.IsFinite(2 * v1 * aspectRatio) || !double.IsFinite(2 * v1))
+        {
+            throw new ArgumentException($"Distance {Distance} × tan(Fov/2) × W/H overflows: the window would be infinite.", nameof(Distance));
+        }
+
         return new Window(-v1 * aspectRatio, -v1, v1 * aspectRatio, v1);
     }
+
+    /// <inheritdoc />
+    protected override string WindowSource => nameof(Distance);
 }

@@ -24,9 +24,9 @@ public readonly record struct Window(double U0, double V0, double U1, double V1)
     /// <param name="height">The height, &gt; 0.</param>
     public static Window Centered(double width, double height) => new(-width / 2, -height / 2, width / 2, height / 2);
 
-    /// <summary>Throws unless every corner is finite, u1 &gt; u0 and v1 &gt; v0.</summary>
+    /// <summary>Throws unless every corner is finite, u1 &gt; u0, v1 &gt; v0, and the width and height are finite.</summary>
     /// <param name="paramName">The parameter to name in the exception.</param>
-    /// <exception cref="ArgumentException">The window is empty, inverted or not finite.</exception>
+    /// <exception cref="ArgumentException">The window is empty, inverted or not finite (its corners or its size).</exception>
     public void Validate(string paramName)
     {
         if (!double.IsFinite(U0) || !double.IsFinite(V0) || !double.IsFinite(U1) || !double.IsFinite(V1))
@@ -37,6 +37,11 @@ public readonly record struct Window(double U0, double V0, double U1, double V1)
         if (!(U1 > U0) || !(V1 > V0))
         {
             throw new ArgumentException($"The window needs u1 > u0 and v1 > v0, got {this}.", paramName);
+        }
+
+        if (!double.IsFinite(Width) || !double.IsFinite(Height))
+        {
+            throw new ArgumentException($"The window's width u1 − u0 and height v1 − v0 must be finite, got {this}.", paramName);
         }
     }
 

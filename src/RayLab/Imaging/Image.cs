@@ -82,13 +82,20 @@ public sealed class Image
     /// </summary>
     /// <param name="path">The output path.</param>
     /// <exception cref="NotSupportedException">The extension is not a supported format.</exception>
-    /// <exception cref="IOException">The folder does not exist or cannot be written.</exception>
+    /// <exception cref="DirectoryNotFoundException">The folder does not exist (the message names it).</exception>
+    /// <exception cref="IOException">The folder cannot be written.</exception>
     public void Save(string path)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(path);
         ImageFormat format = ImageFormat.FromPath(path);
         string full = Path.GetFullPath(path);
-        string temp = Path.Combine(Path.GetDirectoryName(full) ?? ".", $".{Path.GetFileName(full)}.{Guid.NewGuid():N}.tmp");
+        string folder = Path.GetDirectoryName(full) ?? ".";
+        if (!Directory.Exists(folder))
+        {
+            throw new DirectoryNotFoundException($"Cannot save '{path}': the folder '{folder}' does not exist.");
+        }
+
+        string temp = Path.Combine(folder, $".{Path.GetFileName(full)}.{Guid.NewGuid():N}.tmp");
         try
         {
             using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None))
@@ -101,7 +108,11 @@ public sealed class Image
         }
         catch
         {
-            File.Delete(temp);
+            if (File.Exists(temp))
+            {
+                File.Delete(temp);
+            }
+
             throw;
         }
     }

@@ -30,10 +30,17 @@ public sealed record SceneDescription(
         try
         {
             Image.CheckSize(Width, Height);
+            CheckAtMost(Width, SceneFile.MaxImageSide, "width");
+            CheckAtMost(Height, SceneFile.MaxImageSide, "height");
             field = "camera";
             Camera camera = Camera.CreateCamera();
             camera.GetImagePlane(Width, Height);
             field = "sampler";
+            if (!Sampler.IsAdaptive)
+            {
+                CheckAtMost(Sampler.Samples, SceneFile.MaxSamples, "samples");
+            }
+
             return Sampler.IsAdaptive
                 ? new PreparedScene(this, camera, null, Sampler.CreateAdaptive())
                 : new PreparedScene(this, camera, Sampler.CreateSampler(), null);
@@ -44,11 +51,21 @@ public sealed record SceneDescription(
         }
     }
 
+    // The scene file's own limits, for values an override set (the console's --width, --height, --samples).
+    private static void CheckAtMost(int value, int max, string name)
+    {
+        if (value > max)
+        {
+            throw new ArgumentOutOfRangeException(name, value, $"must be an integer from 1 to {max}, got {value}");
+        }
+    }
+
     private static string FieldOf(string section, string? param) => (section, param) switch
     {
         ("image", "height") => "image.height",
         ("image", "width") => "image.width",
         ("image", _) => "image",
+        ("camera", "Position") => "camera.position",
         ("camera", "Target") => "camera.target",
         ("camera", "Up") => "camera.up",
         ("camera", "NearPlane") => "camera.near",

@@ -12,6 +12,12 @@ namespace RayLab.Scenes;
 /// </summary>
 public static class SceneFile
 {
+    /// <summary>The largest image width or height a scene (or an override of it) may ask for: 1 048 576.</summary>
+    public const int MaxImageSide = 1 << 20;
+
+    /// <summary>The most samples per pixel a scene (or an override of it) may ask for: 65 536.</summary>
+    public const int MaxSamples = 1 << 16;
+
     private static readonly JsonDocumentOptions Options = new()
     {
         CommentHandling = JsonCommentHandling.Skip,
@@ -69,13 +75,14 @@ public static class SceneFile
     {
         public SceneDescription ReadRoot(JsonElement root)
         {
+            CheckText(root, "");
             JsonElement obj = Object(root, "(root)");
             Only(obj, "", "image", "background", "ambient", "camera", "spheres", "sampler");
 
             JsonElement image = Object(Required(obj, "", "image"), "image");
             Only(image, "image", "width", "height");
-            int width = Int(Required(image, "image", "width"), "image.width", 1, 1 << 20);
-            int height = Int(Required(image, "image", "height"), "image.height", 1, 1 << 20);
+            int width = Int(Required(image, "image", "width"), "image.width", 1, MaxImageSide);
+            int height = Int(Required(image, "image", "height"), "image.height", 1, MaxImageSide);
 
             Intensity background = Optional(obj, "background") is { } bg ? Color(bg, "background") : Intensity.Black;
             Intensity ambient = Optional(obj, "ambient") is { } am ? Color(am, "ambient") : Intensity.White;
@@ -159,7 +166,7 @@ public static class SceneFile
         {
             Only(sampler, "sampler", "type", "samples", "seed", "minDepth", "maxDepth", "contrast", "quincunx");
             string type = Name(Required(sampler, "sampler", "type"), "sampler.type", SamplerSettings.Types);
-            int samples = Optional(sampler, "samples") is { } s ? Int(s, "sampler.samples", 1, 1 << 16) : 1;
+            int samples = Optional(sampler, "samples") is { } s ? Int(s, "sampler.samples", 1, MaxSamples) : 1;
             uint seed = 0;
             if (Optional(sampler, "seed") is { } seedJson)
             {
@@ -180,6 +187,53 @@ public static class SceneFile
             bool quincunx = Optional(sampler, "quincunx") is { } q
                 && (q.ValueKind is JsonValueKind.True or JsonValueKind.False ? q.GetBoolean() : throw Error("sampler.quincunx", $"must be true or false, got {Describe(q)}"));
             return new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast, quincunx);
+        }
+
+        // JSON allows "\ud800" (an unpaired surrogate escape), but System.Text.Json cannot turn it into a .NET
+        // string and throws InvalidOperationException wherever it is read (a field name, TryGetProperty, a
+        // value). Find it first, with its path.
+        private void CheckText(JsonElement element, string path)
+        {
+            const string Unpaired = "holds an unpaired UTF-16 surrogate escape (\\uD800 to \\uDFFF alone)";
+            switch (element.ValueKind)
+            {
+                case JsonValueKind.Object:
+                    foreach (JsonProperty property in element.EnumerateObject())
+                    {
+                        string name;
+                        try
+                        {
+                            name = property.Name;
+                        }
+                        catch (InvalidOperationException)
+                        {
+                            throw Error(path.Length == 0 ? "(root)" : path, $"a field name {Unpaired}");
+                        }
+
+                        CheckText(property.Value, Join(path, name));
+                    }
+
+                    break;
+                case JsonValueKind.Array:
+                    int index = 0;
+                    foreach (JsonElement item in element.EnumerateArray())
+                    {
+                        CheckText(item, $"{path}[{index++}]");
+                    }
+
+                    break;
+                case JsonValueKind.String:
+                    try
+                    {
+                        _ = element.GetString();
+                    }
+                    catch (InvalidOperationException)
+                    {
+                        throw Error(path.Length == 0 ? "(root)" : path, $"the string {Unpaired}");
+                    }
+
+                    break;
+            }
         }
 
         private JsonElement Object(JsonElement element, string path) =>

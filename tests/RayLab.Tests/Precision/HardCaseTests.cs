@@ -1,13 +1,13 @@
-using System.Numerics;
 using RayLab.Cameras;
 using RayLab.Geometry;
+using RayLab.PrecisionReport;
 
 namespace RayLab.Tests.Precision;
 
 /// <summary>
 /// Hard numerical cases for the sphere intersection and the cameras. Every expected hit/miss decision is
 /// computed exactly: each double is a dyadic rational m·2^e, so the ray and sphere the library sees are
-/// represented without rounding in <see cref="BigInteger"/> arithmetic, and the decision
+/// represented without rounding in BigInteger arithmetic (<see cref="ExactSphere"/>, shared with docs/precision.md), and the decision
 /// "the line passes within r of C and the sphere is ahead" is |f × d|² ≤ r²|d|² with f·d &lt; 0 (f = o − C),
 /// evaluated with no rounding at all. No expected value reuses the library's formula.
 /// </summary>
@@ -36,21 +36,10 @@ public class HardCaseTests
     {
         // edge = false: the 32×32 window frames the whole sphere. edge = true: it is zoomed onto the right-hand
         // silhouette, 2e-8 of the silhouette radius wide, so pixel centres straddle it at relative distances
-        // of 1e-8 down to ~1e-11.
-        const double r = 0.37;
-        double distance = r / ratio;
-        var centre = new Double3(3.25, -1.75, 2.5);
-        var toEye = new Double3(0.36, -0.48, 0.8); // a unit vector, not axis-aligned
-        Double3 eye = centre + (distance * toEye);
-        double rho = type == "perspective" ? ratio / Math.Sqrt(1 - (ratio * ratio)) : r; // silhouette radius on the window
-        Window window = edge
-            ? new Window(rho * (1 - 1e-8), rho * -1.1e-8, rho * (1 + 1e-8), rho * 0.9e-8)
-            : new Window(-1.5 * rho, -1.3 * rho, 1.4 * rho, 1.6 * rho);
-        Camera camera = type == "perspective"
-            ? new PerspectiveCamera { Position = eye, Target = centre, Up = new Double3(0.1, 1, 0.2), NearPlane = 0, FarPlane = 10 * distance, Window = window }
-            : new OrthoCamera { Position = eye, Target = centre, Up = new Double3(0.1, 1, 0.2), NearPlane = 0, FarPlane = 10 * distance, Window = window };
-        var sphere = new Sphere(centre, r, Intensity.White);
-
+        // from 1e-8 down to the pixel spacing, 6e-10 here (the same cases as docs/precision.md).
+        HardCase hard = HardCase.TinyFarSphere(type, ratio, edge);
+        Sphere sphere = hard.Sphere;
+        Camera camera = hard.Camera;
         (int hits, int wrong, int close, double worstMargin) = CompareImage(sphere, camera.GetImagePlane(32, 32), 1e-12);
         _output.WriteLine($"{type} r/D={ratio:G} {(edge ? "edge" : "whole")}: hits {hits}/1024, wrong {wrong}, within 1e-12 of the silhouette {close}, smallest |relative margin| {worstMargin:G3}");
         Assert.True(edge ? hits > 0 && hits < 1024 : hits > 100 && hits < 1000, $"framing: {hits} hits");
@@ -78,6 +67,7 @@ public class HardCaseTests
     {
         // Bound: | |p − C| − R | ≤ 2 ulp(R) = 2 ulp(|p − C|): what double arithmetic on quantities of size R
         // (o − C is already rounded to ulp(R)/2 when h = 0.01) can promise. Residual evaluated exactly as above.
+        // Code that needs the point itself uses TryIntersectAccurate: within an ulp of |p| (AccurateHitTests).
         (int n, double worstResidual, double worstUlpsOfP, double worstUlpsOfR) = HorizonResiduals(height);
         _output.WriteLine($"R=1e6, h={height}: {n} hits, worst residual {worstResidual:G3} = {worstUlpsOfP:G3} ulp(|p|) = {worstUlpsOfR:G3} ulp(R)");
         Assert.True(n > 0);
@@ -102,7 +92,7 @@ public class HardCaseTests
                 n++;
                 Assert.True(double.IsFinite(t) && t > 0);
                 Double3 p = ray.At(t);
-                double residual = Math.Abs(ExactResidual(p, sphere.Center, sphere.Radius));
+                double residual = Math.Abs(ExactResidual(p, sphere));
                 worstUlps = Math.Max(worstUlps, residual / Ulp(p.Length));
                 worstResidual = Math.Max(worstResidual, residual);
             }
@@ -215,7 +205,7 @@ public class HardCaseTests
         // A generic direction straight at the centre, with a radius a fixed fraction of the distance:
         // t = (|C| − r)/|d| with d = C, i.e. t = 1 − r/|C| = 0.75.
         var centre = new Double3(0.36 * scale, -0.48 * scale, 0.8 * scale);
-        double length = Math.Sqrt(Exact(centre.X).Mul(Exact(centre.X)).Add(Exact(centre.Y).Mul(Exact(centre.Y))).Add(Exact(centre.Z).Mul(Exact(centre.Z))).ToDouble());
+        double length = Math.Sqrt(ExactSphere.LengthSquared(centre));
         var sphere = new Sphere(centre, 0.25 * length, Intensity.White);
         Assert.True(sphere.TryIntersect(new Ray(Double3.Zero, centre), 0, double.PositiveInfinity, out t));
         Assert.True(double.IsFinite(t));
@@ -382,19 +372,8 @@ public class HardCaseTests
 
     private static (Sphere Sphere, ImagePlane Plane) Horizon(double height)
     {
-        const double R = 1e6;
-        var sphere = new Sphere(new Double3(0, -R, 0), R, Intensity.White);
-        var eye = new Double3(0, height, 0);
-        double dip = Math.Acos(R / (R + height)); // the horizon lies this far below the horizontal
-        const double phi = 0.7;
-        var gaze = new Double3(Math.Cos(phi) * Math.Cos(dip), -Math.Sin(dip), Math.Sin(phi) * Math.Cos(dip));
-        double k = 3 * Math.Tan(dip);
-        var camera = new PerspectiveCamera
-        {
-            Position = eye, Target = eye + gaze, Up = Double3.UnitY, NearPlane = 0, FarPlane = 1e8,
-            Window = new Window(-k, -1.1 * k, 0.9 * k, k),
-        };
-        return (sphere, camera.GetImagePlane(64, 64));
+        HardCase hard = HardCase.Horizon(height);
+        return (hard.Sphere, hard.Camera.GetImagePlane(64, 64));
     }
 
     /// <summary>Renders one ray per pixel centre and compares with the exact decision.</summary>
@@ -424,116 +403,11 @@ public class HardCaseTests
         return (hits, wrong, close, worst);
     }
 
-    /// <summary>
-    /// The exact decision for an origin outside the sphere: the line meets the ball (|f × d|² ≤ r²|d|²) and
-    /// the sphere lies ahead (f·d &lt; 0). The margin is (r²|d|² − |f × d|²)/(r²|d|²), ≈ 2 (r − dist)/r.
-    /// </summary>
-    private static (bool Hit, double Margin) ExactHit(Ray ray, Sphere sphere)
-    {
-        Dy[] f = Sub(ray.Origin, sphere.Center);
-        Dy[] d = V(ray.Direction);
-        Dy r = Exact(sphere.Radius);
-        Dy ff = Dot(f, f);
-        Assert.True(ff.Sub(r.Mul(r)).Sign > 0, "the exact decision assumes an origin outside the sphere");
-        Dy[] cross =
-        [
-            f[1].Mul(d[2]).Sub(f[2].Mul(d[1])),
-            f[2].Mul(d[0]).Sub(f[0].Mul(d[2])),
-            f[0].Mul(d[1]).Sub(f[1].Mul(d[0])),
-        ];
-        Dy rr = r.Mul(r).Mul(Dot(d, d));
-        Dy diff = rr.Sub(Dot(cross, cross));
-        bool ahead = Dot(f, d).Sign < 0;
-        double margin = diff.ToDouble() / rr.ToDouble();
-        return (diff.Sign >= 0 && ahead, margin);
-    }
+    private static (bool Hit, double Margin) ExactHit(Ray ray, Sphere sphere) => ExactSphere.Hit(ray, sphere);
 
-    /// <summary>The sign of the exact discriminant (f·d)² − |d|²(|f|² − r²).</summary>
-    private static int ExactDiscriminantSign(Ray ray, Sphere sphere)
-    {
-        Dy[] f = Sub(ray.Origin, sphere.Center);
-        Dy[] d = V(ray.Direction);
-        Dy r = Exact(sphere.Radius);
-        Dy b = Dot(f, d);
-        return b.Mul(b).Sub(Dot(d, d).Mul(Dot(f, f).Sub(r.Mul(r)))).Sign;
-    }
+    private static int ExactDiscriminantSign(Ray ray, Sphere sphere) => ExactSphere.DiscriminantSign(ray, sphere);
 
-    /// <summary>| p − C | − R from the exact value of |p − C|² − R², divided by 2R (|p − C| + R to first order).</summary>
-    private static double ExactResidual(Double3 p, Double3 c, double radius)
-    {
-        Dy[] f = Sub(p, c);
-        Dy r = Exact(radius);
-        return Dot(f, f).Sub(r.Mul(r)).ToDouble() / (2 * radius);
-    }
+    private static double ExactResidual(Double3 p, Sphere sphere) => ExactSphere.Residual(p, sphere);
 
-    private static double Ulp(double x) => Math.BitIncrement(Math.Abs(x)) - Math.Abs(x);
-
-    private static Dy[] V(Double3 a) => [Exact(a.X), Exact(a.Y), Exact(a.Z)];
-
-    private static Dy[] Sub(Double3 a, Double3 b) => [Exact(a.X).Sub(Exact(b.X)), Exact(a.Y).Sub(Exact(b.Y)), Exact(a.Z).Sub(Exact(b.Z))];
-
-    private static Dy Dot(Dy[] a, Dy[] b) => a[0].Mul(b[0]).Add(a[1].Mul(b[1])).Add(a[2].Mul(b[2]));
-
-    private static Dy Exact(double x) => Dy.From(x);
-
-    /// <summary>An exact dyadic rational M·2^E: every finite double is one, and sums and products stay exact.</summary>
-    private readonly record struct Dy(BigInteger M, int E)
-    {
-        public int Sign => M.Sign;
-
-        public static Dy From(double x)
-        {
-            Assert.True(double.IsFinite(x), $"not finite: {x}");
-            if (x == 0)
-            {
-                return new Dy(BigInteger.Zero, 0);
-            }
-
-            long bits = BitConverter.DoubleToInt64Bits(x);
-            int exponent = (int)((bits >> 52) & 0x7FF);
-            long mantissa = bits & ((1L << 52) - 1);
-            (BigInteger m, int e) = exponent == 0 ? (new BigInteger(mantissa), -1074) : (new BigInteger(mantissa | (1L << 52)), exponent - 1075);
-            return new Dy(x < 0 ? -m : m, e);
-        }
-
-        public Dy Add(Dy o)
-        {
-            if (M.IsZero)
-            {
-                return o;
-            }
-
-            if (o.M.IsZero)
-            {
-                return this;
-            }
-
-            int e = Math.Min(E, o.E);
-            return new Dy((M << (E - e)) + (o.M << (o.E - e)), e);
-        }
-
-        public Dy Sub(Dy o) => Add(new Dy(-o.M, o.E));
-
-        public Dy Mul(Dy o) => new(M * o.M, E + o.E);
-
-        public double ToDouble()
-        {
-            if (M.IsZero)
-            {
-                return 0;
-            }
-
-            BigInteger m = M;
-            int e = E;
-            long bitLength = BigInteger.Abs(m).GetBitLength();
-            if (bitLength > 60)
-            {
-                int shift = (int)(bitLength - 60);
-                m >>= shift;
-                e += shift;
-            }
-
-            return Math.ScaleB((double)m, e);
-        }
-    }
+    private static double Ulp(double x) => ExactSphere.Ulp(x);
 }

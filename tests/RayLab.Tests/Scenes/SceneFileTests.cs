@@ -16,6 +16,8 @@ public sealed class SceneFileTests : IDisposable
         + "\n";
     private const string SpheresLine = """  "spheres": [ { "center": [0, 0, 0], "radius": 1, "color": [0.5, 0.25, 1] } ],""" + "\n";
     private const string SamplerLine = """  "sampler": { "type": "regular", "samples": 1, "seed": 0 }""" + "\n";
+    // The sampler's settings, for rows that make it adaptive.
+    private const string Adaptive = "\"type\": \"regular\", \"samples\": 1, \"seed\": 0";
     private const string Base = "{\n" + ImageLine + BackgroundLine + AmbientLine + CameraLine + SpheresLine + SamplerLine + "}\n";
 
     private readonly string _dir = Path.Combine(Path.GetTempPath(), "raylab-tests-" + Guid.NewGuid().ToString("N"));
@@ -187,6 +189,68 @@ public sealed class SceneFileTests : IDisposable
     [InlineData("camera.target", "\"position\": [0, 0, 5]", "\"position\": [0, 0, 0]")]
     [InlineData("camera.up", "\"up\": [0, 1, 0]", "\"up\": [0, 0, 1]")]
     [InlineData("camera.up", "\"up\": [0, 1, 0]", "\"up\": [0, 0, 0]")]
+    // Filled in by the bad-input audit: every field missing, of the wrong type, out of range or not finite.
+    [InlineData("image.height", "\"height\": 30", "")]
+    [InlineData("camera.target", "\"target\": [0, 0, 0], ", "")]
+    [InlineData("spheres[0].center", "\"center\": [0, 0, 0], ", "")]
+    [InlineData("spheres[0].color", ", \"color\": [0.5, 0.25, 1]", "")]
+    [InlineData("sampler.type", "\"type\": \"regular\", ", "")]
+    [InlineData("background", BackgroundLine, "  \"background\": \"grey\",\n")]
+    [InlineData("ambient", AmbientLine, "  \"ambient\": [1, 1],\n")]
+    [InlineData("camera", CameraLine, "  \"camera\": [],\n")]
+    [InlineData("camera.up", "\"up\": [0, 1, 0]", "\"up\": 1")]
+    [InlineData("camera.fov", "\"fov\": 40", "\"fov\": \"40\"")]
+    [InlineData("camera.near", "\"near\": 0.1", "\"near\": true")]
+    [InlineData("camera.far", "\"far\": 100", "\"far\": \"far\"")]
+    [InlineData("camera.distance", "\"distance\": 1", "\"distance\": [1]")]
+    [InlineData("camera.height", "\"height\": 2.5", "\"height\": \"2.5\"")]
+    [InlineData("camera.window", "\"distance\": 1", "\"distance\": 1, \"window\": { \"u0\": 0 }")]
+    [InlineData("camera.window[0]", "\"distance\": 1", "\"distance\": 1, \"window\": [\"a\", 0, 1, 1]")]
+    [InlineData("spheres[0]", "{ \"center\": [0, 0, 0], \"radius\": 1, \"color\": [0.5, 0.25, 1] }", "3")]
+    [InlineData("spheres[0].center[1]", "\"center\": [0, 0, 0]", "\"center\": [0, \"0\", 0]")]
+    [InlineData("spheres[0].radius", "\"radius\": 1", "\"radius\": \"1\"")]
+    [InlineData("sampler", SamplerLine, "  \"sampler\": \"regular\"\n")]
+    [InlineData("sampler.type", "\"type\": \"regular\"", "\"type\": 3")]
+    [InlineData("sampler.samples", "\"samples\": 1", "\"samples\": \"4\"")]
+    [InlineData("sampler.samples", "\"samples\": 1", "\"samples\": 1.5")]
+    [InlineData("sampler.samples", "\"samples\": 1", "\"samples\": 0")]
+    [InlineData("sampler.samples", "\"samples\": 1", "\"samples\": 65537")]
+    [InlineData("sampler.seed", "\"seed\": 0", "\"seed\": \"1\"")]
+    [InlineData("sampler.minDepth", Adaptive, "\"type\": \"adaptive\", \"minDepth\": 0.5")]
+    [InlineData("sampler.minDepth", Adaptive, "\"type\": \"adaptive\", \"minDepth\": -1")]
+    [InlineData("sampler.minDepth", Adaptive, "\"type\": \"adaptive\", \"minDepth\": 4, \"maxDepth\": 3")]
+    [InlineData("sampler.maxDepth", Adaptive, "\"type\": \"adaptive\", \"maxDepth\": \"3\"")]
+    [InlineData("sampler.maxDepth", Adaptive, "\"type\": \"adaptive\", \"maxDepth\": 11")]
+    [InlineData("sampler.contrast", Adaptive, "\"type\": \"adaptive\", \"contrast\": \"x\"")]
+    [InlineData("sampler.contrast", Adaptive, "\"type\": \"adaptive\", \"contrast\": -0.1")]
+    [InlineData("sampler.contrast", Adaptive, "\"type\": \"adaptive\", \"contrast\": 1e999")]
+    [InlineData("image.width", "\"width\": 40", "\"width\": 1048577")]
+    [InlineData("image.width", "\"width\": 40", "\"width\": 1e999")]
+    [InlineData("camera.fov", "\"fov\": 40", "\"fov\": 1e999")]
+    [InlineData("camera.near", "\"near\": 0.1", "\"near\": 1e999")]
+    [InlineData("camera.far", "\"far\": 100", "\"far\": 1e999")]
+    [InlineData("camera.height", "\"height\": 2.5", "\"height\": 1e999")]
+    [InlineData("camera.distance", "\"distance\": 1", "\"distance\": 1e999")]
+    [InlineData("camera.window[2]", "\"distance\": 1", "\"distance\": 1, \"window\": [-1, -1, 1e999, 1]")]
+    [InlineData("camera.position[2]", "\"position\": [0, 0, 5]", "\"position\": [0, 0, 1e999]")]
+    [InlineData("camera.target[0]", "\"target\": [0, 0, 0]", "\"target\": [-1e999, 0, 0]")]
+    [InlineData("camera.up[1]", "\"up\": [0, 1, 0]", "\"up\": [0, 1e999, 0]")]
+    [InlineData("background[1]", BackgroundLine, "  \"background\": [0, 1e999, 0],\n")]
+    [InlineData("ambient[0]", AmbientLine, "  \"ambient\": [-1e999, 1, 1],\n")]
+    [InlineData("spheres[0].color[0]", "\"color\": [0.5, 0.25, 1]", "\"color\": [1e999, 0.25, 1]")]
+    [InlineData("sampler.seed", "\"seed\": 0", "\"seed\": 1e999")]
+    // Finite numbers whose combination overflows: before the audit these rendered a blank image (exit 0).
+    [InlineData("camera.window", "\"distance\": 1", "\"distance\": 1, \"window\": [-1e308, -1, 1e308, 1]")]
+    [InlineData("camera.distance", "\"distance\": 1", "\"distance\": 1e308")]
+    [InlineData("camera.distance", "\"distance\": 1", "\"distance\": 1e-160")]
+    [InlineData("camera.height", "\"type\": \"perspective\"", "\"type\": \"orthographic\"", "\"height\": 2.5", "\"height\": 1.7e308")]
+    [InlineData("camera.target", "\"position\": [0, 0, 5], \"target\": [0, 0, 0]", "\"position\": [1e308, 0, 5], \"target\": [-1e308, 0, 0]")]
+    // Text the message must not break over lines, and text System.Text.Json cannot read (found by ConsoleFuzzTests).
+    [InlineData("camera.line\\nbreak", "\"fov\": 40", "\"line\\nbreak\": 40")]
+    [InlineData("", "", "{ \"image\": tru\ne }")]
+    [InlineData("camera.type", "\"type\": \"perspective\"", "\"type\": \"\\ud800\"")]
+    [InlineData("spheres[0]", "\"radius\": 1", "\"\\udc00\": 1")]
+    [InlineData("(root)", AmbientLine, "  \"a\\ud83d\": [1, 1, 1],\n")]
     // Non-finite numbers.
     [InlineData("spheres[0].radius", "\"radius\": 1", "\"radius\": 1e999")]
     [InlineData("spheres[0].center[0]", "\"center\": [0, 0, 0]", "\"center\": [-1e999, 0, 0]")]
@@ -295,6 +359,33 @@ public sealed class SceneFileTests : IDisposable
 
         Assert.Equal("", e.Field);
         Assert.StartsWith(_dir + ": ", e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void AnImageTooLargeToAllocateSaysWhatTheLimitIs()
+    {
+        string json = Mutate(Base, "\"width\": 40, \"height\": 30", "\"width\": 1048576, \"height\": 1048576");
+
+        SceneFileException e = Assert.Throws<SceneFileException>(() => SceneFile.Parse(json, Source));
+
+        Assert.Equal("image", e.Field);
+        Assert.Contains("W·H·3 must be at most 2,147,483,591 bytes", e.Problem, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void OverridesObeyTheFilesOwnLimits()
+    {
+        // The console's --width, --height and --samples go through Prepare, not the reader: same limits.
+        SceneDescription scene = SceneFile.Parse(Base, Source);
+        const int Side = SceneFile.MaxImageSide;
+
+        Assert.Equal("image.width", Assert.Throws<SceneFileException>(() => (scene with { Width = Side + 1, Height = 1 }).Prepare()).Field);
+        Assert.Equal("image.height", Assert.Throws<SceneFileException>(() => (scene with { Width = 1, Height = Side + 1 }).Prepare()).Field);
+        SceneFileException e = Assert.Throws<SceneFileException>(() => (scene with { Sampler = new SamplerSettings("random", SceneFile.MaxSamples + 1, 0) }).Prepare());
+        Assert.Equal("sampler.samples", e.Field);
+        Assert.Equal($"must be an integer from 1 to 65536, got {SceneFile.MaxSamples + 1}", e.Problem);
+        Assert.Equal(Side, (scene with { Width = Side, Height = 1 }).Prepare().Description.Width);
+        Assert.Equal(SceneFile.MaxSamples, (scene with { Sampler = new SamplerSettings("random", SceneFile.MaxSamples, 0) }).Prepare().SamplesPerPixel);
     }
 
     [Fact]
