@@ -32,9 +32,10 @@ namespace RayLab.Rendering;
 /// <para><b>Not supported.</b> With the perspective camera, a sphere that visible rays can reach must lie
 /// wholly in front of the eye (nearest point at a depth above 1e-4 of its radius): otherwise its outline is a
 /// parabola or a hyperbola, and <see cref="Render"/> throws an <see cref="UnsupportedSceneException"/> naming
-/// the sphere rather than draw a wrong picture. Spheres that cannot be seen (beyond the far plane, nearer than
-/// the near plane, outside the view pyramid) are simply left out, and the near and far planes cutting spheres
-/// are handled exactly for both cameras.</para>
+/// the sphere rather than draw a wrong picture. The same happens at a zoom so extreme (pixels some 1e-10 of the
+/// distance to the sphere) that double rounding alone could move its picture by more than 1e-6 of a pixel.
+/// Spheres that cannot be seen (beyond the far plane, nearer than the near plane, outside the view pyramid) are
+/// simply left out, and the near and far planes cutting spheres are handled exactly for both cameras.</para>
 /// </remarks>
 public sealed class ExactRenderer
 {

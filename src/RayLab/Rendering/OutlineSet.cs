@@ -37,7 +37,8 @@ internal sealed class OutlineSet
     /// <param name="plane">The camera's image plane.</param>
     /// <exception cref="UnsupportedSceneException">
     /// A sphere that visible rays can reach extends behind a perspective camera's eye (or within 1e-4 of its
-    /// radius of the plane through the eye): its outline is not an ellipse.
+    /// radius of the plane through the eye): its outline is not an ellipse. Or the zoom is so high that double
+    /// rounding alone moves its picture by more than 1e-6 of a pixel (<see cref="PixelProjection.RoundingInPixels"/>).
     /// </exception>
     public static OutlineSet Build(Scene scene, ImagePlane plane)
     {
@@ -63,6 +64,14 @@ internal sealed class OutlineSet
                 throw new UnsupportedSceneException(i, $"reaches behind the perspective camera (its depth along the gaze runs {span}): "
                     + "the exact sampler needs every sphere it can see wholly in front of the eye, its nearest point at a depth "
                     + "above 1e-4 of its radius (move the sphere or the camera, or use a point sampler)");
+            }
+
+            double rounding = projection.RoundingInPixels(c, r);
+            if (!(rounding <= 1e-6))
+            {
+                string amount = rounding.ToString("G2", CultureInfo.InvariantCulture);
+                throw new UnsupportedSceneException(i, $"is seen at a zoom beyond double precision: rounding alone can move its picture by {amount} "
+                    + "pixels, and the exact sampler needs at most 1e-6 (widen the window, or move the camera closer to the sphere)");
             }
 
             kept.Add((c, r));

@@ -52,6 +52,27 @@ internal readonly struct PixelProjection
         bool Outside(Double3 normal) => Double3.Dot(normal, centre) < -radius * normal.Length;
     }
 
+    /// <summary>
+    /// How far, in pixels, double rounding alone can move the picture of a sphere: its camera coordinates and the
+    /// window's corners are known to about 1e-16 of their size, and a pixel is su world units on the window (for
+    /// the perspective camera, su/s of the depth at the sphere's nearest point). A tiny window far from the axis,
+    /// or a sphere far away at a high zoom, can make this a sizeable part of a pixel.
+    /// </summary>
+    /// <param name="centre">The centre in camera coordinates.</param>
+    /// <param name="radius">The radius.</param>
+    public double RoundingInPixels(Double3 centre, double radius)
+    {
+        Window win = _plane.Window;
+        double corners = Math.Max(Math.Max(Math.Abs(win.U0), Math.Abs(win.U1)), Math.Max(Math.Abs(win.V0), Math.Abs(win.V1)));
+        double size = centre.Length + radius;
+        if (!_plane.IsOrthographic)
+        {
+            size *= _plane.Distance / (-centre.Z - radius);
+        }
+
+        return 1e-15 * (size + corners) / Math.Min(_su, _sv);
+    }
+
     /// <summary>The outline of a sphere: where the rays tangent to it cross the window.</summary>
     /// <param name="centre">The centre in camera coordinates.</param>
     /// <param name="radius">The radius.</param>

@@ -248,6 +248,32 @@ public class ExactRendererTests
     }
 
     [Theory]
+    [InlineData("perspective")]
+    [InlineData("orthographic")]
+    public void ATinySphereFarAwayIsExactAndAZoomBeyondDoublePrecisionIsRejected(string type)
+    {
+        // A sphere of radius 0.37 seen from 370 000 times its radius, centred in a 32×32 window 2.9 outline radii wide
+        // (as in the precision hard cases): its picture is a disc of radius 32/2.9 pixels. Then the window zoomed
+        // onto the outline's edge, 2e-8 of its radius wide: double rounding alone moves the outline by a good part
+        // of a pixel there, which the exact reference refuses rather than guess.
+        const double r = 0.37, ratio = 1e-6;
+        var centre = new Double3(3.25, -1.75, 2.5);
+        Double3 eye = centre + (r / ratio * new Double3(0.36, -0.48, 0.8));
+        double rho = type == "perspective" ? ratio / Math.Sqrt(1 - (ratio * ratio)) : r; // the outline's radius on the window
+        Camera Seen(Window window) => type == "perspective"
+            ? new PerspectiveCamera { Position = eye, Target = centre, Up = new Double3(0.1, 1, 0.2), NearPlane = 0, FarPlane = 10 * r / ratio, Window = window }
+            : new OrthoCamera { Position = eye, Target = centre, Up = new Double3(0.1, 1, 0.2), NearPlane = 0, FarPlane = 10 * r / ratio, Window = window };
+        Scene scene = White((centre, r));
+
+        Intensity[] values = new ExactRenderer().RenderLinear(scene, Seen(new Window(-1.5 * rho, -1.3 * rho, 1.4 * rho, 1.6 * rho)), 32, 32);
+        var e = Assert.Throws<UnsupportedSceneException>(() =>
+            new ExactRenderer().RenderLinear(scene, Seen(new Window(rho * (1 - 1e-8), rho * -1.1e-8, rho * (1 + 1e-8), rho * 0.9e-8)), 32, 32));
+
+        Assert.Equal(Math.PI * (32 / 2.9) * (32 / 2.9), values.Sum(v => v.R), 1e-6);
+        Assert.StartsWith("Sphere 0 is seen at a zoom beyond double precision", e.Message);
+    }
+
+    [Theory]
     [InlineData(0, 0, 7.5)]    // wholly behind the eye
     [InlineData(6, 0.5, 6)]    // around the eye's plane, but far outside the view pyramid
     [InlineData(0, 0, -150)]   // beyond the far plane
