@@ -129,13 +129,12 @@ internal sealed class ExactRow
                 }
 
                 (double left, double right) = o.At(ym);
-                _branches[n++] = new Branch(left, i, -1);
-                _branches[n++] = new Branch(right, i, +1);
+                Insert(ref n, new Branch(left, i, -1));
+                Insert(ref n, new Branch(right, i, +1));
             }
         }
 
         Span<Branch> branches = _branches.AsSpan(0, n);
-        branches.Sort(static (p, q) => p.X.CompareTo(q.X));
 
         // Walk the pieces left to right; a branch outside the image stands for the image's edge.
         double leftX = 0, leftIntegral = 0;
@@ -169,6 +168,18 @@ internal sealed class ExactRow
                 break;
             }
         }
+    }
+
+    // Insertion into the branches sorted by X (a row meets only a few outlines).
+    private void Insert(ref int n, Branch branch)
+    {
+        int at = n++;
+        for (; at > 0 && _branches[at - 1].X > branch.X; at--)
+        {
+            _branches[at] = _branches[at - 1];
+        }
+
+        _branches[at] = branch;
     }
 
     // The piece between boundaries at xl and xr (at mid-strip), with ∫X dY of each over the strip.
