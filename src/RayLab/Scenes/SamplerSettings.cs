@@ -12,14 +12,20 @@ namespace RayLab.Scenes;
 /// <param name="Quincunx">Adaptive: trace every pixel's centre, even where its corners agree.</param>
 public sealed record SamplerSettings(string Type, int Samples, uint Seed, int MinDepth = 0, int MaxDepth = 3, double Contrast = 0.1, bool Quincunx = false)
 {
-    /// <summary>Every sampler name a scene file or the console accepts: the point samplers and <c>adaptive</c>.</summary>
-    public static IReadOnlyList<string> Types { get; } = [.. Samplers.Names, "adaptive"];
+    /// <summary>
+    /// Every sampler name a scene file or the console accepts: the point samplers, <c>adaptive</c>, and <c>exact</c>
+    /// (the exact reference, <see cref="Rendering.ExactRenderer"/>, which integrates instead of sampling).
+    /// </summary>
+    public static IReadOnlyList<string> Types { get; } = [.. Samplers.Names, "adaptive", "exact"];
 
     /// <summary>One ray through each pixel centre: the lab's first picture.</summary>
     public static SamplerSettings Default { get; } = new("regular", 1, 0);
 
     /// <summary>True for the lab's adaptive sampler.</summary>
     public bool IsAdaptive => Type == "adaptive";
+
+    /// <summary>True for the exact reference (<see cref="Rendering.ExactRenderer"/>): no samples, no seed.</summary>
+    public bool IsExact => Type == "exact";
 
     /// <summary>Creates the point sampler.</summary>
     /// <exception cref="ArgumentException">Unknown type or unusable sample count.</exception>

@@ -1,0 +1,176 @@
+using System.Globalization;
+using RayLab.Cameras;
+using RayLab.Geometry;
+
+namespace RayLab.Rendering;
+
+/// <summary>
+/// Every border of a scene's picture that the exact reference must follow, as <see cref="Outline"/>s, and the
+/// heights where two of them cross. The colour that <see cref="Scene.Trace"/> gives can only change where
+/// </summary>
+/// <remarks>
+/// <list type="bullet">
+/// <item>a ray becomes tangent to a sphere (the sphere's outline);</item>
+/// <item>a hit crosses the near or the far plane (the circle where that plane cuts a sphere);</item>
+/// <item>two spheres are hit at the same point (the circle where the two spheres meet).</item>
+/// </list>
+/// All of these are pictures of circles, so ellipses, as long as no circle reaches behind a perspective eye.
+/// A sphere no visible ray can reach (wholly nearer than the near plane, beyond the far plane or, for the
+/// perspective camera, outside the view pyramid) is left out.
+/// </remarks>
+internal sealed class OutlineSet
+{
+    private OutlineSet(Outline[] outlines, double[] crossings)
+    {
+        Outlines = outlines;
+        CrossingHeights = crossings;
+    }
+
+    /// <summary>The outlines that reach into the image.</summary>
+    public Outline[] Outlines { get; }
+
+    /// <summary>The heights Y, sorted, where two outlines cross (and, to be safe, where they nearly touch).</summary>
+    public double[] CrossingHeights { get; }
+
+    /// <summary>Finds the outlines of <paramref name="scene"/> as <paramref name="plane"/> sees it.</summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="plane">The camera's image plane.</param>
+    /// <exception cref="UnsupportedSceneException">
+    /// A sphere that visible rays can reach extends behind a perspective camera's eye (or within 1e-4 of its
+    /// radius of the plane through the eye): its outline is not an ellipse. Or the zoom is so high that double
+    /// rounding alone moves its picture by more than 1e-6 of a pixel (<see cref="PixelProjection.RoundingInPixels"/>).
+    /// </exception>
+    public static OutlineSet Build(Scene scene, ImagePlane plane)
+    {
+        var projection = new PixelProjection(plane);
+        double depthPerT = plane.IsOrthographic ? 1 : plane.Distance;
+        double near = plane.TMin * depthPerT, far = plane.TMax * depthPerT;
+        var kept = new List<(Double3 Centre, double Radius)>();
+        var outlines = new List<Outline>();
+        for (int i = 0; i < scene.Spheres.Count; i++)
+        {
+            Sphere sphere = scene.Spheres[i];
+            double r = sphere.Radius;
+            Double3 c = projection.ToCamera(sphere.Center);
+            double depth = -c.Z;
+            if (r == 0 || depth + r < near || depth - r > far || (!plane.IsOrthographic && projection.OutsideFrustum(c, r)))
+            {
+                continue;
+            }
+
+            if (!plane.IsOrthographic && !(depth - r > 1e-4 * r))
+            {
+                string span = string.Create(CultureInfo.InvariantCulture, $"from {depth - r:G6} to {depth + r:G6}");
+                throw new UnsupportedSceneException(i, $"reaches behind the perspective camera (its depth along the gaze runs {span}): "
+                    + "the exact sampler needs every sphere it can see wholly in front of the eye, its nearest point at a depth "
+                    + "above 1e-4 of its radius (move the sphere or the camera, or use a point sampler)");
+            }
+
+            double rounding = projection.RoundingInPixels(c, r);
+            if (!(rounding <= 1e-6))
+            {
+                string amount = rounding.ToString("G2", CultureInfo.InvariantCulture);
+                throw new UnsupportedSceneException(i, $"is seen at a zoom beyond double precision: rounding alone can move its picture by {amount} "
+                    + "pixels, and the exact sampler needs at most 1e-6 (widen the window, or move the camera closer to the sphere)");
+            }
+
+            kept.Add((c, r));
+            outlines.Add(projection.Sphere(c, r));
+            foreach (double cut in (ReadOnlySpan<double>)[near, far])
+            {
+                double offset = depth - cut;
+                if (Math.Abs(offset) < r)
+                {
+                    outlines.Add(projection.Circle(new Double3(c.X, c.Y, -cut), Math.Sqrt((r - offset) * (r + offset)), new Double3(0, 0, 1)));
+                }
+            }
+        }
+
+        for (int i = 0; i < kept.Count; i++)
+        {
+            for (int j = i + 1; j < kept.Count; j++)
+            {
+                if (Meeting(kept[i], kept[j]) is { } circle)
+                {
+                    outlines.Add(projection.Circle(circle.Centre, circle.Radius, circle.Normal));
+                }
+            }
+        }
+
+        Outline[] inImage = outlines.Where(o => (o.Hx > 0 || o.Hy > 0)
+            && o.Right >= 0 && o.Left <= plane.Width && o.Bottom >= 0 && o.Top <= plane.Height).ToArray();
+        return new OutlineSet(inImage, Crossings(inImage, plane.Height));
+    }
+
+    // The circle where two spheres meet, if their surfaces cross.
+    private static (Double3 Centre, double Radius, Double3 Normal)? Meeting((Double3 Centre, double Radius) a, (Double3 Centre, double Radius) b)
+    {
+        Double3 axis = b.Centre - a.Centre;
+        double d = axis.Length;
+        if (!(d < a.Radius + b.Radius) || !(d > Math.Abs(a.Radius - b.Radius)))
+        {
+            return null; // apart, touching, or one inside the other
+        }
+
+        Double3 n = axis / d;
+        double along = ((d * d) + (a.Radius * a.Radius) - (b.Radius * b.Radius)) / (2 * d);
+        double radius = Math.Sqrt(Math.Max((a.Radius - along) * (a.Radius + along), 0));
+        return (a.Centre + (along * n), radius, n);
+    }
+
+    private static double[] Crossings(Outline[] outlines, int height)
+    {
+        var ys = new List<double>();
+        Span<double> thetas = stackalloc double[4];
+        for (int i = 0; i < outlines.Length; i++)
+        {
+            for (int j = i + 1; j < outlines.Length; j++)
+            {
+                Outline a = outlines[i], b = outlines[j];
+                if (a.Hy == 0 || b.Hy == 0 || a.Right < b.Left || b.Right < a.Left || a.Bottom < b.Top || b.Bottom < a.Top)
+                {
+                    continue; // a horizontal segment is a break at its own height already
+                }
+
+                // Walk the smaller ellipse by its angle and substitute it into the larger one's equation.
+                (Outline walk, Outline fixedOne) = a.Hx + a.Hy <= b.Hx + b.Hy ? (a, b) : (b, a);
+                int count = CrossingAngles(walk, fixedOne, thetas);
+                for (int k = 0; k < count; k++)
+                {
+                    double y = walk.PointAt(thetas[k]).Y;
+                    if (y >= 0 && y <= height)
+                    {
+                        ys.Add(y);
+                    }
+                }
+            }
+        }
+
+        ys.Sort();
+        return [.. ys];
+    }
+
+    // The angles θ of `walk` where it meets `fixedOne`, from g(θ) = 0 with g a trigonometric polynomial of degree ≤ 2.
+    private static int CrossingAngles(Outline walk, Outline fixedOne, Span<double> thetas)
+    {
+        // Point of `walk` relative to the other's centre: dx = x0 + P cos θ + Q sin θ, dy = y0 + Hy cos θ.
+        double x0 = walk.Xc - fixedOne.Xc, y0 = walk.Yc - fixedOne.Yc;
+        double p = fixedOne.P, q = fixedOne.Q, h = fixedOne.Hy;
+        // e = p·dy − h·dx is the component across the direction (p, h); a segment (q ≈ 0) is the line e = 0.
+        double e0 = (p * y0) - (h * x0), e1 = (p * walk.Hy) - (h * walk.P), e2 = -h * walk.Q;
+        if (q * h <= 1e-12 * ((p * p) + (q * q) + (h * h)))
+        {
+            return TrigRoots.Solve(e0, e1, e2, 0, 0, thetas);
+        }
+
+        // The ellipse is |L⁻¹ (dx, dy)|² = 1 with L = [[p, q], [h, 0]]; times det L² = (q h)²:
+        // (q·dy)² + (p·dy − h·dx)² − (q h)² = 0.
+        var (a0, a1, b1, a2, b2) = Square(q * y0, q * walk.Hy, 0);
+        var (f0, f1, g1, f2, g2) = Square(e0, e1, e2);
+        return TrigRoots.Solve(a0 + f0 - (q * h * q * h), a1 + f1, b1 + g1, a2 + f2, b2 + g2, thetas);
+    }
+
+    // (k0 + k1 cos θ + k2 sin θ)² as a0 + a1 cos θ + b1 sin θ + a2 cos 2θ + b2 sin 2θ.
+    private static (double, double, double, double, double) Square(double k0, double k1, double k2) =>
+        ((k0 * k0) + (((k1 * k1) + (k2 * k2)) / 2), 2 * k0 * k1, 2 * k0 * k2, ((k1 * k1) - (k2 * k2)) / 2, k1 * k2);
+}
