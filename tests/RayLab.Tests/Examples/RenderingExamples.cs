@@ -98,4 +98,22 @@ public sealed class RenderingExamples
         (Image fromCode, _) = Render(new JitteredSampler(16, seed: 7));
         ImageAssert.Equal(fromCode, image);
     }
+
+    [Fact]
+    public void AntialiasingBringsThePictureCloseToTheExactOne()
+    {
+        // The exact reference: each pixel's area-weighted colour, computed analytically (the lab's "method of
+        // our own", `--sampler exact`). Jaggies (one ray per pixel centre) are far from it; 16 jittered samples
+        // per pixel are close; the error left is noise along the two outlines (about 2·2π·8.3 ≈ 105 edge pixels
+        // of 3072). Measured: 0.62 levels per channel for one sample, 0.13 for 16 jittered; the bounds keep a margin.
+        var exact = new Image(Width, Height);
+        new ExactRenderer().Render(TwoSpheres, Camera, exact);
+
+        (Image jaggies, _) = Render(new RegularSampler(1));
+        (Image jittered, _) = Render(new JitteredSampler(16, seed: 1));
+
+        double jaggyError = ImageAssert.MeanErrorAtMost(exact, jaggies, maxMean: 1.0);
+        double antialiasedError = ImageAssert.MeanErrorAtMost(exact, jittered, maxMean: 0.2);
+        Assert.True(antialiasedError < jaggyError / 3, $"16 jittered samples: {antialiasedError:F3} levels, one sample: {jaggyError:F3}");
+    }
 }
