@@ -25,8 +25,18 @@ public static class HeatMap
     /// <param name="height">Height H of the data.</param>
     /// <returns>An image W + legend wide and at least H high.</returns>
     /// <exception cref="ArgumentException">The span's length is not W·H, or a value is not finite.</exception>
-    public static Image Render(ReadOnlySpan<float> values, int width, int height)
+    public static Image Render(ReadOnlySpan<float> values, int width, int height) => Render(values, width, height, "rays/px");
+
+    /// <summary>Draws <paramref name="values"/> (W·H, row 0 first) with a colour bar titled <paramref name="title"/>.</summary>
+    /// <param name="values">One value per pixel.</param>
+    /// <param name="width">Width W of the data.</param>
+    /// <param name="height">Height H of the data.</param>
+    /// <param name="title">The colour bar's title, up to 7 characters of the built-in font (digits, <c>. /</c> and <c>a e l p r s v x y</c>).</param>
+    /// <returns>An image W + legend wide and at least H high.</returns>
+    /// <exception cref="ArgumentException">The span's length is not W·H, or a value is not finite.</exception>
+    public static Image Render(ReadOnlySpan<float> values, int width, int height, string title)
     {
+        ArgumentNullException.ThrowIfNull(title);
         Image.CheckSize(width, height);
         if (values.Length != (long)width * height)
         {
@@ -61,7 +71,7 @@ public static class HeatMap
             }
         }
 
-        DrawLegend(image, width + 6, min, max);
+        DrawLegend(image, width + 6, min, max, title);
         return image;
     }
 
@@ -80,11 +90,11 @@ public static class HeatMap
 
     private static byte Level(double a, double b, double f) => (byte)Math.Round(255 * (a + ((b - a) * f)));
 
-    private static void DrawLegend(Image image, int x0, float min, float max)
+    private static void DrawLegend(Image image, int x0, float min, float max, string title)
     {
         const int BarWidth = 12, Top = 14 * Scale;
         int bottom = image.Height - (4 * Scale);
-        DrawText(image, x0, 2, "rays/px");
+        DrawText(image, x0, 2, title);
         for (int y = Top; y <= bottom; y++)
         {
             Rgb24 colour = ColorAt((bottom - y) / (double)(bottom - Top));
@@ -162,6 +172,9 @@ public static class HeatMap
         ['s'] = Glyph("000", "011", "110", "011", "110"),
         ['p'] = Glyph("000", "110", "101", "110", "100"),
         ['x'] = Glyph("000", "101", "010", "010", "101"),
+        ['e'] = Glyph("000", "011", "111", "100", "011"),
+        ['l'] = Glyph("110", "010", "010", "010", "111"),
+        ['v'] = Glyph("000", "101", "101", "101", "010"),
     };
 
     private static ushort Glyph(params string[] rows) =>

@@ -50,6 +50,35 @@ public class HeatMapTests
     }
 
     [Fact]
+    public void TheTitleIsDrawnAboveTheBarAndLeavesTheDataAlone()
+    {
+        const int W = 30, H = 130;
+        float[] values = [.. Enumerable.Range(0, W * H).Select(i => (float)(i % 7))];
+        Image rays = HeatMap.Render(values, W, H);
+        Image levels = HeatMap.Render(values, W, H, "levels");
+        Image blank = HeatMap.Render(values, W, H, "");
+
+        Assert.Equal(rays.Width, levels.Width);
+        Assert.Equal(rays.Height, levels.Height);
+        int titleRows = 12;
+        for (int y = 0; y < H; y++)
+        {
+            Assert.True(rays.GetRowSpan(y)[..W].SequenceEqual(levels.GetRowSpan(y)[..W]), $"data row {y}");
+        }
+
+        for (int y = titleRows; y < rays.Height; y++)
+        {
+            Assert.True(rays.GetRowSpan(y)[W..].SequenceEqual(levels.GetRowSpan(y)[W..]), $"legend row {y} below the title");
+        }
+
+        static int BlackIn(Image map, int x0, int rows) =>
+            Enumerable.Range(0, rows).Sum(y => map.GetRowSpan(y)[x0..].Count(new Rgb24(0, 0, 0)));
+        Assert.Equal(0, BlackIn(blank, W, titleRows));
+        Assert.True(BlackIn(levels, W, titleRows) > 0);
+        Assert.NotEqual(BlackIn(rays, W, titleRows), BlackIn(levels, W, titleRows));
+    }
+
+    [Fact]
     public void BadInputIsRejected()
     {
         Assert.Equal("values", Assert.Throws<ArgumentException>(() => HeatMap.Render(new float[5], 2, 2)).ParamName);
