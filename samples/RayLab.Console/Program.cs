@@ -92,12 +92,14 @@ public static class Program
             stdout,
             stderr));
 
+        var compare = CompareCommand.Create(stdout, stderr);
+
         var root = new RootCommand(
             "RayLab: the photorealistic-rendering lab's ray tracer. With no command, renders the two-sphere scene "
             + "with the orthographic and the perspective camera, adaptive antialiasing, into out/ (with heat maps). "
             + "'raylab render --help' lists the options of a render.")
         {
-            render,
+            render, compare,
         };
         root.HelpName = "raylab"; // not the host's name (dotnet, testhost) in the usage lines
         root.SetAction(_ => RenderJob.RunDefault(stdout, stderr));

@@ -1,0 +1,37 @@
+using RayLab.Cameras;
+using RayLab.Imaging;
+using RayLab.Rendering;
+using RayLab.Sampling;
+
+namespace RayLab.Cli;
+
+/// <summary>One setting <c>raylab compare</c> renders: a point sampler at one budget, or one adaptive setting.</summary>
+/// <param name="Series">Its line on the chart: the sampler's name, or <c>adaptive c=0.1</c> for each contrast.</param>
+/// <param name="Setting">What varies along the line: <c>16 spp</c>, or <c>depth 0–3</c>.</param>
+/// <param name="Budget">The budget asked for (point samplers); a grid sampler uses the nearest square below it.</param>
+/// <param name="Point">The point sampler, or null.</param>
+/// <param name="Adaptive">The adaptive sampler, or null.</param>
+public sealed record CompareCase(string Series, string Setting, int? Budget, IPixelSampler? Point, AdaptiveSampler? Adaptive)
+{
+    /// <summary>The sampler's name (<c>jittered</c>, <c>adaptive</c>, …).</summary>
+    public string Sampler => Point?.Name ?? "adaptive";
+
+    /// <summary>The name of its image files: <c>jittered-16</c>, <c>adaptive-c0.1-d3</c>.</summary>
+    public string FileStem => Point is { } p
+        ? $"{p.Name}-{p.SamplesPerPixel}"
+        : FormattableString.Invariant($"adaptive-c{Adaptive!.Contrast:G6}-d{Adaptive.MaxDepth}");
+
+    /// <summary>Renders the setting into <paramref name="image"/>.</summary>
+    /// <param name="renderer">The renderer.</param>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="image">The image to fill.</param>
+    /// <returns>Rays traced and render time.</returns>
+    public RenderStatistics Render(Renderer renderer, Scene scene, Camera camera, Image image)
+    {
+        ArgumentNullException.ThrowIfNull(renderer);
+        return Point is not null
+            ? renderer.Render(scene, camera, Point, image)
+            : renderer.Render(scene, camera, Adaptive!, image);
+    }
+}

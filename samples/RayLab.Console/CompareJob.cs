@@ -1,0 +1,326 @@
+using System.Globalization;
+using RayLab.Imaging;
+using RayLab.Rendering;
+using RayLab.Sampling;
+using RayLab.Scenes;
+
+namespace RayLab.Cli;
+
+/// <summary>
+/// <c>raylab compare</c>: renders a scene with every sampler over a range of budgets (the adaptive sampler over
+/// maximum depths and contrasts), measures each image against the exact image, and writes a report folder:
+/// <c>results.csv</c>, <c>results.md</c>, two log-log charts, every image and error image, and <c>index.html</c>.
+/// </summary>
+public static class CompareJob
+{
+    /// <summary>Runs the comparison; prints the table, or one error line and returns non-zero.</summary>
+    /// <param name="request">What to compare.</param>
+    /// <param name="stdout">Where the table goes.</param>
+    /// <param name="stderr">Where errors go.</param>
+    /// <returns>0 on success, 1 on bad input or a failed write.</returns>
+    public static int Run(CompareRequest request, TextWriter stdout, TextWriter stderr)
+    {
+        ArgumentNullException.ThrowIfNull(request);
+        ArgumentNullException.ThrowIfNull(stdout);
+        ArgumentNullException.ThrowIfNull(stderr);
+        string? staging = null;
+        bool createdFolder = false, done = false;
+        try
+        {
+            (PreparedScene scene, CompareCase[] cases, List<string> notes) = Plan(request);
+            createdFolder = !Directory.Exists(request.OutputFolder);
+            Directory.CreateDirectory(request.OutputFolder);
+            staging = Path.Combine(request.OutputFolder, $".raylab-compare-{Guid.NewGuid():N}.tmp");
+            Directory.CreateDirectory(Path.Combine(staging, "images"));
+            Directory.CreateDirectory(Path.Combine(staging, "errors"));
+
+            (RenderStatistics exact, CompareResult[] results) = Measure(request, stdout, scene, cases, staging);
+            var report = new CompareReport(Heading(request, scene, exact), Command(request), results, notes);
+            report.WriteTo(staging);
+            Publish(staging, request.OutputFolder);
+            done = true;
+
+            stdout.Write(report.Table());
+            stdout.WriteLine($"wrote {Path.Combine(request.OutputFolder, "index.html")} ({results.Length} settings; results.md, results.csv, charts, images)");
+            return 0;
+        }
+        catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException)
+        {
+            stderr.WriteLine($"raylab: error: {e.Message}");
+            return 1;
+        }
+        catch (OutOfMemoryException)
+        {
+            stderr.WriteLine($"raylab: error: not enough memory to compare {request.ScenePath} at the requested size");
+            return 1;
+        }
+        finally
+        {
+            CleanUp(staging, done, createdFolder ? request.OutputFolder : null);
+        }
+    }
+
+    // Every check happens here, before anything is rendered or written.
+    private static (PreparedScene Scene, CompareCase[] Cases, List<string> Notes) Plan(CompareRequest r)
+    {
+        const NumberStyles Digits = NumberStyles.None;
+        CultureInfo inv = CultureInfo.InvariantCulture;
+        int[] budgets = ParseList(r.Budgets, "--budgets", "a whole number ≥ 1",
+            s => (int.TryParse(s, Digits, inv, out int b) && b >= 1, b));
+        int[] depths = ParseList(r.MaxDepths, "--max-depths", $"a whole number from 0 to {AdaptiveSampler.MaxSupportedDepth}",
+            s => (int.TryParse(s, Digits, inv, out int d) && d <= AdaptiveSampler.MaxSupportedDepth, d));
+        double[] contrasts = ParseList(r.Contrasts, "--contrasts", "a number ≥ 0",
+            s => (double.TryParse(s, NumberStyles.Float, inv, out double c) && c >= 0 && double.IsFinite(c), c));
+        string[] samplers = ParseList(r.Samplers ?? string.Join(',', SamplerSettings.Types), "--samplers",
+            $"one of {string.Join(", ", SamplerSettings.Types)}", s => (SamplerSettings.Types.Contains(s, StringComparer.Ordinal), s));
+        if (r.Repeats < 1)
+        {
+            throw new UsageException($"--repeats: must be at least 1, got {r.Repeats}");
+        }
+
+        if (r.Threads is < 1)
+        {
+            throw new UsageException($"--threads: must be at least 1, got {r.Threads}");
+        }
+
+        CheckOutputFolder(r.OutputFolder);
+        PreparedScene scene = Prepare(r);
+        uint seed = r.Seed ?? scene.Description.Sampler.Seed;
+
+        var cases = new List<CompareCase>();
+        var notes = new List<string>();
+        foreach (string name in samplers.Where(s => s != "adaptive"))
+        {
+            bool grid = Samplers.Create(name, 1, seed) is GridSampler;
+            var seen = new Dictionary<int, int>();
+            foreach (int budget in budgets)
+            {
+                int spp = grid ? (int)Math.Pow(Math.Floor(Math.Sqrt(budget)), 2) : budget;
+                if (seen.TryGetValue(spp, out int earlier))
+                {
+                    notes.Add($"{name}: budget {budget} would be {spp} samples (an n×n grid), as budget {earlier} is; left out.");
+                    continue;
+                }
+
+                seen[spp] = budget;
+                if (spp != budget)
+                {
+                    notes.Add($"{name}: budget {budget} runs as {spp} samples (an n×n grid needs a perfect square).");
+                }
+
+                cases.Add(new CompareCase(name, $"{spp} spp", budget, Samplers.Create(name, spp, seed), null));
+            }
+        }
+
+        if (samplers.Contains("adaptive"))
+        {
+            foreach (double contrast in contrasts)
+            {
+                foreach (int depth in depths)
+                {
+                    cases.Add(new CompareCase(FormattableString.Invariant($"adaptive c={contrast:G6}"), $"depth 0–{depth}", null,
+                        null, new AdaptiveSampler(0, depth, contrast)));
+                }
+            }
+        }
+
+        return (scene, [.. cases], notes);
+    }
+
+    private static (RenderStatistics Exact, CompareResult[] Results) Measure(
+        CompareRequest r, TextWriter stdout, PreparedScene scene, CompareCase[] cases, string staging)
+    {
+        int width = scene.Description.Width, height = scene.Description.Height;
+        Image exact = scene.CreateImage();
+        RenderStatistics exactStats = default;
+        var results = new CompareResult[cases.Length];
+        CompareProgress.Run(stdout, 1 + (cases.Length * r.Repeats), progress =>
+        {
+            var exactRenderer = new ExactRenderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows };
+            exactStats = progress.Render("exact image", () => exactRenderer.Render(scene.Scene, scene.Camera, exact));
+            exact.Save(Path.Combine(staging, "images", "exact.png"));
+
+            var renderer = new Renderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows };
+            Image image = scene.CreateImage();
+            for (int i = 0; i < cases.Length; i++)
+            {
+                CompareCase c = cases[i];
+                var times = new TimeSpan[r.Repeats];
+                RenderStatistics stats = default;
+                for (int k = 0; k < r.Repeats; k++)
+                {
+                    stats = progress.Render($"{c.Series}, {c.Setting} ({k + 1}/{r.Repeats})", () => c.Render(renderer, scene.Scene, scene.Camera, image));
+                    times[k] = stats.RenderTime;
+                }
+
+                ImageError error = ImageError.Measure(image, exact);
+                image.Save(Path.Combine(staging, "images", c.FileStem + ".png"));
+                HeatMap.Render(ImageError.PerPixel(image, exact), width, height, "levels").Save(Path.Combine(staging, "errors", c.FileStem + ".png"));
+                results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median(times), error);
+            }
+        });
+        return (exactStats, results);
+    }
+
+    private static TimeSpan Median(TimeSpan[] times)
+    {
+        Array.Sort(times);
+        int m = times.Length / 2;
+        return times.Length % 2 == 1 ? times[m] : (times[m - 1] + times[m]) / 2;
+    }
+
+    /// <summary>Splits a comma-separated option; every item must parse and appear once.</summary>
+    private static T[] ParseList<T>(string text, string option, string what, Func<string, (bool Ok, T Value)> parse)
+    {
+        var items = new List<T>();
+        foreach (string raw in text.Split(','))
+        {
+            string item = raw.Trim();
+            (bool ok, T value) = parse(item);
+            if (!ok)
+            {
+                throw new UsageException(item.Length == 0
+                    ? $"{option}: an empty item in '{text}'; give a comma-separated list"
+                    : $"{option}: '{item}' is not {what}");
+            }
+
+            if (items.Contains(value))
+            {
+                throw new UsageException($"{option}: '{item}' appears twice");
+            }
+
+            items.Add(value);
+        }
+
+        return [.. items];
+    }
+
+    private static void CheckOutputFolder(string folder)
+    {
+        if (string.IsNullOrWhiteSpace(folder))
+        {
+            throw new UsageException("--out: the path is empty");
+        }
+
+        if (File.Exists(folder))
+        {
+            throw new UsageException($"--out: '{folder}' is a file, not a folder");
+        }
+
+        string parent = Path.GetDirectoryName(Path.GetFullPath(folder)) ?? ".";
+        if (!Directory.Exists(parent))
+        {
+            throw new UsageException($"--out: the folder '{parent}' does not exist");
+        }
+    }
+
+    private static PreparedScene Prepare(CompareRequest r)
+    {
+        SceneDescription d = SceneFile.Load(r.ScenePath);
+        d = d with { Width = r.Width ?? d.Width, Height = r.Height ?? d.Height };
+        try
+        {
+            return d.Prepare();
+        }
+        catch (SceneFileException e) when (e.Field.StartsWith("image", StringComparison.Ordinal) && (r.Width ?? r.Height) is not null)
+        {
+            string option = e.Field switch
+            {
+                "image.width" when r.Width is not null => "--width",
+                "image.height" when r.Height is not null => "--height",
+                "image" when r.Width is not null && r.Height is not null => "--width/--height",
+                _ => r.Width is not null ? "--width" : "--height",
+            };
+            throw new UsageException($"{option}: {e.Problem}");
+        }
+    }
+
+    private static string Heading(CompareRequest r, PreparedScene scene, RenderStatistics exact) => string.Create(CultureInfo.InvariantCulture,
+        $"{Path.GetFileName(r.ScenePath)}, {scene.Description.Width}×{scene.Description.Height}, {scene.Camera.Name} camera, "
+        + $"seed {r.Seed ?? scene.Description.Sampler.Seed}, {(r.Threads is { } t ? $"{t} threads" : $"all {Environment.ProcessorCount} cores")}, "
+        + $"time = median of {r.Repeats} render{(r.Repeats == 1 ? "" : "s")}; "
+        + $"exact image: {exact.PrimaryRays:N0} rays in {exact.RenderTime.TotalSeconds:F1} s");
+
+    /// <summary>The command line that reproduces the run, every list spelled out.</summary>
+    private static string Command(CompareRequest r)
+    {
+        var parts = new List<string> { "raylab", "compare", r.ScenePath, "--out", r.OutputFolder, "--budgets", r.Budgets.Replace(" ", "", StringComparison.Ordinal) };
+        if (r.Width is { } w)
+        {
+            parts.AddRange(["--width", w.ToString(CultureInfo.InvariantCulture)]);
+        }
+
+        if (r.Height is { } h)
+        {
+            parts.AddRange(["--height", h.ToString(CultureInfo.InvariantCulture)]);
+        }
+
+        parts.AddRange(["--repeats", r.Repeats.ToString(CultureInfo.InvariantCulture)]);
+        if (r.Samplers is not null)
+        {
+            parts.AddRange(["--samplers", r.Samplers.Replace(" ", "", StringComparison.Ordinal)]);
+        }
+
+        parts.AddRange(["--max-depths", r.MaxDepths.Replace(" ", "", StringComparison.Ordinal), "--contrasts", r.Contrasts.Replace(" ", "", StringComparison.Ordinal)]);
+        if (r.Seed is { } seed)
+        {
+            parts.AddRange(["--seed", seed.ToString(CultureInfo.InvariantCulture)]);
+        }
+
+        if (r.Threads is { } threads)
+        {
+            parts.AddRange(["--threads", threads.ToString(CultureInfo.InvariantCulture)]);
+        }
+
+        return string.Join(' ', parts);
+    }
+
+    /// <summary>Moves every file from the staging folder into place, <c>index.html</c> last (each move is a rename).</summary>
+    private static void Publish(string staging, string folder)
+    {
+        string[] files = [.. Directory.EnumerateFiles(staging, "*", SearchOption.AllDirectories)
+            .OrderBy(f => Path.GetFileName(f) == "index.html").ThenBy(f => f, StringComparer.Ordinal)];
+        // Check every target first, so a file or folder in the way stops the run before anything is moved.
+        foreach (string file in files)
+        {
+            string target = Path.Combine(folder, Path.GetRelativePath(staging, file));
+            string parent = Path.GetDirectoryName(target)!;
+            if (File.Exists(parent))
+            {
+                throw new UsageException($"--out: '{parent}' is a file where the report needs a folder");
+            }
+
+            if (Directory.Exists(target))
+            {
+                throw new UsageException($"--out: '{target}' is a folder where the report writes a file");
+            }
+        }
+
+        foreach (string file in files)
+        {
+            string target = Path.Combine(folder, Path.GetRelativePath(staging, file));
+            Directory.CreateDirectory(Path.GetDirectoryName(target)!);
+            File.Move(file, target, overwrite: true);
+        }
+    }
+
+    private static void CleanUp(string? staging, bool done, string? createdFolder)
+    {
+        try
+        {
+            if (staging is not null && Directory.Exists(staging))
+            {
+                Directory.Delete(staging, recursive: true);
+            }
+
+            if (!done && createdFolder is not null && Directory.Exists(createdFolder) && !Directory.EnumerateFileSystemEntries(createdFolder).Any())
+            {
+                Directory.Delete(createdFolder);
+            }
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            // Best effort: the error that brought us here is the one to report.
+        }
+    }
+}

@@ -1,0 +1,199 @@
+using System.Globalization;
+using System.Net;
+using System.Text;
+
+namespace RayLab.Cli;
+
+/// <summary>
+/// The report of <c>raylab compare</c>: the table (Markdown and CSV), each sampler's fitted convergence slope,
+/// the time each needs to reach "maximum error ≤ 1 level" and a common RMSE, two log-log charts and an
+/// <c>index.html</c> that links them with every image.
+/// </summary>
+/// <param name="heading">One line saying what was compared (scene, size, camera, seed, threads, repeats).</param>
+/// <param name="command">The command line that reproduces the run.</param>
+/// <param name="results">The measurements, in the order the settings were rendered.</param>
+/// <param name="notes">Remarks on the plan (budgets a grid sampler ran at a different count).</param>
+public sealed class CompareReport(string heading, string command, IReadOnlyList<CompareResult> results, IReadOnlyList<string> notes)
+{
+    private const string Definition =
+        "Error: per channel of every pixel, the image's 8-bit level minus the exact image's level (both by the lab's rule "
+        + "int(256·I)), in levels; RMSE and mean absolute error over all pixels and channels, max = the largest, "
+        + "\"> 1 level\" = the fraction of pixels with some channel off by 2 or more. Time: median render time "
+        + "(the render loop only). Rays: primary rays traced per pixel.";
+
+    /// <summary>The results, grouped into the chart's lines in the order they first appear.</summary>
+    public IReadOnlyList<IGrouping<string, CompareResult>> Series { get; } = [.. results.GroupBy(r => r.Case.Series)];
+
+    /// <summary>Writes results.csv, results.md, error-vs-time.svg, error-vs-rays.svg and index.html into <paramref name="folder"/>.</summary>
+    /// <param name="folder">An existing folder (the images are already in its <c>images/</c> and <c>errors/</c>).</param>
+    public void WriteTo(string folder)
+    {
+        File.WriteAllText(Path.Combine(folder, "results.csv"), Csv());
+        File.WriteAllText(Path.Combine(folder, "results.md"), Markdown());
+        File.WriteAllText(Path.Combine(folder, "error-vs-time.svg"), Chart("RMSE against time", r => r.Time.TotalMilliseconds, "median render time (ms)"));
+        File.WriteAllText(Path.Combine(folder, "error-vs-rays.svg"), Chart("RMSE against rays", r => r.RaysPerPixel, "primary rays per pixel"));
+        File.WriteAllText(Path.Combine(folder, "index.html"), Html());
+    }
+
+    /// <summary>The results as CSV, one row per setting, numbers in invariant culture.</summary>
+    public string Csv()
+    {
+        var csv = new StringBuilder("series,sampler,setting,budget,samples_per_pixel,max_depth,contrast,rays,rays_per_pixel,median_ms,rmse,mean_abs,max,over_one_level,image,error_image\n");
+        foreach (CompareResult r in results)
+        {
+            CompareCase c = r.Case;
+            csv.Append(Invariant($"{c.Series},{c.Sampler},{c.Setting},{c.Budget},{c.Point?.SamplesPerPixel},{c.Adaptive?.MaxDepth},{c.Adaptive?.Contrast:G6},"))
+               .Append(Invariant($"{r.Rays},{r.RaysPerPixel:G9},{r.Time.TotalMilliseconds:F3},{r.Error.Rmse:G9},{r.Error.MeanAbsolute:G9},{r.Error.Max},{r.Error.FractionOverOneLevel:G9},"))
+               .Append($"images/{c.FileStem}.png,errors/{c.FileStem}.png\n");
+        }
+
+        return csv.ToString();
+    }
+
+    /// <summary>The table, as Markdown.</summary>
+    public string Table()
+    {
+        var md = new StringBuilder("| sampler | setting | rays/px | time (ms) | RMSE | mean abs. | max | > 1 level |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
+        foreach (CompareResult r in results)
+        {
+            md.Append(Invariant($"| {r.Case.Series} | {r.Case.Setting} | {r.RaysPerPixel:F2} | {r.Time.TotalMilliseconds:F1} | {r.Error.Rmse:F3} | {r.Error.MeanAbsolute:F4} | {r.Error.Max} | {100 * r.Error.FractionOverOneLevel:F3}% |\n"));
+        }
+
+        return md.ToString();
+    }
+
+    /// <summary>results.md: the heading, the table, the slopes, the times to reach an error, and the command.</summary>
+    public string Markdown()
+    {
+        var md = new StringBuilder();
+        md.Append($"# raylab compare: {heading}\n\n{Definition}\n\n").Append(Table()).Append('\n');
+        foreach (string note in notes)
+        {
+            md.Append($"- {note}\n");
+        }
+
+        md.Append("\n## Convergence slopes\n\n")
+          .Append("Least-squares slope of ln(error) against ln(rays per pixel) over each line's settings with error > 0 (rays, "
+                  + "not time: rays are exact, times are noisy). Theory for pixels on an edge (Mitchell 1996): random −0.5, "
+                  + "jittered −0.75. Once the error is below about a level, quantisation makes the RMSE fall only as the "
+                  + "square root of the true error (half the slope); the mean absolute error keeps the true slope.\n\n")
+          .Append("| sampler | slope of RMSE | slope of mean abs. | settings |\n|---|---:|---:|---:|\n");
+        foreach (IGrouping<string, CompareResult> s in Series)
+        {
+            double? rmse = Slope(s.Select(r => (r.RaysPerPixel, r.Error.Rmse)));
+            double? mean = Slope(s.Select(r => (r.RaysPerPixel, r.Error.MeanAbsolute)));
+            md.Append(Invariant($"| {s.Key} | {Format(rmse)} | {Format(mean)} | {s.Count(r => r.Error.Rmse > 0)} |\n"));
+        }
+
+        md.Append("\n## Time to maximum error ≤ 1 level\n\n")
+          .Append("The fastest setting whose every pixel is within one level of the exact image.\n\n")
+          .Append("| sampler | time (ms) | setting | rays/px |\n|---|---:|---|---:|\n");
+        foreach (IGrouping<string, CompareResult> s in Series)
+        {
+            md.Append(WithinOneLevel(s) is { } r
+                ? Invariant($"| {s.Key} | {r.Time.TotalMilliseconds:F1} | {r.Case.Setting} | {r.RaysPerPixel:F2} |\n")
+                : Invariant($"| {s.Key} | not reached | best max {s.Min(r => r.Error.Max)} levels | |\n"));
+        }
+
+        if (CommonRmse() is { } target)
+        {
+            md.Append(Invariant($"\n## Time to RMSE ≤ {target:F3} (the lowest RMSE every line reaches)\n\n"))
+              .Append("Interpolated on the log-log line between the two settings around it; fastest first.\n\n")
+              .Append("| sampler | time (ms) | × the fastest |\n|---|---:|---:|\n");
+            (string Name, double Ms)[] times = [.. Series.Select(s => (s.Key, TimeToReach(s, target)!.Value)).OrderBy(t => t.Item2)];
+            foreach ((string name, double ms) in times)
+            {
+                md.Append(Invariant($"| {name} | {ms:F1} | {ms / times[0].Ms:F2} |\n"));
+            }
+        }
+
+        md.Append($"\nMade by:\n\n```\n{command}\n```\n");
+        return md.ToString();
+    }
+
+    /// <summary>The least-squares slope of ln y against ln x over the points with x, y &gt; 0; null with fewer than two distinct x.</summary>
+    /// <param name="points">The points.</param>
+    public static double? Slope(IEnumerable<(double X, double Y)> points)
+    {
+        (double X, double Y)[] logs = [.. points.Where(p => p.X > 0 && p.Y > 0).Select(p => (Math.Log(p.X), Math.Log(p.Y)))];
+        if (logs.Select(p => p.X).Distinct().Count() < 2)
+        {
+            return null;
+        }
+
+        double mx = logs.Average(p => p.X), my = logs.Average(p => p.Y);
+        return logs.Sum(p => (p.X - mx) * (p.Y - my)) / logs.Sum(p => (p.X - mx) * (p.X - mx));
+    }
+
+    /// <summary>The fastest result whose maximum error is at most one level, or null.</summary>
+    /// <param name="series">One line's results.</param>
+    public static CompareResult? WithinOneLevel(IEnumerable<CompareResult> series) =>
+        series.Where(r => r.Error.Max <= 1).MinBy(r => r.Time);
+
+    /// <summary>
+    /// The time (ms) a line needs to reach <paramref name="rmse"/>: at the first setting (in order of rays) at or
+    /// below it, interpolated log-log from the setting before; null if no setting reaches it.
+    /// </summary>
+    /// <param name="series">One line's results.</param>
+    /// <param name="rmse">The RMSE to reach.</param>
+    public static double? TimeToReach(IEnumerable<CompareResult> series, double rmse)
+    {
+        CompareResult? previous = null;
+        foreach (CompareResult r in series.OrderBy(r => r.Rays))
+        {
+            if (r.Error.Rmse <= rmse)
+            {
+                double t = r.Time.TotalMilliseconds;
+                if (previous is null || r.Error.Rmse == rmse || r.Error.Rmse <= 0)
+                {
+                    return t;
+                }
+
+                double t0 = previous.Time.TotalMilliseconds;
+                double f = Math.Log(rmse / previous.Error.Rmse) / Math.Log(r.Error.Rmse / previous.Error.Rmse);
+                return Math.Exp(Math.Log(t0) + (f * Math.Log(t / t0)));
+            }
+
+            previous = r;
+        }
+
+        return null;
+    }
+
+    /// <summary>The lowest RMSE every line reaches (the largest of the lines' minima), or null if some line never gets above 0.</summary>
+    private double? CommonRmse()
+    {
+        double target = Series.Count == 0 ? 0 : Series.Max(s => s.Min(r => r.Error.Rmse));
+        return target > 0 ? target : null;
+    }
+
+    private string Chart(string title, Func<CompareResult, double> x, string xLabel) => LogLogChart.ToSvg(
+        title, xLabel, "RMSE (8-bit levels)",
+        [.. Series.Select(s => new LogLogChart.Series(s.Key, [.. s.Select(r => (x(r), r.Error.Rmse))]))]);
+
+    private string Html()
+    {
+        static string E(string s) => WebUtility.HtmlEncode(s);
+        var html = new StringBuilder();
+        html.Append($"<!DOCTYPE html>\n<html lang=\"en\">\n<head><meta charset=\"utf-8\"><title>raylab compare</title>\n")
+            .Append("<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}td,th{padding:2px 8px;border-bottom:1px solid #ddd;text-align:right}td:first-child,td:nth-child(2){text-align:left}</style></head>\n<body>\n")
+            .Append($"<h1>raylab compare</h1>\n<p>{E(heading)}</p>\n<p>{E(Definition)}</p>\n")
+            .Append("<p><a href=\"results.md\">results.md</a> (table, slopes, times to reach an error) · <a href=\"results.csv\">results.csv</a> · <a href=\"images/exact.png\">the exact image</a></p>\n")
+            .Append("<p><a href=\"error-vs-time.svg\"><img src=\"error-vs-time.svg\" alt=\"RMSE against time, log-log\"></a></p>\n")
+            .Append("<p><a href=\"error-vs-rays.svg\"><img src=\"error-vs-rays.svg\" alt=\"RMSE against rays per pixel, log-log\"></a></p>\n")
+            .Append("<table>\n<tr><th>sampler</th><th>setting</th><th>rays/px</th><th>time (ms)</th><th>RMSE</th><th>max</th><th>&gt; 1 level</th><th>image</th><th>error</th></tr>\n");
+        foreach (CompareResult r in results)
+        {
+            string stem = E(r.Case.FileStem);
+            html.Append(Invariant($"<tr><td>{E(r.Case.Series)}</td><td>{E(r.Case.Setting)}</td><td>{r.RaysPerPixel:F2}</td><td>{r.Time.TotalMilliseconds:F1}</td><td>{r.Error.Rmse:F3}</td><td>{r.Error.Max}</td><td>{100 * r.Error.FractionOverOneLevel:F3}%</td>"))
+                .Append($"<td><a href=\"images/{stem}.png\">image</a></td><td><a href=\"errors/{stem}.png\">error</a></td></tr>\n");
+        }
+
+        html.Append($"</table>\n<p>Made by <code>{E(command)}</code></p>\n</body>\n</html>\n");
+        return html.ToString();
+    }
+
+    private static string Format(double? slope) => slope is { } s ? s.ToString("F2", CultureInfo.InvariantCulture) : "n/a";
+
+    private static string Invariant(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
+}

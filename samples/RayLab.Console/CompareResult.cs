@@ -1,0 +1,11 @@
+using RayLab.Imaging;
+
+namespace RayLab.Cli;
+
+/// <summary>What <c>raylab compare</c> measured for one setting.</summary>
+/// <param name="Case">The setting.</param>
+/// <param name="Rays">Primary rays traced by one render.</param>
+/// <param name="RaysPerPixel">Rays divided by W·H.</param>
+/// <param name="Time">The median render time of the repeats (the render loop only).</param>
+/// <param name="Error">The image's error against the exact image.</param>
+public sealed record CompareResult(CompareCase Case, long Rays, double RaysPerPixel, TimeSpan Time, ImageError Error);
