@@ -68,7 +68,7 @@ public abstract class CompareProgress
     private sealed class Bars(ProgressContext context, int renders) : CompareProgress
     {
         private readonly ProgressTask _all = context.AddTask("compare", maxValue: renders);
-        private readonly ProgressTask _current = context.AddTask("", maxValue: 1);
+        private readonly ProgressTask _current = context.AddTask("starting", maxValue: 1);
 
         public override RenderStatistics Render(string label, Func<RenderStatistics> render)
         {
