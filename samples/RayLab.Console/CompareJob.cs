@@ -156,7 +156,7 @@ public static class CompareJob
                 ImageError error = ImageError.Measure(image, exact);
                 image.Save(Path.Combine(staging, "images", c.FileStem + ".png"));
                 HeatMap.Render(ImageError.PerPixel(image, exact), width, height, "levels").Save(Path.Combine(staging, "errors", c.FileStem + ".png"));
-                results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median(times), error);
+                results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median(times), error, stats.Kernel);
             }
         });
         return (exactStats, results);

@@ -38,12 +38,12 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     /// <summary>The results as CSV, one row per setting, numbers in invariant culture.</summary>
     public string Csv()
     {
-        var csv = new StringBuilder("series,sampler,setting,budget,samples_per_pixel,max_depth,contrast,rays,rays_per_pixel,median_ms,rmse,mean_abs,max,over_one_level,image,error_image\n");
+        var csv = new StringBuilder("series,sampler,setting,budget,samples_per_pixel,max_depth,contrast,rays,rays_per_pixel,median_ms,rmse,mean_abs,max,over_one_level,kernel,image,error_image\n");
         foreach (CompareResult r in results)
         {
             CompareCase c = r.Case;
             csv.Append(Invariant($"{c.Series},{c.Sampler},{c.Setting},{c.Budget},{c.Point?.SamplesPerPixel},{c.Adaptive?.MaxDepth},{c.Adaptive?.Contrast:G6},"))
-               .Append(Invariant($"{r.Rays},{r.RaysPerPixel:G9},{r.Time.TotalMilliseconds:F3},{r.Error.Rmse:G9},{r.Error.MeanAbsolute:G9},{r.Error.Max},{r.Error.FractionOverOneLevel:G9},"))
+               .Append(Invariant($"{r.Rays},{r.RaysPerPixel:G9},{r.Time.TotalMilliseconds:F3},{r.Error.Rmse:G9},{r.Error.MeanAbsolute:G9},{r.Error.Max},{r.Error.FractionOverOneLevel:G9},{r.Kernel},"))
                .Append($"images/{c.FileStem}.png,errors/{c.FileStem}.png\n");
         }
 

@@ -1,4 +1,5 @@
 using RayLab.Imaging;
+using RayLab.Rendering;
 
 namespace RayLab.Cli;
 
@@ -8,4 +9,5 @@ namespace RayLab.Cli;
 /// <param name="RaysPerPixel">Rays divided by W·H.</param>
 /// <param name="Time">The median render time of the repeats (the render loop only).</param>
 /// <param name="Error">The image's error against the exact image.</param>
-public sealed record CompareResult(CompareCase Case, long Rays, double RaysPerPixel, TimeSpan Time, ImageError Error);
+/// <param name="Kernel">The render loop that ran (packet or scalar).</param>
+public sealed record CompareResult(CompareCase Case, long Rays, double RaysPerPixel, TimeSpan Time, ImageError Error, RenderKernel Kernel);

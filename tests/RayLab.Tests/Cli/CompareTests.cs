@@ -171,7 +171,7 @@ public sealed partial class CompareTests : IDisposable
     {
         string[] lines = File.ReadAllLines(path);
         string[] header = lines[0].Split(',');
-        Assert.Equal(16, header.Length);
+        Assert.Equal(17, header.Length);
         int Col(string name) => Array.IndexOf(header, name) is >= 0 and int i ? i : throw new InvalidOperationException($"no column {name}");
         return [.. lines[1..].Select(line =>
         {
