@@ -80,9 +80,15 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
           .Append("| sampler | slope of RMSE | slope of mean abs. | settings |\n|---|---:|---:|---:|\n");
         foreach (IGrouping<string, CompareResult> s in Series)
         {
-            double? rmse = Slope(s.Select(r => (r.RaysPerPixel, r.Error.Rmse)));
-            double? mean = Slope(s.Select(r => (r.RaysPerPixel, r.Error.MeanAbsolute)));
-            md.Append(Invariant($"| {s.Key} | {Format(rmse)} | {Format(mean)} | {s.Count(r => r.Error.Rmse > 0)} |\n"));
+            double[] rays = [.. s.Where(r => r.Error.Rmse > 0).Select(r => r.RaysPerPixel)];
+            string rmse = "n/a", mean = "n/a (rays span less than 2×)";
+            if (rays.Length > 1 && rays.Max() >= 2 * rays.Min())
+            {
+                rmse = Format(Slope(s.Select(r => (r.RaysPerPixel, r.Error.Rmse))));
+                mean = Format(Slope(s.Select(r => (r.RaysPerPixel, r.Error.MeanAbsolute))));
+            }
+
+            md.Append(Invariant($"| {s.Key} | {rmse} | {mean} | {rays.Length} |\n"));
         }
 
         md.Append("\n## Time to maximum error ≤ 1 level\n\n")
@@ -95,16 +101,16 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
                 : Invariant($"| {s.Key} | not reached | best max {s.Min(r => r.Error.Max)} levels | |\n"));
         }
 
-        if (CommonRmse() is { } target)
+        double? everyLine = LowestCommonRmse(Series);
+        double? everyPointSampler = LowestCommonRmse([.. Series.Where(s => s.First().Case.Point is not null)]);
+        if (everyLine is { } all)
         {
-            md.Append(Invariant($"\n## Time to RMSE ≤ {target:F3} (the lowest RMSE every line reaches)\n\n"))
-              .Append("Interpolated on the log-log line between the two settings around it; fastest first.\n\n")
-              .Append("| sampler | time (ms) | × the fastest |\n|---|---:|---:|\n");
-            (string Name, double Ms)[] times = [.. Series.Select(s => (s.Key, TimeToReach(s, target)!.Value)).OrderBy(t => t.Item2)];
-            foreach ((string name, double ms) in times)
-            {
-                md.Append(Invariant($"| {name} | {ms:F1} | {ms / times[0].Ms:F2} |\n"));
-            }
+            ReachTable(md, all, "the lowest RMSE every line reaches");
+        }
+
+        if (everyPointSampler is { } point && point < (everyLine ?? double.PositiveInfinity))
+        {
+            ReachTable(md, point, "the lowest RMSE every point sampler reaches");
         }
 
         md.Append($"\nMade by:\n\n```\n{command}\n```\n");
@@ -131,27 +137,30 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         series.Where(r => r.Error.Max <= 1).MinBy(r => r.Time);
 
     /// <summary>
-    /// The time (ms) a line needs to reach <paramref name="rmse"/>: at the first setting (in order of rays) at or
-    /// below it, interpolated log-log from the setting before; null if no setting reaches it.
+    /// What a line spends to reach <paramref name="rmse"/>, by <paramref name="cost"/> (time or rays): at the first
+    /// setting (in order of rays) at or below it, interpolated on the log-log line from the setting before; null
+    /// if no setting reaches it.
     /// </summary>
     /// <param name="series">One line's results.</param>
     /// <param name="rmse">The RMSE to reach.</param>
-    public static double? TimeToReach(IEnumerable<CompareResult> series, double rmse)
+    /// <param name="cost">What is spent: e.g. the median time in ms, or rays per pixel.</param>
+    public static double? CostToReach(IEnumerable<CompareResult> series, double rmse, Func<CompareResult, double> cost)
     {
+        ArgumentNullException.ThrowIfNull(cost);
         CompareResult? previous = null;
         foreach (CompareResult r in series.OrderBy(r => r.Rays))
         {
             if (r.Error.Rmse <= rmse)
             {
-                double t = r.Time.TotalMilliseconds;
+                double c = cost(r);
                 if (previous is null || r.Error.Rmse == rmse || r.Error.Rmse <= 0)
                 {
-                    return t;
+                    return c;
                 }
 
-                double t0 = previous.Time.TotalMilliseconds;
+                double c0 = cost(previous);
                 double f = Math.Log(rmse / previous.Error.Rmse) / Math.Log(r.Error.Rmse / previous.Error.Rmse);
-                return Math.Exp(Math.Log(t0) + (f * Math.Log(t / t0)));
+                return Math.Exp(Math.Log(c0) + (f * Math.Log(c / c0)));
             }
 
             previous = r;
@@ -160,11 +169,27 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         return null;
     }
 
-    /// <summary>The lowest RMSE every line reaches (the largest of the lines' minima), or null if some line never gets above 0.</summary>
-    private double? CommonRmse()
+    /// <summary>The lowest RMSE every line reaches (the largest of the lines' minima); null if there is none above 0.</summary>
+    private static double? LowestCommonRmse(IReadOnlyList<IGrouping<string, CompareResult>> lines)
     {
-        double target = Series.Count == 0 ? 0 : Series.Max(s => s.Min(r => r.Error.Rmse));
+        double target = lines.Count == 0 ? 0 : lines.Max(s => s.Min(r => r.Error.Rmse));
         return target > 0 ? target : null;
+    }
+
+    private void ReachTable(StringBuilder md, double target, string why)
+    {
+        md.Append(Invariant($"\n## Time to RMSE ≤ {target:F3} ({why})\n\n"))
+          .Append("Interpolated on the log-log line between the two settings around it; fastest first.\n\n")
+          .Append("| sampler | time (ms) | × the fastest | rays/px |\n|---|---:|---:|---:|\n");
+        var reached = Series.Select(s => (Name: s.Key, Ms: CostToReach(s, target, r => r.Time.TotalMilliseconds), Rays: CostToReach(s, target, r => r.RaysPerPixel)))
+            .OrderBy(t => t.Ms ?? double.PositiveInfinity).ToList();
+        double fastest = reached[0].Ms ?? double.NaN;
+        foreach ((string name, double? ms, double? rays) in reached)
+        {
+            md.Append(ms is { } t
+                ? Invariant($"| {name} | {t:F1} | {t / fastest:F2} | {rays:F2} |\n")
+                : $"| {name} | not reached | | |\n");
+        }
     }
 
     private string Chart(string title, Func<CompareResult, double> x, string xLabel) => LogLogChart.ToSvg(
