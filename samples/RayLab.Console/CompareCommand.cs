@@ -19,7 +19,7 @@ public static class CompareCommand
         var threads = new Option<int?>("--threads") { Description = "Render threads, ≥ 1 (default: all cores).", HelpName = "T" };
         var width = new Option<int?>("--width") { Description = "Override the image width, ≥ 1.", HelpName = "W" };
         var height = new Option<int?>("--height") { Description = "Override the image height, ≥ 1.", HelpName = "H" };
-        var output = new Option<string>("--out") { Description = "The folder for the report (created if missing; its parent must exist).", Required = true, HelpName = "DIR" };
+        var output = new Option<string>("--out") { Description = "The folder for the report (created, with its parents, if missing).", Required = true, HelpName = "DIR" };
         var budgets = new Option<string>("--budgets") { Description = "Samples per pixel for the point samplers, comma-separated (grid samplers use the nearest square below).", DefaultValueFactory = _ => CompareRequest.DefaultBudgets };
         var repeats = new Option<int>("--repeats") { Description = "Renders per setting; the time is their median.", DefaultValueFactory = _ => 3, HelpName = "R" };
         var samplers = new Option<string?>("--samplers") { Description = "The samplers to compare, comma-separated (default: all).", HelpName = string.Join(',', SamplerSettings.Types) };

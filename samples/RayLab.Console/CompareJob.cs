@@ -24,11 +24,12 @@ public static class CompareJob
         ArgumentNullException.ThrowIfNull(stdout);
         ArgumentNullException.ThrowIfNull(stderr);
         string? staging = null;
-        bool createdFolder = false, done = false;
+        string[] created = [];
+        bool done = false;
         try
         {
             (PreparedScene scene, CompareCase[] cases, List<string> notes) = Plan(request);
-            createdFolder = !Directory.Exists(request.OutputFolder);
+            created = MissingFolders(request.OutputFolder);
             Directory.CreateDirectory(request.OutputFolder);
             staging = Path.Combine(request.OutputFolder, $".raylab-compare-{Guid.NewGuid():N}.tmp");
             Directory.CreateDirectory(Path.Combine(staging, "images"));
@@ -56,7 +57,7 @@ public static class CompareJob
         }
         finally
         {
-            CleanUp(staging, done, createdFolder ? request.OutputFolder : null);
+            CleanUp(staging, done ? [] : created);
         }
     }
 
@@ -202,16 +203,26 @@ public static class CompareJob
             throw new UsageException("--out: the path is empty");
         }
 
-        if (File.Exists(folder))
+        // The folder and its missing parents are created; nothing on the way may be a file.
+        for (string? path = Path.GetFullPath(folder); path is not null; path = Path.GetDirectoryName(path))
         {
-            throw new UsageException($"--out: '{folder}' is a file, not a folder");
+            if (File.Exists(path))
+            {
+                throw new UsageException($"--out: '{path}' is a file, not a folder");
+            }
+        }
+    }
+
+    /// <summary>The folders that creating <paramref name="folder"/> will make, deepest first.</summary>
+    private static string[] MissingFolders(string folder)
+    {
+        var missing = new List<string>();
+        for (string? path = Path.GetFullPath(folder); path is not null && !Directory.Exists(path); path = Path.GetDirectoryName(path))
+        {
+            missing.Add(path);
         }
 
-        string parent = Path.GetDirectoryName(Path.GetFullPath(folder)) ?? ".";
-        if (!Directory.Exists(parent))
-        {
-            throw new UsageException($"--out: the folder '{parent}' does not exist");
-        }
+        return [.. missing];
     }
 
     private static PreparedScene Prepare(CompareRequest r)
@@ -304,7 +315,7 @@ public static class CompareJob
         }
     }
 
-    private static void CleanUp(string? staging, bool done, string? createdFolder)
+    private static void CleanUp(string? staging, string[] createdFolders)
     {
         try
         {
@@ -313,9 +324,9 @@ public static class CompareJob
                 Directory.Delete(staging, recursive: true);
             }
 
-            if (!done && createdFolder is not null && Directory.Exists(createdFolder) && !Directory.EnumerateFileSystemEntries(createdFolder).Any())
+            foreach (string folder in createdFolders.Where(f => Directory.Exists(f) && !Directory.EnumerateFileSystemEntries(f).Any()))
             {
-                Directory.Delete(createdFolder);
+                Directory.Delete(folder);
             }
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)

@@ -93,7 +93,7 @@ public sealed partial class CompareTests : IDisposable
     [Fact]
     public void AGridSamplerRunsABudgetAtTheSquareBelowAndTheReportSaysSo()
     {
-        string report = _dir.File("report");
+        string report = _dir.File(Path.Combine("new", "deeper", "report")); // created with its parents
 
         (int code, _, string stderr) = Run("compare", WriteScene(Scene), "--out", report, "--budgets", "2,5,8", "--repeats", "1",
             "--samplers", "jittered,random");
@@ -134,7 +134,8 @@ public sealed partial class CompareTests : IDisposable
         string wide = WriteScene(Scene.Replace("\"fov\": 40", "\"fov\": 190", StringComparison.Ordinal));
         AssertFailsCleanly($"raylab: error: {wide}: camera.fov", "compare", wide, "--out", _dir.File("report"));
         AssertFailsCleanly($"raylab: error: --out: '{scene}' is a file, not a folder", "compare", scene, "--out", scene);
-        AssertFailsCleanly("raylab: error: --out: the folder", "compare", scene, "--out", _dir.File(Path.Combine("no", "report")));
+        AssertFailsCleanly($"raylab: error: --out: '{scene}' is a file, not a folder", "compare", scene, "--out", Path.Combine(scene, "report"));
+        AssertFailsCleanly("raylab: error: --budgets:", "compare", scene, "--out", _dir.File(Path.Combine("no", "report")), "--budgets", "0");
         AssertFailsCleanly("raylab: error: ", "compare", scene); // --out is required: a command-line error
     }
 
