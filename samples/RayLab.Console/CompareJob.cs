@@ -13,6 +13,9 @@ namespace RayLab.Cli;
 /// </summary>
 public static class CompareJob
 {
+    /// <summary>The samplers a comparison renders: every point sampler and adaptive (the exact one is the reference).</summary>
+    public static IReadOnlyList<string> Compared { get; } = [.. Samplers.Names, "adaptive"];
+
     /// <summary>Runs the comparison; prints the table, or one error line and returns non-zero.</summary>
     /// <param name="request">What to compare.</param>
     /// <param name="stdout">Where the table goes.</param>
@@ -72,8 +75,8 @@ public static class CompareJob
             s => (int.TryParse(s, Digits, inv, out int d) && d <= AdaptiveSampler.MaxSupportedDepth, d));
         double[] contrasts = ParseList(r.Contrasts, "--contrasts", "a number ≥ 0",
             s => (double.TryParse(s, NumberStyles.Float, inv, out double c) && c >= 0 && double.IsFinite(c), c));
-        string[] samplers = ParseList(r.Samplers ?? string.Join(',', SamplerSettings.Types), "--samplers",
-            $"one of {string.Join(", ", SamplerSettings.Types)}", s => (SamplerSettings.Types.Contains(s, StringComparer.Ordinal), s));
+        string[] samplers = ParseList(r.Samplers ?? string.Join(',', Compared), "--samplers",
+            $"one of {string.Join(", ", Compared)}", s => (Compared.Contains(s, StringComparer.Ordinal), s));
         if (r.Repeats < 1)
         {
             throw new UsageException($"--repeats: must be at least 1, got {r.Repeats}");
