@@ -6,9 +6,10 @@ namespace RayLab.Rendering;
 
 /// <summary>
 /// Every border of a scene's picture that the exact reference must follow, as <see cref="Outline"/>s, and the
-/// heights where two of them cross. The colour that <see cref="Scene.Trace"/> gives can only change where
+/// heights where two of them cross.
 /// </summary>
 /// <remarks>
+/// The colour that <see cref="Scene.Trace"/> gives can only change where
 /// <list type="bullet">
 /// <item>a ray becomes tangent to a sphere (the sphere's outline);</item>
 /// <item>a hit crosses the near or the far plane (the circle where that plane cuts a sphere);</item>

@@ -12,6 +12,10 @@ namespace RayLab.Tests.Rendering;
 /// </summary>
 public class ExactRendererTests
 {
+    private readonly ITestOutputHelper _output;
+
+    public ExactRendererTests(ITestOutputHelper output) => _output = output;
+
     private static readonly Intensity Background = new(0.1, 0.1, 0.15);
 
     private static Scene White(params (Double3 Centre, double Radius)[] spheres) =>
@@ -46,6 +50,7 @@ public class ExactRendererTests
 
         double area = values.Sum(v => v.R);
         double expected = Math.PI * r * r / (pixel * pixel * aspect); // in pixels
+        _output.WriteLine($"disc of radius {r} (pixel aspect {aspect}): coverage − π r² = {area - expected:E2} pixels");
         Assert.True(Math.Abs(area - expected) <= 1e-6, $"coverage {area:R}, π r² = {expected:R}");
     }
 
@@ -81,6 +86,7 @@ public class ExactRendererTests
             }
         }
 
+        _output.WriteLine($"{type}: largest |exact − closed-form disc area| {worst:E2}");
         Assert.True(worst <= 1e-9, $"largest difference {worst:E2}");
         Assert.Contains(values, v => v.R > 0.01 && v.R < 0.99); // the outline does cross pixels
     }
@@ -97,6 +103,7 @@ public class ExactRendererTests
 
         Intensity[] values = new ExactRenderer().RenderLinear(scene, camera, 8, 8);
 
+        _output.WriteLine($"cut pixel: coverage − (½ − 1/(24 R)) = {values[(3 * 8) + 3].R - (0.5 - (1 / (24 * R))):E2}");
         Assert.Equal(0.5 - (1 / (24 * R)), values[(3 * 8) + 3].R, 1e-9);
         Assert.Equal(1, values[(3 * 8) + 2].R, 1e-12);  // just left of it: inside
         Assert.Equal(1, values[0].R, 1e-12);
@@ -142,6 +149,7 @@ public class ExactRendererTests
             }
         }
 
+        _output.WriteLine($"{edges} pixels on the outline; largest |exact − row integral| {worst:E2}");
         Assert.True(edges > 10, $"only {edges} pixels on the outline");
         Assert.True(worst <= 1e-9, $"largest difference {worst:E2}");
 
@@ -269,6 +277,7 @@ public class ExactRendererTests
         var e = Assert.Throws<UnsupportedSceneException>(() =>
             new ExactRenderer().RenderLinear(scene, Seen(new Window(rho * (1 - 1e-8), rho * -1.1e-8, rho * (1 + 1e-8), rho * 0.9e-8)), 32, 32));
 
+        _output.WriteLine($"{type}: coverage − π r² = {values.Sum(v => v.R) - (Math.PI * (32 / 2.9) * (32 / 2.9)):E2} pixels");
         Assert.Equal(Math.PI * (32 / 2.9) * (32 / 2.9), values.Sum(v => v.R), 1e-6);
         Assert.StartsWith("Sphere 0 is seen at a zoom beyond double precision", e.Message);
     }
