@@ -231,7 +231,9 @@ public static class CompareJob
     private static PreparedScene Prepare(CompareRequest r)
     {
         SceneDescription d = SceneFile.Load(r.ScenePath);
-        d = d with { Width = r.Width ?? d.Width, Height = r.Height ?? d.Height };
+        // The scene's own sampler is not used; preparing it as "exact" checks that the exact reference can draw
+        // the scene (a sphere behind the eye is an error naming spheres[i]) before anything is rendered.
+        d = d with { Width = r.Width ?? d.Width, Height = r.Height ?? d.Height, Sampler = d.Sampler with { Type = "exact" } };
         try
         {
             return d.Prepare();
@@ -253,7 +255,7 @@ public static class CompareJob
         $"{Path.GetFileName(r.ScenePath)}, {scene.Description.Width}×{scene.Description.Height}, {scene.Camera.Name} camera, "
         + $"seed {r.Seed ?? scene.Description.Sampler.Seed}, {(r.Threads is { } t ? $"{t} threads" : $"all {Environment.ProcessorCount} cores")}, "
         + $"time = median of {r.Repeats} render{(r.Repeats == 1 ? "" : "s")}; "
-        + $"exact image: {exact.PrimaryRays:N0} rays in {exact.RenderTime.TotalSeconds:F1} s");
+        + $"exact image (ExactRenderer) in {exact.RenderTime.TotalMilliseconds:F0} ms");
 
     /// <summary>The command line that reproduces the run, every list spelled out.</summary>
     private static string Command(CompareRequest r)

@@ -133,6 +133,8 @@ public sealed partial class CompareTests : IDisposable
         AssertFailsCleanly($"raylab: error: {_dir.File("missing.json")}", "compare", _dir.File("missing.json"), "--out", _dir.File("report"));
         string wide = WriteScene(Scene.Replace("\"fov\": 40", "\"fov\": 190", StringComparison.Ordinal));
         AssertFailsCleanly($"raylab: error: {wide}: camera.fov", "compare", wide, "--out", _dir.File("report"));
+        string behind = WriteScene(Scene.Replace("\"center\": [-1.1, 0, 0]", "\"center\": [0, 0.5, 5.5]", StringComparison.Ordinal));
+        AssertFailsCleanly($"raylab: error: {behind}: spheres[0]: ", "compare", behind, "--out", _dir.File("report")); // the exact reference cannot draw it
         AssertFailsCleanly($"raylab: error: --out: '{scene}' is a file, not a folder", "compare", scene, "--out", scene);
         AssertFailsCleanly($"raylab: error: --out: '{scene}' is a file, not a folder", "compare", scene, "--out", Path.Combine(scene, "report"));
         AssertFailsCleanly("raylab: error: --budgets:", "compare", scene, "--out", _dir.File(Path.Combine("no", "report")), "--budgets", "0");
