@@ -208,7 +208,7 @@ public sealed class Renderer
             return source;
         }, source => Interlocked.Add(ref interiorRays, source.Rays));
         clock.Stop();
-        return new RenderStatistics(lattice.SharedRays + interiorRays, clock.Elapsed);
+        return new RenderStatistics(lattice.SharedRays + interiorRays, clock.Elapsed) { Kernel = RenderKernel.Scalar };
     }
 
     /// <summary>The mean of a pixel's samples, in linear intensity (before the 8-bit rule).</summary>

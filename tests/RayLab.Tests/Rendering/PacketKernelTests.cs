@@ -163,6 +163,14 @@ public class PacketKernelTests
     }
 
     [Fact]
+    public void AdaptiveRendersReportTheScalarLoopTheyUse()
+    {
+        var image = new Image(32, 24);
+        RenderStatistics stats = new Renderer { Kernel = RenderKernel.Vector512 }.Render(TwoSpheres(), Perspective, new AdaptiveSampler(), image);
+        Assert.Equal(RenderKernel.Scalar, stats.Kernel);
+    }
+
+    [Fact]
     public void AskingForScalarAlwaysGetsScalar()
     {
         RenderStatistics stats = Render(RenderKernel.Scalar, TwoSpheres(), Perspective, new JitteredSampler(4, 1)).Stats;
