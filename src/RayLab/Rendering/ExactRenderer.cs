@@ -152,6 +152,6 @@ public sealed class ExactRenderer
             return worker;
         }, static _ => { });
         clock.Stop();
-        return new RenderStatistics(0, clock.Elapsed);
+        return new RenderStatistics(0, clock.Elapsed) { Kernel = RenderKernel.Scalar };
     }
 }
