@@ -53,9 +53,7 @@ internal sealed class PacketFrame
         for (int k = 0; k < spheres.Length; k++)
         {
             Sphere sphere = spheres[k];
-            // Perspective: o − C = e − C for every ray. Orthographic: o − C = (e + c − C) + α a + β b.
-            Double3 offset = plane.Eye - sphere.Center + (plane.IsOrthographic ? plane.C : Double3.Zero);
-            double largest = plane.IsOrthographic ? LargestOffset(offset, plane.A, plane.B) : offset.Length;
+            (Double3 offset, double largest) = OffsetOf(sphere, plane);
             double bound = 32 * Epsilon * ((sphere.Radius * sphere.Radius) + (largest * largest));
             Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(sphere.Color * scene.Ambient));
             reach[k] = 3e-3 * (sphere.Radius + largest);
@@ -135,8 +133,7 @@ internal sealed class PacketFrame
                 return false;
             }
 
-            Double3 offset = plane.Eye - sphere.Center + (plane.IsOrthographic ? plane.C : Double3.Zero);
-            double largest = plane.IsOrthographic ? LargestOffset(offset, plane.A, plane.B) : offset.Length;
+            (_, double largest) = OffsetOf(sphere, plane);
             if (!(largest + sphere.Radius < 1e18))
             {
                 reason = $"sphere {k} is too far away for float";
@@ -162,6 +159,16 @@ internal sealed class PacketFrame
         reason = null;
         frame = new PacketFrame(plane, scene, [.. kept]);
         return true;
+    }
+
+    /// <summary>
+    /// A sphere's o − C at the window's corner α = β = 0, and the largest |o − C| over the window. Perspective:
+    /// o − C = e − C for every ray. Orthographic: o − C = (e + c − C) + α a + β b.
+    /// </summary>
+    private static (Double3 Offset, double Largest) OffsetOf(Sphere sphere, ImagePlane plane)
+    {
+        Double3 offset = plane.Eye - sphere.Center + (plane.IsOrthographic ? plane.C : Double3.Zero);
+        return (offset, plane.IsOrthographic ? LargestOffset(offset, plane.A, plane.B) : offset.Length);
     }
 
     /// <summary>The largest |offset + α a + β b| over the window (a convex function: its maximum is at a corner).</summary>
