@@ -46,9 +46,7 @@ public sealed class ExactRenderer
     public int MaxDegreeOfParallelism
     {
         get => _threads;
-        init => _threads = value == -1 || value >= 1
-            ? value
-            : throw new ArgumentOutOfRangeException(nameof(MaxDegreeOfParallelism), value, "Use −1 (all cores) or a count ≥ 1.");
+        init => _threads = ThreadCount.Check(value);
     }
 
     /// <summary>Optional: counts finished rows while a render runs, for a progress bar polled from another thread.</summary>

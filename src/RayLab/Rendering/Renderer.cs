@@ -22,9 +22,7 @@ public sealed class Renderer
     public int MaxDegreeOfParallelism
     {
         get => _threads;
-        init => _threads = value == -1 || value >= 1
-            ? value
-            : throw new ArgumentOutOfRangeException(nameof(MaxDegreeOfParallelism), value, "Use −1 (all cores) or a count ≥ 1.");
+        init => _threads = ThreadCount.Check(value);
     }
 
     /// <summary>
