@@ -110,10 +110,13 @@ public static class RenderJob
         float[]? raysPerPixel = request.HeatmapPath is null ? null : new float[(long)image.Width * image.Height];
         var progress = new RenderProgress();
         var renderer = new Renderer { MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress };
-        // A small render of the same scene first, so that renderMs is the render and not the JIT compiling it
-        // (the native anchors are compiled ahead of time too); its time is reported as warmupMs.
+        // A smaller render of the same scene first, so that renderMs is the render and not the JIT compiling it
+        // (the native anchors are compiled ahead of time too); its time is reported as warmupMs. It is the same
+        // picture scaled down, so it meets the same edges and compiles the paths the render takes there. The
+        // image's memory is committed before the clock too, as the anchors' zero-filled buffer is.
         var warmupClock = Stopwatch.StartNew();
-        prepared.Render(renderer, new Image(Math.Min(image.Width, 64), Math.Min(image.Height, 2)), null);
+        prepared.Render(renderer, WarmupImage(image.Width, image.Height, Math.Max(1, prepared.SamplesPerPixel)), null);
+        image.PixelBytes.Clear();
         double warmupMs = warmupClock.Elapsed.TotalMilliseconds;
         RenderStatistics stats;
         using (ProgressDisplay.ForTerminal(stdout, progress, Path.GetFileName(request.OutputPath)))
@@ -243,6 +246,24 @@ public static class RenderJob
 
     private static RenderKernel ParseKernel(string? name) =>
         name is null ? RenderKernel.Auto : Enum.Parse<RenderKernel>(name, ignoreCase: true);
+
+    /// <summary>
+    /// The warm-up's image: the render's, scaled down by a whole factor until it takes at most
+    /// <see cref="WarmupSamples"/> samples (the whole image when it is that small already).
+    /// </summary>
+    /// <param name="width">The render's width in pixels.</param>
+    /// <param name="height">The render's height in pixels.</param>
+    /// <param name="samplesPerPixel">The render's samples per pixel (1 for adaptive and exact).</param>
+    /// <returns>A new image for the warm-up render.</returns>
+    public static Image WarmupImage(int width, int height, int samplesPerPixel)
+    {
+        double samples = (double)width * height * samplesPerPixel;
+        int factor = (int)Math.Max(1, Math.Ceiling(Math.Sqrt(samples / WarmupSamples)));
+        return new Image(Math.Max(1, width / factor), Math.Max(1, height / factor));
+    }
+
+    /// <summary>The most samples the warm-up render takes: about 1/16 of the 1080p, 16 spp benchmark.</summary>
+    public const double WarmupSamples = 1 << 21;
 
     private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double encodeMs, double warmupMs)
     {

@@ -1,4 +1,6 @@
+using RayLab.Cli;
 using System.Text.Json;
+using RayLab.Imaging;
 
 namespace RayLab.Tests.Cli;
 
@@ -32,6 +34,18 @@ public sealed class KernelCliTests : IDisposable
         Assert.Equal(kernel, stats.GetProperty("kernel").GetString());
         Assert.True(stats.GetProperty("warmupMs").GetDouble() > 0);
         Assert.True(stats.GetProperty("retracedSamples").GetInt64() >= 0);
+    }
+
+    [Theory]
+    [InlineData(1920, 1080, 16, 480, 270)]   // the benchmark: 1/16 of its samples
+    [InlineData(3840, 2160, 1024, 60, 33)]
+    [InlineData(48, 32, 4, 48, 32)]          // small renders warm up on the whole picture
+    [InlineData(1000000, 4, 16, 166666, 1)]  // never below one pixel on a side
+    public void TheWarmUpIsTheSamePictureScaledDownToAFewMillionSamples(int width, int height, int spp, int warmWidth, int warmHeight)
+    {
+        Image warm = RenderJob.WarmupImage(width, height, spp);
+        Assert.Equal((warmWidth, warmHeight), (warm.Width, warm.Height));
+        Assert.True((double)warm.Width * warm.Height * spp <= Math.Max(RenderJob.WarmupSamples, (double)width * height * spp));
     }
 
     [Fact]
