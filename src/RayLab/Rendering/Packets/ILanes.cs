@@ -51,6 +51,9 @@ internal interface ILanes<TSelf>
     /// <summary>The smaller lane, as the hardware's min instruction gives it (NaN and −0 are not treated specially).</summary>
     static abstract TSelf Min(TSelf a, TSelf b);
 
+    /// <summary>min(|a|, |b|) per lane: one instruction with AVX-512 (<c>vrangeps</c>), else two absolutes and a min.</summary>
+    static abstract TSelf MinMagnitude(TSelf a, TSelf b);
+
     /// <summary>Mask of lanes where <c>a ≥ b</c>.</summary>
     static abstract TSelf GreaterThanOrEqual(TSelf a, TSelf b);
 
@@ -93,4 +96,7 @@ internal interface ILanes<TSelf>
 
     /// <summary><see cref="Sampling.CounterHash.ToUnit"/> of each lane's bits: the top 24 bits as a float in [0, 1).</summary>
     static abstract TSelf ToUnit(TSelf bits);
+
+    /// <summary>The top 24 bits of each lane as a float in [0, 2²⁴), exactly: <see cref="ToUnit"/> before its scaling by 2⁻²⁴.</summary>
+    static abstract TSelf Top24(TSelf bits);
 }

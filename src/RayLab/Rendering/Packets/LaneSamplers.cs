@@ -36,11 +36,15 @@ internal static class LaneHash
 }
 
 /// <summary><see cref="JitteredSampler"/> in lanes: the counter hash runs in SIMD, one lane per pixel.</summary>
+/// <remarks>
+/// Sample i is ((i mod n) + u)/n across, computed as one multiply-add: u·2²⁴ (the hash's top 24 bits, exact)
+/// times 2⁻²⁴/n, plus (i mod n)/n from a table.
+/// </remarks>
 internal struct JitteredLanes<TL>(JitteredSampler sampler) : ILaneSampler<TL>
     where TL : struct, ILanes<TL>
 {
     private readonly uint _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
-    private readonly TL _invN = TL.Broadcast(1f / sampler.GridSize);
+    private readonly TL _scale = TL.Broadcast(1f / sampler.GridSize / 16777216f);
     private readonly (float Column, float Row)[] _cells = Cells(sampler.GridSize);
     private TL _keys;
 
@@ -53,17 +57,17 @@ internal struct JitteredLanes<TL>(JitteredSampler sampler) : ILaneSampler<TL>
         TL h1 = LaneHash.SampleHash(_keys, index);
         TL h2 = TL.Hash(h1);
         (float column, float row) = _cells[index];
-        sx = (TL.Broadcast(column) + TL.ToUnit(h1)) * _invN;
-        sy = (TL.Broadcast(row) + TL.ToUnit(h2)) * _invN;
+        sx = TL.MultiplyAdd(TL.Top24(h1), _scale, TL.Broadcast(column));
+        sy = TL.MultiplyAdd(TL.Top24(h2), _scale, TL.Broadcast(row));
     }
 
-    /// <summary>Sample i's cell (i mod n, i div n), looked up rather than divided for in the hot loop.</summary>
+    /// <summary>Sample i's cell corner ((i mod n)/n, (i div n)/n), looked up rather than divided for in the hot loop.</summary>
     private static (float Column, float Row)[] Cells(int n)
     {
         var cells = new (float, float)[n * n];
         for (int i = 0; i < cells.Length; i++)
         {
-            cells[i] = (i % n, i / n);
+            cells[i] = ((float)(i % n) / n, (float)(i / n) / n);
         }
 
         return cells;

@@ -53,6 +53,10 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
     public static Lanes128 Max(Lanes128 a, Lanes128 b) => new(Vector128.MaxNative(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 MinMagnitude(Lanes128 a, Lanes128 b) =>
+        new(Avx512DQ.VL.IsSupported ? Avx512DQ.VL.Range(a.V, b.V, 0b1010) : Vector128.MinNative(Vector128.Abs(a.V), Vector128.Abs(b.V)));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Min(Lanes128 a, Lanes128 b) => new(Vector128.MinNative(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -102,6 +106,8 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes128 ToUnit(Lanes128 bits) =>
-        new(Vector128.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()) * (1f / 16777216f));
+    public static Lanes128 ToUnit(Lanes128 bits) => new(Top24(bits).V * (1f / 16777216f));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 Top24(Lanes128 bits) => new(Vector128.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()));
 }

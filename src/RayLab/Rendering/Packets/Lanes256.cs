@@ -53,6 +53,10 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
     public static Lanes256 Max(Lanes256 a, Lanes256 b) => new(Vector256.MaxNative(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 MinMagnitude(Lanes256 a, Lanes256 b) =>
+        new(Avx512DQ.VL.IsSupported ? Avx512DQ.VL.Range(a.V, b.V, 0b1010) : Vector256.MinNative(Vector256.Abs(a.V), Vector256.Abs(b.V)));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 Min(Lanes256 a, Lanes256 b) => new(Vector256.MinNative(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -102,6 +106,8 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes256 ToUnit(Lanes256 bits) =>
-        new(Vector256.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()) * (1f / 16777216f));
+    public static Lanes256 ToUnit(Lanes256 bits) => new(Top24(bits).V * (1f / 16777216f));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 Top24(Lanes256 bits) => new(Vector256.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()));
 }

@@ -53,6 +53,10 @@ internal readonly record struct Lanes512(Vector512<float> V) : ILanes<Lanes512>
     public static Lanes512 Max(Lanes512 a, Lanes512 b) => new(Vector512.MaxNative(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 MinMagnitude(Lanes512 a, Lanes512 b) =>
+        new(Avx512DQ.IsSupported ? Avx512DQ.Range(a.V, b.V, 0b1010) : Vector512.MinNative(Vector512.Abs(a.V), Vector512.Abs(b.V)));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 Min(Lanes512 a, Lanes512 b) => new(Vector512.MinNative(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -102,6 +106,8 @@ internal readonly record struct Lanes512(Vector512<float> V) : ILanes<Lanes512>
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes512 ToUnit(Lanes512 bits) =>
-        new(Vector512.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()) * (1f / 16777216f));
+    public static Lanes512 ToUnit(Lanes512 bits) => new(Top24(bits).V * (1f / 16777216f));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 Top24(Lanes512 bits) => new(Vector512.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()));
 }

@@ -95,22 +95,24 @@ internal static class PacketKernel
         where TMode : struct, IPacketMode
     {
         TL one = TL.Broadcast(1f);
-        TL invWidth = TL.Broadcast(1f / frame.Width), invHeight = TL.Broadcast(1f / frame.Height), y = TL.Broadcast(row);
+        TL invWidth = TL.Broadcast(1f / frame.Width), invHeight = TL.Broadcast(1f / frame.Height);
         Float3 a = frame.A, b = frame.B, c = frame.C, direction = frame.Direction, background = frame.Background;
         (TL ax, TL ay, TL az) = (TL.Broadcast(a.X), TL.Broadcast(a.Y), TL.Broadcast(a.Z));
         (TL bx, TL by, TL bz) = (TL.Broadcast(b.X), TL.Broadcast(b.Y), TL.Broadcast(b.Z));
         (TL cx, TL cy, TL cz) = (TL.Broadcast(c.X), TL.Broadcast(c.Y), TL.Broadcast(c.Z));
         ReadOnlySpan<SphereConstants> spheres = frame.Spheres;
         bool checkOrder = frame.CheckDepthOrder;
-        TL x = TL.Broadcast(x0) + TL.Indices;
+        // α = (x + sx)/W and β = 1 − (row + sy)/H (as in ImagePlane) are each one multiply-add per sample:
+        // α = sx/W + x/W and β = (1 − row/H) − sy/H, the second terms fixed for the packet.
+        TL left = (TL.Broadcast(x0) + TL.Indices) * invWidth;
+        TL top = TL.Broadcast((float)(1 - ((double)row / frame.Height)));
         TL accumulatedRed = default, accumulatedGreen = default, accumulatedBlue = default;
         uint retraced = 0;
         for (int index = 0; index < samplesPerPixel; index++)
         {
             sampler.Sample(index, out TL sx, out TL sy);
-            // α = (x + sx)/W and β = 1 − (row + sy)/H, as in ImagePlane.
-            TL alpha = (x + sx) * invWidth;
-            TL beta = TL.NegatedMultiplyAdd(y + sy, invHeight, one);
+            TL alpha = TL.MultiplyAdd(sx, invWidth, left);
+            TL beta = TL.NegatedMultiplyAdd(sy, invHeight, top);
             TL dx, dy, dz, ox, oy, oz;
             if (TP.IsOrthographic)
             {
@@ -140,8 +142,7 @@ internal static class PacketKernel
             TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
             foreach (ref readonly SphereConstants sphere in spheres)
             {
-                Float3 offset = sphere.Offset;
-                TL fx = TL.Broadcast(offset.X), fy = TL.Broadcast(offset.Y), fz = TL.Broadcast(offset.Z);
+                TL fx = TL.Broadcast(sphere.Offset.X), fy = TL.Broadcast(sphere.Offset.Y), fz = TL.Broadcast(sphere.Offset.Z);
                 if (TP.IsOrthographic)
                 {
                     (fx, fy, fz) = (fx + ox, fy + oy, fz + oz);
@@ -155,17 +156,16 @@ internal static class PacketKernel
                 TL disc = TL.Broadcast(sphere.RadiusSquared) - TL.MultiplyAdd(px, px, TL.MultiplyAdd(py, py, pz * pz));
                 TL negatedT = (half + TL.Sqrt(disc * dd)) * rdd;                    // −(near root); NaN when Δ < 0
                 TL hit = TL.LessThan(nearest, negatedT);                             // t < best (false for NaN)
-                closest = TL.Min(closest, TL.Abs(disc) * TL.Broadcast(sphere.InverseBound));
+                closest = TL.MinMagnitude(closest, disc * TL.Broadcast(sphere.InverseBound));
                 if (checkOrder)
                 {
                     unsure |= hit & TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
                 }
 
                 nearest = TL.Select(hit, negatedT, nearest);
-                Float3 colour = sphere.Colour;
-                red = TL.Select(hit, TL.Broadcast(colour.X), red);
-                green = TL.Select(hit, TL.Broadcast(colour.Y), green);
-                blue = TL.Select(hit, TL.Broadcast(colour.Z), blue);
+                red = TL.Select(hit, TL.Broadcast(sphere.Colour.X), red);
+                green = TL.Select(hit, TL.Broadcast(sphere.Colour.Y), green);
+                blue = TL.Select(hit, TL.Broadcast(sphere.Colour.Z), blue);
             }
 
             // The colour of the nearest sphere hit in each lane, or the background. Uncertain lanes: the fast
