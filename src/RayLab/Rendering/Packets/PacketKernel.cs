@@ -106,6 +106,7 @@ internal static class PacketKernel
         // α = sx/W + x/W and β = (1 − row/H) − sy/H, the second terms fixed for the packet.
         TL left = (TL.Broadcast(x0) + TL.Indices) * invWidth;
         TL top = TL.Broadcast((float)(1 - ((double)row / frame.Height)));
+        (TL backgroundRed, TL backgroundGreen, TL backgroundBlue) = (TL.Broadcast(background.X), TL.Broadcast(background.Y), TL.Broadcast(background.Z));
         TL accumulatedRed = default, accumulatedGreen = default, accumulatedBlue = default;
         uint retraced = 0;
         for (int index = 0; index < samplesPerPixel; index++)
@@ -134,9 +135,7 @@ internal static class PacketKernel
             TL dd = TL.MultiplyAdd(dx, dx, TL.MultiplyAdd(dy, dy, dz * dz));
             TL rdd = one / dd;
             TL nearest = TL.Broadcast(float.NegativeInfinity);  // −t of the nearest hit so far (kept negated: saves a negation per sphere)
-            TL red = TL.Broadcast(background.X);
-            TL green = TL.Broadcast(background.Y);
-            TL blue = TL.Broadcast(background.Z);
+            TL red = backgroundRed, green = backgroundGreen, blue = backgroundBlue;
             TL closest = TL.Broadcast(float.PositiveInfinity);   // the smallest |Δ| / bound over the spheres
             TL unsure = default;
             TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
