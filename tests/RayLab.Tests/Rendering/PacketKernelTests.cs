@@ -133,6 +133,27 @@ public class PacketKernelTests
         Assert.True(scalar.PixelBytes.SequenceEqual(packet.PixelBytes));
     }
 
+    [Theory]
+    [InlineData(1)]
+    [InlineData(3)]
+    [InlineData(15)]
+    [InlineData(16)]
+    [InlineData(17)]
+    [InlineData(33)]
+    public void NarrowAndOddWidthsWriteEveryPixelAndNoMore(int width)
+    {
+        // Pixels are written as 4-byte words, all but each packet's last: a packet narrower than the lanes, or a
+        // row ending mid-packet, must still get every pixel right and leave the next row alone.
+        var camera = new PerspectiveCamera { Position = new Double3(0, 0.5, 6), Target = new Double3(-1.1, 0, 0), Fov = 40, NearPlane = 0.1, FarPlane = 100 };
+        byte[] scalar = Render(RenderKernel.Scalar, TwoSpheres(), camera, new RegularSampler(1), w: width, h: 9).Image.PixelBytes.ToArray();
+        Assert.True(scalar.Chunk(3).Select(p => (p[0], p[1], p[2])).Distinct().Count() >= 2, "the picture has sphere and background");
+        foreach (RenderKernel kernel in Widths)
+        {
+            byte[] packet = Render(kernel, TwoSpheres(), camera, new RegularSampler(1), w: width, h: 9).Image.PixelBytes.ToArray();
+            Assert.Equal(scalar, packet);
+        }
+    }
+
     [Fact]
     public void ScenesFloatCannotRenderTakeTheScalarPathAndSayWhy()
     {

@@ -79,8 +79,12 @@ internal interface ILanes<TSelf>
     /// <summary>Writes <see cref="Count"/> floats.</summary>
     void Store(Span<float> destination);
 
-    /// <summary>Each lane truncated to an integer (the lab's 8-bit rule takes ⌊256·I⌋), written as ints.</summary>
-    void StoreTruncated(Span<int> destination);
+    /// <summary>
+    /// Truncates each lane of <paramref name="red"/>, <paramref name="green"/> and <paramref name="blue"/> (each
+    /// in 0..255) to a whole number and stores the three as one little-endian word per lane:
+    /// <c>r | g &lt;&lt; 8 | b &lt;&lt; 16</c>, the pixel's RGB24 bytes and a zero.
+    /// </summary>
+    static abstract void StoreRgb(TSelf red, TSelf green, TSelf blue, Span<uint> destination);
 
     /// <summary>Every lane's bits set to the unsigned integer <paramref name="bits"/>.</summary>
     static abstract TSelf BroadcastBits(uint bits);

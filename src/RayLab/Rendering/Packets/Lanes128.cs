@@ -82,7 +82,13 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
     public void Store(Span<float> destination) => V.CopyTo(destination);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public void StoreTruncated(Span<int> destination) => Vector128.ConvertToInt32(V).CopyTo(destination);
+    public static void StoreRgb(Lanes128 red, Lanes128 green, Lanes128 blue, Span<uint> destination)
+    {
+        Vector128<uint> r = Vector128.ConvertToInt32Native(red.V).AsUInt32();
+        Vector128<uint> g = Vector128.ConvertToInt32Native(green.V).AsUInt32();
+        Vector128<uint> b = Vector128.ConvertToInt32Native(blue.V).AsUInt32();
+        (r | (g << 8) | (b << 16)).CopyTo(destination);
+    }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 BroadcastBits(uint bits) => new(Vector128.Create(bits).AsSingle());

@@ -82,7 +82,13 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
     public void Store(Span<float> destination) => V.CopyTo(destination);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public void StoreTruncated(Span<int> destination) => Vector256.ConvertToInt32(V).CopyTo(destination);
+    public static void StoreRgb(Lanes256 red, Lanes256 green, Lanes256 blue, Span<uint> destination)
+    {
+        Vector256<uint> r = Vector256.ConvertToInt32Native(red.V).AsUInt32();
+        Vector256<uint> g = Vector256.ConvertToInt32Native(green.V).AsUInt32();
+        Vector256<uint> b = Vector256.ConvertToInt32Native(blue.V).AsUInt32();
+        (r | (g << 8) | (b << 16)).CopyTo(destination);
+    }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 BroadcastBits(uint bits) => new(Vector256.Create(bits).AsSingle());

@@ -82,7 +82,13 @@ internal readonly record struct Lanes512(Vector512<float> V) : ILanes<Lanes512>
     public void Store(Span<float> destination) => V.CopyTo(destination);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public void StoreTruncated(Span<int> destination) => Vector512.ConvertToInt32(V).CopyTo(destination);
+    public static void StoreRgb(Lanes512 red, Lanes512 green, Lanes512 blue, Span<uint> destination)
+    {
+        Vector512<uint> r = Vector512.ConvertToInt32Native(red.V).AsUInt32();
+        Vector512<uint> g = Vector512.ConvertToInt32Native(green.V).AsUInt32();
+        Vector512<uint> b = Vector512.ConvertToInt32Native(blue.V).AsUInt32();
+        (r | (g << 8) | (b << 16)).CopyTo(destination);
+    }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 BroadcastBits(uint bits) => new(Vector512.Create(bits).AsSingle());

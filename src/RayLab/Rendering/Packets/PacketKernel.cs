@@ -1,5 +1,7 @@
+using System.Buffers.Binary;
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Imaging;
@@ -29,8 +31,8 @@ internal static class PacketKernel
         where TP : struct, IProjection
     {
         int lanes = TL.Count;
-        var buffer = default(LevelBuffer);
-        Span<int> levels = buffer;
+        var buffer = default(WordBuffer);
+        Span<uint> words = buffer;
         int retraced = 0;
         TL scale = TL.Broadcast(256f / samplesPerPixel);
         TL top = TL.Broadcast(255f);
@@ -44,16 +46,19 @@ internal static class PacketKernel
                 retraced += again;
             }
 
-            // The lab's 8-bit rule, ⌊256·I⌋ clamped to 0..255 (the sums are never negative).
-            TL.Min(sum.R * scale, top).StoreTruncated(levels);
-            TL.Min(sum.G * scale, top).StoreTruncated(levels[lanes..]);
-            TL.Min(sum.B * scale, top).StoreTruncated(levels[(2 * lanes)..]);
-            int count = Math.Min(lanes, frame.Width - x0);
-            Span<Rgb24> packet = pixels.Slice(x0, count);
-            for (int lane = 0; lane < count; lane++)
+            // The lab's 8-bit rule, ⌊256·I⌋ clamped to 0..255 (the sums are never negative), packed in SIMD as
+            // one word per pixel, R G B 0. Each pixel but the packet's last is written as its 4-byte word (the
+            // next pixel overwrites the zero): one store per pixel rather than three.
+            TL.StoreRgb(TL.Min(sum.R * scale, top), TL.Min(sum.G * scale, top), TL.Min(sum.B * scale, top), words);
+            int last = Math.Min(lanes, frame.Width - x0) - 1;
+            Span<byte> bytes = MemoryMarshal.AsBytes(pixels.Slice(x0, last + 1));
+            for (int lane = 0; lane < last; lane++)
             {
-                packet[lane] = new Rgb24((byte)levels[lane], (byte)levels[lanes + lane], (byte)levels[(2 * lanes) + lane]);
+                BinaryPrimitives.WriteUInt32LittleEndian(bytes[(3 * lane)..], words[lane]);
             }
+
+            uint word = words[last];
+            pixels[x0 + last] = new Rgb24((byte)word, (byte)(word >> 8), (byte)(word >> 16));
         }
 
         return retraced;
@@ -223,11 +228,11 @@ internal static class PacketKernel
     }
 }
 
-/// <summary>Room for three registers of 8-bit levels (red, green, blue) of the widest packet, on the stack.</summary>
-[InlineArray(3 * 16)]
-internal struct LevelBuffer
+/// <summary>Room for one packed RGB word per lane of the widest packet, on the stack.</summary>
+[InlineArray(16)]
+internal struct WordBuffer
 {
-    private int _element;
+    private uint _element;
 }
 
 /// <summary>One sample's colour in every lane, and the lanes whose float answer was uncertain.</summary>
