@@ -43,6 +43,18 @@ def spheres(n):
         out.append({"center": [x, y, -(i % 3)], "radius": 0.35 * 4 / side, "color": [0.2 + 0.6 * (i % 2), 0.8 - 0.6 * (i % 2), 0.3]})
     return out
 
+shared = os.path.join(os.path.dirname(root), "shared", "anchors")
+
+def anchor_ms():
+    """The C++ avx512 anchor on bench-1080.json, as a yardstick of how quiet the machine was (None without it)."""
+    if not os.path.isdir(shared):
+        return None
+    out = subprocess.run(["python3", os.path.join(shared, "native.py"), os.path.join(shared, "bench-1080.json"), "4", "2", "avx512"],
+                         capture_output=True, text=True)
+    line = json.loads(out.stdout.strip().splitlines()[-1])
+    return None if "error" in line else line["seconds"] * 1000
+
+yardstick = [anchor_ms() for _ in range(3)]
 print(f"Median renderMs of {repeats} runs, jittered, 2 threads (`python3 tools/scaling.py`).\n")
 print("| resolution | 1 spp | 4 spp | 16 spp | 64 spp | Msamples/s at 16 spp |")
 print("|---|---:|---:|---:|---:|---:|")
@@ -64,5 +76,10 @@ for n in [2, 8, 32, 128]:
     json.dump(scene, open(path, "w"))
     ms, s = median_ms(path, "--width", "1920", "--height", "1080", "--sampler", "jittered", "--samples", "16")
     first = first if first is not None else (n, ms)
-    per = (ms - first[1]) / (n - first[0]) if n != first[0] else float("nan")
-    print(f"| {n} | {ms:.1f} | {s['rays'] / ms / 1e3:.0f} | {per:.2f} |")
+    per = f"{(ms - first[1]) / (n - first[0]):.2f}" if n != first[0] else "–"
+    print(f"| {n} | {ms:.1f} | {s['rays'] / ms / 1e3:.0f} | {per} |")
+
+yardstick += [anchor_ms() for _ in range(3)]
+if None not in yardstick:
+    print(f"\nYardstick: the C++ `avx512` anchor on bench-1080.json ran in {statistics.median(yardstick):.1f} ms (median of 3 before"
+          f" and 3 after, {min(yardstick):.1f}–{max(yardstick):.1f}); ~21 ms means the machine was quiet.")
