@@ -22,6 +22,7 @@ public sealed class ProgressDisplay : IDisposable
     private readonly ManualResetEventSlim _done = new();
     private readonly Stopwatch _clock = Stopwatch.StartNew();
     private readonly Task _display;
+    private TimeSpan _endedAt = TimeSpan.MaxValue;
 
     /// <summary>Starts waiting; after <paramref name="delay"/>, unless disposed first, draws the bar on <paramref name="console"/>.</summary>
     /// <param name="console">Where to draw: an interactive console that understands ANSI escapes.</param>
@@ -68,6 +69,7 @@ public sealed class ProgressDisplay : IDisposable
     /// <summary>Ends the display: clears the bar if it was drawn and returns once the terminal is left clean.</summary>
     public void Dispose()
     {
+        _endedAt = _clock.Elapsed;
         _done.Set();
         _display.Wait();
         _done.Dispose();
@@ -75,7 +77,9 @@ public sealed class ProgressDisplay : IDisposable
 
     private void Show(IAnsiConsole console, RenderProgress progress, string label, TimeSpan delay)
     {
-        if (_done.Wait(delay))
+        // Nothing is drawn for a render that ended within the delay (by the clock, not by whether this thread got
+        // to run first: a render that ends after the delay is shown even if it ended before this thread woke).
+        if (_done.Wait(delay) && _endedAt < delay)
         {
             return;
         }

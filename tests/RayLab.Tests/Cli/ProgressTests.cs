@@ -98,6 +98,22 @@ public sealed partial class ProgressTests : IDisposable
     }
 
     [Fact]
+    public void ARenderThatEndsBeforeTheDisplaysThreadStartsIsStillShownOnceTheDelayHasPassed()
+    {
+        // The delay is judged by the clock, not by which thread runs first: with no delay, a display disposed
+        // at once (often before its thread has started) still draws and clears its bar; 200 tries catch the race.
+        for (int attempt = 0; attempt < 200; attempt++)
+        {
+            var terminal = new StringWriter();
+            using (new ProgressDisplay(InteractiveConsole(terminal), new RenderProgress(), "instant.png", TimeSpan.Zero))
+            {
+            }
+
+            Assert.Contains("\x1b[?25h", terminal.ToString(), StringComparison.Ordinal);
+        }
+    }
+
+    [Fact]
     public void ARenderShorterThanTheDelayDrawsNothing()
     {
         var terminal = new StringWriter();
