@@ -4,7 +4,7 @@ using RayLab.Sampling;
 namespace RayLab.Tests.Rendering;
 
 /// <summary>
-/// The lane wrappers' operations that have a hardware shortcut (vrangeps for <c>MinMagnitude</c>) or feed the
+/// The lane wrappers' operations that have a hardware shortcut (vrangeps for <c>MinAbs</c>, blends for <c>Select</c>) or feed the
 /// samplers' points (<c>Hash</c>, <c>Top24</c>, <c>ToUnit</c>), lane by lane against the scalar definition, for
 /// every width (each runs where the hardware lacks it too, emulated).
 /// </summary>
@@ -13,11 +13,19 @@ public class LanesTests
     private static readonly float[] Values = [0f, -0f, 1f, -1f, 0.5f, -2.5f, 3e-38f, -3e-38f, 1e30f, -1e30f, float.PositiveInfinity, float.NegativeInfinity, 7f, -7.25f, 1e-45f, 123.456f];
 
     [Fact]
-    public void MinMagnitudeIsTheSmallerAbsoluteValue()
+    public void MinAbsIsTheSmallerOfANonNegativeValueAndAnAbsoluteValue()
     {
-        CheckMinMagnitude<Lanes512>();
-        CheckMinMagnitude<Lanes256>();
-        CheckMinMagnitude<Lanes128>();
+        CheckMinAbs<Lanes512>();
+        CheckMinAbs<Lanes256>();
+        CheckMinAbs<Lanes128>();
+    }
+
+    [Fact]
+    public void SelectTakesEachLaneFromTheSideItsComparisonChose()
+    {
+        CheckSelect<Lanes512>();
+        CheckSelect<Lanes256>();
+        CheckSelect<Lanes128>();
     }
 
     [Fact]
@@ -28,7 +36,25 @@ public class LanesTests
         CheckHash<Lanes128>();
     }
 
-    private static void CheckMinMagnitude<TL>()
+    private static void CheckSelect<TL>()
+        where TL : struct, ILanes<TL>
+    {
+        int n = TL.Count;
+        float[] a = new float[n], b = new float[n], result = new float[n];
+        for (int lane = 0; lane < n; lane++)
+        {
+            a[lane] = Values[lane % Values.Length];
+            b[lane] = lane - 3.5f;
+        }
+
+        TL.Select(TL.LessThan(TL.Load(a), TL.Load(b)), TL.Load(a), TL.Load(b)).Store(result);
+        for (int lane = 0; lane < n; lane++)
+        {
+            Assert.Equal(a[lane] < b[lane] ? a[lane] : b[lane], result[lane]);
+        }
+    }
+
+    private static void CheckMinAbs<TL>()
         where TL : struct, ILanes<TL>
     {
         int n = TL.Count;
@@ -37,15 +63,15 @@ public class LanesTests
             float[] a = new float[n], b = new float[n], result = new float[n];
             for (int lane = 0; lane < n; lane++)
             {
-                a[lane] = Values[lane % Values.Length];
+                a[lane] = Math.Abs(Values[lane % Values.Length]);
                 b[lane] = Values[(lane + shift) % Values.Length];
             }
 
-            TL.MinMagnitude(TL.Load(a), TL.Load(b)).Store(result);
+            TL.MinAbs(TL.Load(a), TL.Load(b)).Store(result);
             for (int lane = 0; lane < n; lane++)
             {
-                float expected = Math.Min(Math.Abs(a[lane]), Math.Abs(b[lane]));
-                Assert.True(BitConverter.SingleToInt32Bits(expected) == BitConverter.SingleToInt32Bits(result[lane]), $"{typeof(TL).Name}: |{a[lane]}| min |{b[lane]}| gave {result[lane]}");
+                float expected = Math.Min(a[lane], Math.Abs(b[lane]));
+                Assert.True(BitConverter.SingleToInt32Bits(expected) == BitConverter.SingleToInt32Bits(result[lane]), $"{typeof(TL).Name}: {a[lane]} min |{b[lane]}| gave {result[lane]}");
             }
         }
     }

@@ -51,8 +51,11 @@ internal interface ILanes<TSelf>
     /// <summary>The smaller lane, as the hardware's min instruction gives it (NaN and −0 are not treated specially).</summary>
     static abstract TSelf Min(TSelf a, TSelf b);
 
-    /// <summary>min(|a|, |b|) per lane: one instruction with AVX-512 (<c>vrangeps</c>), else two absolutes and a min.</summary>
-    static abstract TSelf MinMagnitude(TSelf a, TSelf b);
+    /// <summary>
+    /// min(<paramref name="smallest"/>, |<paramref name="x"/>|) per lane, for a non-negative
+    /// <paramref name="smallest"/>: one instruction with AVX-512 (<c>vrangeps</c>), else an absolute and a min.
+    /// </summary>
+    static abstract TSelf MinAbs(TSelf smallest, TSelf x);
 
     /// <summary>Mask of lanes where <c>a ≥ b</c>.</summary>
     static abstract TSelf GreaterThanOrEqual(TSelf a, TSelf b);
@@ -63,7 +66,10 @@ internal interface ILanes<TSelf>
     /// <summary>Mask of lanes where <c>a &lt; b</c>.</summary>
     static abstract TSelf LessThan(TSelf a, TSelf b);
 
-    /// <summary>Lanes of <paramref name="whenTrue"/> where the mask is set, else of <paramref name="whenFalse"/>.</summary>
+    /// <summary>
+    /// Lanes of <paramref name="whenTrue"/> where the mask is set, else of <paramref name="whenFalse"/>; each mask
+    /// lane is all ones or all zeros (a comparison's result), so one blend instruction does it.
+    /// </summary>
     static abstract TSelf Select(TSelf mask, TSelf whenTrue, TSelf whenFalse);
 
     static abstract TSelf operator &(TSelf a, TSelf b);

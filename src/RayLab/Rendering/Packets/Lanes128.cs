@@ -53,8 +53,8 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
     public static Lanes128 Max(Lanes128 a, Lanes128 b) => new(Vector128.MaxNative(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes128 MinMagnitude(Lanes128 a, Lanes128 b) =>
-        new(Avx512DQ.VL.IsSupported ? Avx512DQ.VL.Range(a.V, b.V, 0b1010) : Vector128.MinNative(Vector128.Abs(a.V), Vector128.Abs(b.V)));
+    public static Lanes128 MinAbs(Lanes128 smallest, Lanes128 x) =>
+        new(Avx512DQ.VL.IsSupported ? Avx512DQ.VL.Range(smallest.V, x.V, 0b1010) : Vector128.MinNative(smallest.V, Vector128.Abs(x.V)));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Min(Lanes128 a, Lanes128 b) => new(Vector128.MinNative(a.V, b.V));
@@ -70,7 +70,7 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Select(Lanes128 mask, Lanes128 whenTrue, Lanes128 whenFalse) =>
-        new(Vector128.ConditionalSelect(mask.V, whenTrue.V, whenFalse.V));
+        new(Sse41.IsSupported ? Sse41.BlendVariable(whenFalse.V, whenTrue.V, mask.V) : Vector128.ConditionalSelect(mask.V, whenTrue.V, whenFalse.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static uint MaskBits(Lanes128 mask) => (uint)mask.V.ExtractMostSignificantBits();

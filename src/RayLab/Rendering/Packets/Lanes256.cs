@@ -53,8 +53,8 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
     public static Lanes256 Max(Lanes256 a, Lanes256 b) => new(Vector256.MaxNative(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes256 MinMagnitude(Lanes256 a, Lanes256 b) =>
-        new(Avx512DQ.VL.IsSupported ? Avx512DQ.VL.Range(a.V, b.V, 0b1010) : Vector256.MinNative(Vector256.Abs(a.V), Vector256.Abs(b.V)));
+    public static Lanes256 MinAbs(Lanes256 smallest, Lanes256 x) =>
+        new(Avx512DQ.VL.IsSupported ? Avx512DQ.VL.Range(smallest.V, x.V, 0b1010) : Vector256.MinNative(smallest.V, Vector256.Abs(x.V)));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 Min(Lanes256 a, Lanes256 b) => new(Vector256.MinNative(a.V, b.V));
@@ -70,7 +70,7 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 Select(Lanes256 mask, Lanes256 whenTrue, Lanes256 whenFalse) =>
-        new(Vector256.ConditionalSelect(mask.V, whenTrue.V, whenFalse.V));
+        new(Avx.IsSupported ? Avx.BlendVariable(whenFalse.V, whenTrue.V, mask.V) : Vector256.ConditionalSelect(mask.V, whenTrue.V, whenFalse.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static uint MaskBits(Lanes256 mask) => (uint)mask.V.ExtractMostSignificantBits();

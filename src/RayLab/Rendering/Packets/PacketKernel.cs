@@ -160,7 +160,7 @@ internal static class PacketKernel
                 TL disc = TL.Broadcast(sphere.RadiusSquared) - TL.MultiplyAdd(px, px, TL.MultiplyAdd(py, py, pz * pz));
                 TL negatedT = (half + TL.Sqrt(disc * dd)) * rdd;                    // −(near root); NaN when Δ < 0
                 TL hit = TL.LessThan(nearest, negatedT);                             // t < best (false for NaN)
-                closest = TL.MinMagnitude(closest, disc * TL.Broadcast(sphere.InverseBound));
+                closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
                 if (checkOrder)
                 {
                     unsure |= hit & TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
