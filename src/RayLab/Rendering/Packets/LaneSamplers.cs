@@ -93,11 +93,11 @@ internal struct RandomLanes<TL>(RandomSampler sampler) : ILaneSampler<TL>
     }
 }
 
-/// <summary><see cref="RegularSampler"/> in lanes: the same point in every pixel.</summary>
+/// <summary><see cref="RegularSampler"/> in lanes: the same point in every pixel, from a table made once.</summary>
 internal readonly struct RegularLanes<TL>(RegularSampler sampler) : ILaneSampler<TL>
     where TL : struct, ILanes<TL>
 {
-    private readonly IPixelSampler _sampler = sampler;
+    private readonly (float X, float Y)[] _points = Points(sampler);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void BeginPacket(int x0, int row)
@@ -107,9 +107,22 @@ internal readonly struct RegularLanes<TL>(RegularSampler sampler) : ILaneSampler
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void Sample(int index, out TL sx, out TL sy)
     {
-        SamplePoint p = _sampler.GetSample(0, 0, index);
-        sx = TL.Broadcast((float)p.X);
-        sy = TL.Broadcast((float)p.Y);
+        (float x, float y) = _points[index];
+        sx = TL.Broadcast(x);
+        sy = TL.Broadcast(y);
+    }
+
+    /// <summary>The sampler's points (the same for every pixel), so the hot loop makes no call for them.</summary>
+    private static (float X, float Y)[] Points(RegularSampler sampler)
+    {
+        var points = new (float, float)[sampler.SamplesPerPixel];
+        for (int i = 0; i < points.Length; i++)
+        {
+            SamplePoint p = sampler.GetSample(0, 0, i);
+            points[i] = ((float)p.X, (float)p.Y);
+        }
+
+        return points;
     }
 }
 
