@@ -113,6 +113,42 @@ public sealed class SceneFileTests : IDisposable
     }
 
     [Fact]
+    public void AnOptionalFieldGivenAsNullTakesItsDefault()
+    {
+        const string omitted = """
+            {
+              "image": { "width": 4, "height": 3 },
+              "camera": { "type": "perspective", "position": [0, 0, 5], "target": [0, 0, 0] },
+              "spheres": []
+            }
+            """;
+        const string nulls = """
+            {
+              "image": { "width": 4, "height": 3 }, "background": null, "ambient": null,
+              "camera": { "type": "perspective", "position": [0, 0, 5], "target": [0, 0, 0], "up": null, "fov": null,
+                          "height": null, "near": null, "far": null, "distance": null, "window": null },
+              "spheres": [], "sampler": null
+            }
+            """;
+
+        SceneDescription expected = SceneFile.Parse(omitted, Source), actual = SceneFile.Parse(nulls, Source);
+
+        Assert.Equal(expected.Scene.Background, actual.Scene.Background);
+        Assert.Equal(expected.Scene.Ambient, actual.Scene.Ambient);
+        Assert.Equal(expected.Camera, actual.Camera);
+        Assert.Equal(expected.Sampler, actual.Sampler);
+    }
+
+    [Fact]
+    public void ARequiredFieldGivenAsNullIsAnErrorNamingIt()
+    {
+        const string json = """{ "image": null, "camera": { "type": "perspective", "position": [0, 0, 5], "target": [0, 0, 0] }, "spheres": [] }""";
+
+        var e = Assert.Throws<SceneFileException>(() => SceneFile.Parse(json, Source));
+        Assert.Contains("image", e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void ASamplerWithOnlyItsTypeHasOneSampleAndSeedZero()
     {
         string json = Mutate(Base, SamplerLine, """  "sampler": { "type": "random" }""" + "\n");
