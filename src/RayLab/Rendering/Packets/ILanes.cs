@@ -45,9 +45,6 @@ internal interface ILanes<TSelf>
 
     static abstract TSelf Abs(TSelf x);
 
-    /// <summary>The larger lane, as the hardware's max instruction gives it (NaN and −0 are not treated specially).</summary>
-    static abstract TSelf Max(TSelf a, TSelf b);
-
     /// <summary>The smaller lane, as the hardware's min instruction gives it (NaN and −0 are not treated specially).</summary>
     static abstract TSelf Min(TSelf a, TSelf b);
 
@@ -56,9 +53,6 @@ internal interface ILanes<TSelf>
     /// <paramref name="smallest"/>: one instruction with AVX-512 (<c>vrangeps</c>), else an absolute and a min.
     /// </summary>
     static abstract TSelf MinAbs(TSelf smallest, TSelf x);
-
-    /// <summary>Mask of lanes where <c>a ≥ b</c>.</summary>
-    static abstract TSelf GreaterThanOrEqual(TSelf a, TSelf b);
 
     /// <summary>Mask of lanes where <c>a ≤ b</c>.</summary>
     static abstract TSelf LessThanOrEqual(TSelf a, TSelf b);

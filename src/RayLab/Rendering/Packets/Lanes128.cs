@@ -50,17 +50,11 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
     public static Lanes128 Abs(Lanes128 x) => new(Vector128.Abs(x.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes128 Max(Lanes128 a, Lanes128 b) => new(Vector128.MaxNative(a.V, b.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 MinAbs(Lanes128 smallest, Lanes128 x) =>
         new(Avx512DQ.VL.IsSupported ? Avx512DQ.VL.Range(smallest.V, x.V, 0b1010) : Vector128.MinNative(smallest.V, Vector128.Abs(x.V)));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Min(Lanes128 a, Lanes128 b) => new(Vector128.MinNative(a.V, b.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes128 GreaterThanOrEqual(Lanes128 a, Lanes128 b) => new(Vector128.GreaterThanOrEqual(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 LessThanOrEqual(Lanes128 a, Lanes128 b) => new(Vector128.LessThanOrEqual(a.V, b.V));

@@ -50,17 +50,11 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
     public static Lanes256 Abs(Lanes256 x) => new(Vector256.Abs(x.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes256 Max(Lanes256 a, Lanes256 b) => new(Vector256.MaxNative(a.V, b.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 MinAbs(Lanes256 smallest, Lanes256 x) =>
         new(Avx512DQ.VL.IsSupported ? Avx512DQ.VL.Range(smallest.V, x.V, 0b1010) : Vector256.MinNative(smallest.V, Vector256.Abs(x.V)));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 Min(Lanes256 a, Lanes256 b) => new(Vector256.MinNative(a.V, b.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes256 GreaterThanOrEqual(Lanes256 a, Lanes256 b) => new(Vector256.GreaterThanOrEqual(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 LessThanOrEqual(Lanes256 a, Lanes256 b) => new(Vector256.LessThanOrEqual(a.V, b.V));

@@ -50,17 +50,11 @@ internal readonly record struct Lanes512(Vector512<float> V) : ILanes<Lanes512>
     public static Lanes512 Abs(Lanes512 x) => new(Vector512.Abs(x.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes512 Max(Lanes512 a, Lanes512 b) => new(Vector512.MaxNative(a.V, b.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 MinAbs(Lanes512 smallest, Lanes512 x) =>
         new(Avx512DQ.IsSupported ? Avx512DQ.Range(smallest.V, x.V, 0b1010) : Vector512.MinNative(smallest.V, Vector512.Abs(x.V)));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 Min(Lanes512 a, Lanes512 b) => new(Vector512.MinNative(a.V, b.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes512 GreaterThanOrEqual(Lanes512 a, Lanes512 b) => new(Vector512.GreaterThanOrEqual(a.V, b.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 LessThanOrEqual(Lanes512 a, Lanes512 b) => new(Vector512.LessThanOrEqual(a.V, b.V));

@@ -110,7 +110,7 @@ internal static class PacketKernel
         // α = (x + sx)/W and β = 1 − (row + sy)/H (as in ImagePlane) are each one multiply-add per sample:
         // α = sx/W + x/W and β = (1 − row/H) − sy/H, the second terms fixed for the packet.
         TL left = (TL.Broadcast(x0) + TL.Indices) * invWidth;
-        TL top = TL.Broadcast((float)(1 - ((double)row / frame.Height)));
+        TL rowTop = TL.Broadcast((float)(1 - ((double)row / frame.Height)));
         (TL backgroundRed, TL backgroundGreen, TL backgroundBlue) = (TL.Broadcast(background.X), TL.Broadcast(background.Y), TL.Broadcast(background.Z));
         TL accumulatedRed = default, accumulatedGreen = default, accumulatedBlue = default;
         uint retraced = 0;
@@ -118,7 +118,7 @@ internal static class PacketKernel
         {
             sampler.Sample(index, out TL sx, out TL sy);
             TL alpha = TL.MultiplyAdd(sx, invWidth, left);
-            TL beta = TL.NegatedMultiplyAdd(sy, invHeight, top);
+            TL beta = TL.NegatedMultiplyAdd(sy, invHeight, rowTop);
             TL dx, dy, dz, ox, oy, oz;
             if (TP.IsOrthographic)
             {
