@@ -1,6 +1,4 @@
 using System.Buffers.Binary;
-using System.Diagnostics;
-using System.Text;
 using System.Text.Json;
 using RayLab.Cli;
 using RayLab.Imaging;
@@ -427,41 +425,8 @@ public sealed class ConsoleTests : IDisposable
 
     private async Task<Result> RunChildAsync(params string[] args)
     {
-        string app = Path.Combine(AppContext.BaseDirectory, "raylab.dll");
-        Assert.True(File.Exists(app), $"{app} is missing");
-        var start = new ProcessStartInfo(DotnetHost())
-        {
-            WorkingDirectory = _dir,
-            UseShellExecute = false,
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            StandardOutputEncoding = Encoding.UTF8,
-            StandardErrorEncoding = Encoding.UTF8,
-        };
-        start.ArgumentList.Add(app);
-        foreach (string arg in args)
-        {
-            start.ArgumentList.Add(arg);
-        }
-
-        CancellationToken cancel = TestContext.Current.CancellationToken;
-        using Process process = Process.Start(start) ?? throw new InvalidOperationException("could not start dotnet");
-        Task<string> stdout = process.StandardOutput.ReadToEndAsync(cancel);
-        Task<string> stderr = process.StandardError.ReadToEndAsync(cancel);
-        await process.WaitForExitAsync(cancel);
-        return new Result(process.ExitCode, await stdout, await stderr);
-    }
-
-    /// <summary>The dotnet host running these tests (so the child uses the same runtime), else dotnet on the PATH.</summary>
-    private static string DotnetHost()
-    {
-        if (Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") is { Length: > 0 } host && File.Exists(host))
-        {
-            return host;
-        }
-
-        string? current = Environment.ProcessPath;
-        return current is not null && Path.GetFileNameWithoutExtension(current) == "dotnet" ? current : "dotnet";
+        (int code, string stdout, string stderr) = await ConsoleRunner.RunChildAsync(_dir, args);
+        return new Result(code, stdout, stderr);
     }
 
     /// <summary>Reads a 24-bit BMP: BITMAPINFOHEADER, bottom-up rows, BGR, rows padded to 4 bytes.</summary>

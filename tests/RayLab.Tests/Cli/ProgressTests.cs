@@ -1,5 +1,3 @@
-using System.Diagnostics;
-using System.Text;
 using System.Text.RegularExpressions;
 using RayLab.Cli;
 using RayLab.Imaging;
@@ -48,30 +46,11 @@ public sealed partial class ProgressTests : IDisposable
     public async Task TheAppWithRedirectedOutputPrintsNoEscapeCodes()
     {
         // A child process whose stdout is a pipe: Console.Out is the real standard output here, and it is redirected.
-        string app = Path.Combine(AppContext.BaseDirectory, "raylab.dll");
-        var start = new ProcessStartInfo(DotnetHost())
-        {
-            WorkingDirectory = _dir,
-            UseShellExecute = false,
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            StandardOutputEncoding = Encoding.UTF8,
-            StandardErrorEncoding = Encoding.UTF8,
-        };
-        foreach (string arg in new[] { app, "render", Scene, "-o", "b.png", "--width", "320", "--height", "240", "--sampler", "jittered", "--samples", "16" })
-        {
-            start.ArgumentList.Add(arg);
-        }
+        (int code, string output, string error) = await ConsoleRunner.RunChildAsync(
+            _dir, "render", Scene, "-o", "b.png", "--width", "320", "--height", "240", "--sampler", "jittered", "--samples", "16");
 
-        CancellationToken cancel = TestContext.Current.CancellationToken;
-        using Process process = Process.Start(start) ?? throw new InvalidOperationException("could not start dotnet");
-        Task<string> stdout = process.StandardOutput.ReadToEndAsync(cancel);
-        Task<string> stderr = process.StandardError.ReadToEndAsync(cancel);
-        await process.WaitForExitAsync(cancel);
-
-        Assert.Equal(0, process.ExitCode);
-        Assert.Equal("", await stderr);
-        string output = await stdout;
+        Assert.Equal(0, code);
+        Assert.Equal("", error);
         Assert.DoesNotContain(Escape, output);
         Assert.Matches(RaysPerSecond(), Assert.Single(output.ReplaceLineEndings("\n").TrimEnd('\n').Split('\n')));
     }
@@ -148,17 +127,5 @@ public sealed partial class ProgressTests : IDisposable
         PreparedScene scene = (SceneFile.Load(Scene) with { Width = width, Height = height }).Prepare();
         var image = new Image(width, height);
         scene.Render(new Renderer { Progress = progress }, image);
-    }
-
-    /// <summary>The dotnet host running these tests (so the child uses the same runtime), else dotnet on the PATH.</summary>
-    private static string DotnetHost()
-    {
-        if (Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") is { Length: > 0 } host && File.Exists(host))
-        {
-            return host;
-        }
-
-        string? current = Environment.ProcessPath;
-        return current is not null && Path.GetFileNameWithoutExtension(current) == "dotnet" ? current : "dotnet";
     }
 }
