@@ -2,7 +2,7 @@ using BenchmarkDotNet.Attributes;
 using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Imaging;
-using RayLab.Rendering.Packets;
+using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
 
 namespace RayLab.Benchmarks;

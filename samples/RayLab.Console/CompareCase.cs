@@ -2,6 +2,7 @@ using RayLab.Cameras;
 using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Sampling;
+using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Cli;
 
@@ -21,6 +22,9 @@ public sealed record CompareCase(string Series, string Setting, int? Budget, IPi
         ? $"{p.Name}-{p.SamplesPerPixel}"
         : FormattableString.Invariant($"adaptive-c{Adaptive!.Contrast:G6}-d{Adaptive.MaxDepth}");
 
+    /// <summary>The render method of this case.</summary>
+    public RenderMethod Method { get; } = Point is not null ? RenderMethod.Sampled(Point) : RenderMethod.Adaptive(Adaptive!);
+
     /// <summary>Renders the setting into <paramref name="image"/>.</summary>
     /// <param name="renderer">The renderer.</param>
     /// <param name="scene">The scene.</param>
@@ -30,8 +34,6 @@ public sealed record CompareCase(string Series, string Setting, int? Budget, IPi
     public RenderStatistics Render(Renderer renderer, Scene scene, Camera camera, Image image)
     {
         ArgumentNullException.ThrowIfNull(renderer);
-        return Point is not null
-            ? renderer.Render(scene, camera, Point, image)
-            : renderer.Render(scene, camera, Adaptive!, image);
+        return renderer.Render(scene, camera, Method, image);
     }
 }

@@ -3,6 +3,8 @@ using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Scenes;
+using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Exact;
 
 namespace RayLab.Cli;
 

@@ -4,6 +4,7 @@ using System.Globalization;
 using RayLab.Imaging;
 using RayLab.Sampling;
 using RayLab.Scenes;
+using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Cli;
 

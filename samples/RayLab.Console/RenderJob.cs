@@ -267,6 +267,7 @@ public static class RenderJob
 
     private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double encodeMs, double warmupMs)
     {
+        SamplerSettings sampler = prepared.Description.Sampler;
         var json = new
         {
             scene = request.ScenePath,
@@ -276,11 +277,11 @@ public static class RenderJob
             camera = prepared.Camera.Name,
             sampler = prepared.SamplerName,
             samplesPerPixel = prepared.SamplesPerPixel,
-            seed = prepared.Sampler?.Seed ?? 0,
-            minDepth = prepared.Adaptive?.MinDepth,
-            maxDepth = prepared.Adaptive?.MaxDepth,
-            contrast = prepared.Adaptive?.Contrast,
-            quincunx = prepared.Adaptive?.Quincunx,
+            seed = sampler.IsAdaptive || sampler.IsExact ? 0 : sampler.Seed,
+            minDepth = sampler.IsAdaptive ? sampler.MinDepth : (int?)null,
+            maxDepth = sampler.IsAdaptive ? sampler.MaxDepth : (int?)null,
+            contrast = sampler.IsAdaptive ? sampler.Contrast : (double?)null,
+            quincunx = sampler.IsAdaptive ? sampler.Quincunx : (bool?)null,
             raysPerPixel = stats.PrimaryRays / ((double)prepared.Description.Width * prepared.Description.Height),
             threads = request.Threads ?? Environment.ProcessorCount,
             rays = stats.PrimaryRays,

@@ -1,4 +1,7 @@
+using RayLab.Rendering;
+using RayLab.Rendering.Adaptive;
 using RayLab.Sampling;
+using RayLab.Rendering.Exact;
 
 namespace RayLab.Scenes;
 
@@ -14,7 +17,7 @@ public sealed record SamplerSettings(string Type, int Samples, uint Seed, int Mi
 {
     /// <summary>
     /// Every sampler name a scene file or the console accepts: the point samplers, <c>adaptive</c>, and <c>exact</c>
-    /// (the exact reference, <see cref="Rendering.ExactRenderer"/>, which integrates instead of sampling).
+    /// (the exact reference, <see cref="Rendering.Exact.ExactRenderer"/>, which integrates instead of sampling).
     /// </summary>
     public static IReadOnlyList<string> Types { get; } = [.. Samplers.Names, "adaptive", "exact"];
 
@@ -24,7 +27,7 @@ public sealed record SamplerSettings(string Type, int Samples, uint Seed, int Mi
     /// <summary>True for the lab's adaptive sampler.</summary>
     public bool IsAdaptive => Type == "adaptive";
 
-    /// <summary>True for the exact reference (<see cref="Rendering.ExactRenderer"/>): no samples, no seed.</summary>
+    /// <summary>True for the exact reference (<see cref="Rendering.Exact.ExactRenderer"/>): no samples, no seed.</summary>
     public bool IsExact => Type == "exact";
 
     /// <summary>Creates the point sampler.</summary>
@@ -34,4 +37,13 @@ public sealed record SamplerSettings(string Type, int Samples, uint Seed, int Mi
     /// <summary>Creates the adaptive sampler.</summary>
     /// <exception cref="ArgumentOutOfRangeException">A depth or the contrast is out of range.</exception>
     public AdaptiveSampler CreateAdaptive() => new(MinDepth, MaxDepth, Contrast, Quincunx);
+
+    /// <summary>The render method these settings name: the one mapping from a sampler type to a renderer.</summary>
+    /// <exception cref="ArgumentException">Unknown type, unusable sample count, or a depth or contrast out of range.</exception>
+    public RenderMethod CreateMethod() => Type switch
+    {
+        "exact" => RenderMethod.Exact,
+        "adaptive" => RenderMethod.Adaptive(CreateAdaptive()),
+        _ => RenderMethod.Sampled(CreateSampler()),
+    };
 }

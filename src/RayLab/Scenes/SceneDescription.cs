@@ -1,6 +1,7 @@
 using RayLab.Cameras;
 using RayLab.Imaging;
 using RayLab.Rendering;
+using RayLab.Rendering.Exact;
 using RayLab.Sampling;
 
 namespace RayLab.Scenes;
@@ -39,17 +40,13 @@ public sealed record SceneDescription(
             if (Sampler.IsExact)
             {
                 ExactRenderer.Check(Scene, camera, Width, Height);
-                return new PreparedScene(this, camera, null, null);
             }
-
-            if (!Sampler.IsAdaptive)
+            else if (!Sampler.IsAdaptive)
             {
                 CheckAtMost(Sampler.Samples, SceneFile.MaxSamples, "samples");
             }
 
-            return Sampler.IsAdaptive
-                ? new PreparedScene(this, camera, null, Sampler.CreateAdaptive())
-                : new PreparedScene(this, camera, Sampler.CreateSampler(), null);
+            return new PreparedScene(this, camera, Sampler.CreateMethod());
         }
         catch (UnsupportedSceneException e)
         {
@@ -101,48 +98,33 @@ public sealed record SceneDescription(
     }
 }
 
-/// <summary>A scene description with its camera and sampler built and checked, ready to render.</summary>
+/// <summary>A scene description with its camera and render method built and checked, ready to render.</summary>
 /// <param name="Description">The settings it was built from.</param>
 /// <param name="Camera">The camera.</param>
-/// <param name="Sampler">The point sampler, or null when the sampler is adaptive or exact.</param>
-/// <param name="Adaptive">The adaptive settings, or null for a point sampler or the exact reference.</param>
-public sealed record PreparedScene(SceneDescription Description, Camera Camera, IPixelSampler? Sampler, AdaptiveSampler? Adaptive)
+/// <param name="Method">How each pixel's value is found: point sampling, adaptive or exact (<see cref="SamplerSettings.CreateMethod"/>).</param>
+public sealed record PreparedScene(SceneDescription Description, Camera Camera, RenderMethod Method)
 {
-    /// <summary>True for the exact reference (<see cref="ExactRenderer"/>): neither a point nor an adaptive sampler.</summary>
-    public bool IsExact => Sampler is null && Adaptive is null;
+    /// <summary>True for the exact reference (<see cref="RenderMethod.Exact"/>).</summary>
+    public bool IsExact => Method == RenderMethod.Exact;
 
     /// <summary>The sampler's name (<c>jittered</c>, <c>adaptive</c>, <c>exact</c>, …).</summary>
-    public string SamplerName => Sampler?.Name ?? Adaptive?.Name ?? "exact";
+    public string SamplerName => Method.Name;
 
     /// <summary>Samples per pixel of a point sampler; 0 for the adaptive one, whose count varies per pixel, and for the exact reference.</summary>
-    public int SamplesPerPixel => Sampler?.SamplesPerPixel ?? 0;
+    public int SamplesPerPixel => Method.SamplesPerPixel;
 
     /// <summary>Describes the sampler, e.g. <c>jittered 16 spp</c> or <c>adaptive (depth 0–3, contrast 0.1)</c>.</summary>
-    public string SamplerDescription => Sampler is { } s ? $"{s.Name} {s.SamplesPerPixel} spp" : Adaptive?.ToString() ?? "exact (area-weighted)";
+    public string SamplerDescription => Method.ToString() ?? Method.Name;
 
-    /// <summary>Renders into <paramref name="image"/> with whichever sampler this scene has.</summary>
-    /// <param name="renderer">The renderer (thread count and progress; the exact reference uses the same).</param>
+    /// <summary>Renders into <paramref name="image"/> by this scene's method.</summary>
+    /// <param name="renderer">The renderer (threads, kernel, progress, cancellation).</param>
     /// <param name="image">An image of the described size.</param>
     /// <param name="raysPerPixel">Optional W·H array that receives the rays charged to each pixel.</param>
     /// <returns>Rays traced and render time.</returns>
     public RenderStatistics Render(Renderer renderer, Image image, float[]? raysPerPixel = null)
     {
         ArgumentNullException.ThrowIfNull(renderer);
-        if (IsExact)
-        {
-            var exact = new ExactRenderer { MaxDegreeOfParallelism = renderer.MaxDegreeOfParallelism, Progress = renderer.Progress };
-            raysPerPixel?.AsSpan().Clear();
-            return exact.Render(Scene, Camera, image);
-        }
-
-        if (Adaptive is not null)
-        {
-            return renderer.Render(Scene, Camera, Adaptive, image, raysPerPixel);
-        }
-
-        RenderStatistics stats = renderer.Render(Scene, Camera, Sampler!, image);
-        raysPerPixel?.AsSpan().Fill(Sampler!.SamplesPerPixel);
-        return stats;
+        return renderer.Render(Scene, Camera, Method, image, raysPerPixel);
     }
 
     /// <summary>The scene.</summary>

@@ -1,6 +1,7 @@
 using System.Text.Json;
 using RayLab.Cameras;
 using RayLab.Geometry;
+using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Scenes;
 
@@ -176,7 +177,7 @@ public static class SceneFile
                 }
             }
 
-            int maxDepth = Optional(sampler, "maxDepth") is { } max ? Int(max, "sampler.maxDepth", 0, Sampling.AdaptiveSampler.MaxSupportedDepth) : 3;
+            int maxDepth = Optional(sampler, "maxDepth") is { } max ? Int(max, "sampler.maxDepth", 0, Rendering.Adaptive.AdaptiveSampler.MaxSupportedDepth) : 3;
             int minDepth = Optional(sampler, "minDepth") is { } min ? Int(min, "sampler.minDepth", 0, maxDepth) : 0;
             double contrast = Optional(sampler, "contrast") is { } c ? Number(c, "sampler.contrast") : 0.1;
             if (contrast < 0)

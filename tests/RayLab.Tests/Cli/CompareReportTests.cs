@@ -2,6 +2,7 @@ using RayLab.Cli;
 using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Sampling;
+using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Tests.Cli;
 

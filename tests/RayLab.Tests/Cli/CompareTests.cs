@@ -7,6 +7,7 @@ using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Tests.Imaging;
+using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Cli;
 

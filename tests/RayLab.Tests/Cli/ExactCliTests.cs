@@ -4,6 +4,7 @@ using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Scenes;
 using RayLab.Tests.Imaging;
+using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Cli;
 

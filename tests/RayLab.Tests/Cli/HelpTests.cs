@@ -2,6 +2,7 @@ using System.Globalization;
 using RayLab.Cli;
 using RayLab.Sampling;
 using RayLab.Scenes;
+using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Tests.Cli;
 

@@ -9,6 +9,7 @@ using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Scenes;
+using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Examples;
 

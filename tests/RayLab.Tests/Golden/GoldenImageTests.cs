@@ -4,6 +4,8 @@ using RayLab.Geometry;
 using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Sampling;
+using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Golden;
 

@@ -4,6 +4,7 @@ using FsCheck.Fluent;
 using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Sampling;
+using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Tests.Properties;
 

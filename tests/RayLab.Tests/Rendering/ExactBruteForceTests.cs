@@ -2,6 +2,7 @@ using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Rendering;
 using RayLab.Sampling;
+using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering;
 

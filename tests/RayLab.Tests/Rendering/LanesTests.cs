@@ -1,4 +1,4 @@
-using RayLab.Rendering.Packets;
+using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
 
 namespace RayLab.Tests.Rendering;

@@ -3,6 +3,7 @@ using RayLab.Geometry;
 using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Sampling;
+using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Tests.Rendering;
 

@@ -1,4 +1,5 @@
 using RayLab.Rendering;
+using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering;
 

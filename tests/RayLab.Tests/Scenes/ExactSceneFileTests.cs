@@ -1,6 +1,7 @@
 using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Scenes;
+using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Scenes;
 

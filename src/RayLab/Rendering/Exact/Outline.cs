@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 
-namespace RayLab.Rendering;
+namespace RayLab.Rendering.Exact;
 
 /// <summary>
 /// One border of the exact reference (<see cref="ExactRenderer"/>): an ellipse in pixel coordinates — X to the

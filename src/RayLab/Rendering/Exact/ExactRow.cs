@@ -2,7 +2,7 @@ using System.Runtime.CompilerServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
 
-namespace RayLab.Rendering;
+namespace RayLab.Rendering.Exact;
 
 /// <summary>
 /// The exact reference's work for one pixel row (one per thread, reused row after row): the row's exact

@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Rendering;
+namespace RayLab.Rendering.Adaptive;
 
 /// <summary>Gives the value at a point of the adaptive lattice; the lattice has 2^(MaxDepth+1) steps per pixel.</summary>
 internal interface ILatticeSource

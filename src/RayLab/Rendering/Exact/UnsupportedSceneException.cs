@@ -1,4 +1,4 @@
-namespace RayLab.Rendering;
+namespace RayLab.Rendering.Exact;
 
 /// <summary>
 /// The exact reference (<see cref="ExactRenderer"/>) cannot draw this scene exactly, and says which sphere and

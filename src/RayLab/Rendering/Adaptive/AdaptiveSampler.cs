@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace RayLab.Sampling;
+namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
 /// The lab's adaptive antialiasing (section 4, after mental ray): trace the four corners of a pixel, and where

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace RayLab.Rendering;
+namespace RayLab.Rendering.Exact;
 
 /// <summary>
 /// The real roots θ of a trigonometric polynomial of degree ≤ 2,

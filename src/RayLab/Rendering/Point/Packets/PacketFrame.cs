@@ -1,7 +1,7 @@
 using RayLab.Cameras;
 using RayLab.Geometry;
 
-namespace RayLab.Rendering.Packets;
+namespace RayLab.Rendering.Point.Packets;
 
 /// <summary>
 /// One frame's constants for the packet kernel, in float: the window vectors a, b, c, and per sphere its

@@ -6,7 +6,7 @@ using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Imaging;
 
-namespace RayLab.Rendering.Packets;
+namespace RayLab.Rendering.Point.Packets;
 
 /// <summary>
 /// The packet tracer: the renderer's loop with one SIMD lane per pixel (16 pixels per packet with AVX-512,

@@ -3,7 +3,7 @@ using System.Runtime.CompilerServices;
 using RayLab.Cameras;
 using RayLab.Imaging;
 
-namespace RayLab.Rendering;
+namespace RayLab.Rendering.Exact;
 
 /// <summary>
 /// The exact reference: each pixel gets the exact area-weighted mean of the scene over its whole square — the
@@ -52,6 +52,11 @@ public sealed class ExactRenderer
     /// <summary>Optional: counts finished rows while a render runs, for a progress bar polled from another thread.</summary>
     public RenderProgress? Progress { get; init; }
 
+    /// <summary>Cancels a render: checked before each row; a cancelled render throws <see cref="OperationCanceledException"/>.</summary>
+    public CancellationToken CancellationToken { get; init; }
+
+    private RenderOptions Options => new(MaxDegreeOfParallelism, RenderKernel.Scalar, Progress, CancellationToken);
+
     /// <summary>
     /// Fills the 8-bit image with the exact pixel values, each converted by the lab's rule
     /// (<see cref="Rgb24.FromIntensity"/>). The bytes do not depend on the thread count.
@@ -64,8 +69,15 @@ public sealed class ExactRenderer
     /// <exception cref="ArgumentException">The camera's settings do not form a valid view.</exception>
     public RenderStatistics Render(Scene scene, Camera camera, Image image)
     {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(camera);
         ArgumentNullException.ThrowIfNull(image);
-        return Run(scene, camera, image.Width, image.Height, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (row, worker) =>
+        return RenderPlane(scene, camera.GetImagePlane(image.Width, image.Height), image, Options);
+    }
+
+    /// <summary>The exact render into an 8-bit image, for <see cref="RenderMethod.Exact"/>.</summary>
+    internal static RenderStatistics RenderPlane(Scene scene, ImagePlane plane, Image image, RenderOptions options) =>
+        Run(scene, plane, options, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (row, worker) =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
             if (worker.IsUniform)
@@ -80,7 +92,6 @@ public sealed class ExactRenderer
                 pixels[x] = Rgb24.FromIntensity(new Intensity(values[3 * x], values[(3 * x) + 1], values[(3 * x) + 2]));
             }
         });
-    }
 
     /// <summary>
     /// The exact linear pixel values (before the 8-bit rule), row 0 (the top) first, W·H entries: for measuring
@@ -97,8 +108,10 @@ public sealed class ExactRenderer
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
         ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(camera);
         var result = new Intensity[(long)width * height];
-        Run(scene, camera, width, height, (row, worker) =>
+        Run(scene, camera.GetImagePlane(width, height), Options, (row, worker) =>
         {
             Span<Intensity> pixels = result.AsSpan(row * width, width);
             if (worker.IsUniform)
@@ -133,20 +146,16 @@ public sealed class ExactRenderer
         OutlineSet.Build(scene, camera.GetImagePlane(width, height));
     }
 
-    private RenderStatistics Run(Scene scene, Camera camera, int width, int height, Action<int, ExactRow> writeRow)
+    private static RenderStatistics Run(Scene scene, ImagePlane plane, RenderOptions options, Action<int, ExactRow> writeRow)
     {
-        ArgumentNullException.ThrowIfNull(scene);
-        ArgumentNullException.ThrowIfNull(camera);
-        ImagePlane plane = camera.GetImagePlane(width, height);
-        var options = new ParallelOptions { MaxDegreeOfParallelism = MaxDegreeOfParallelism };
         var clock = Stopwatch.StartNew();
         OutlineSet outlines = OutlineSet.Build(scene, plane);
-        Progress?.Start(height);
-        Parallel.For(0, height, options, () => new ExactRow(scene, plane, outlines), (row, _, worker) =>
+        options.Progress?.Start(plane.Height);
+        Parallel.For(0, plane.Height, options.Parallel, () => new ExactRow(scene, plane, outlines), (row, _, worker) =>
         {
             worker.Integrate(row);
             writeRow(row, worker);
-            Progress?.CompleteRow();
+            options.Progress?.CompleteRow();
             return worker;
         }, static _ => { });
         clock.Stop();

@@ -1,7 +1,7 @@
 using RayLab.Cameras;
 using RayLab.Geometry;
 
-namespace RayLab.Rendering;
+namespace RayLab.Rendering.Exact;
 
 /// <summary>
 /// The camera as a projective map from the camera's frame to pixel coordinates (X = α W to the right,

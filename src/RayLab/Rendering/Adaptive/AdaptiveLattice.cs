@@ -2,7 +2,7 @@ using System.Collections.Concurrent;
 using RayLab.Cameras;
 using RayLab.Geometry;
 
-namespace RayLab.Rendering;
+namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
 /// The points an adaptive render traces, each once: the (W+1)×(H+1) pixel corners, traced up front; points on

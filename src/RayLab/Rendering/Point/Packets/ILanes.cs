@@ -1,4 +1,4 @@
-namespace RayLab.Rendering.Packets;
+namespace RayLab.Rendering.Point.Packets;
 
 /// <summary>
 /// A SIMD register of float lanes, one lane per pixel of a packet: the operations the packet kernel needs,

@@ -2,7 +2,7 @@ using System.Globalization;
 using RayLab.Cameras;
 using RayLab.Geometry;
 
-namespace RayLab.Rendering;
+namespace RayLab.Rendering.Exact;
 
 /// <summary>
 /// Every border of a scene's picture that the exact reference must follow, as <see cref="Outline"/>s, and the

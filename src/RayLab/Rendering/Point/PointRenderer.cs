@@ -1,0 +1,129 @@
+using System.Diagnostics;
+using RayLab.Cameras;
+using RayLab.Geometry;
+using RayLab.Imaging;
+using RayLab.Rendering.Point.Packets;
+using RayLab.Sampling;
+
+namespace RayLab.Rendering.Point;
+
+/// <summary>
+/// The point-sampling renderer (lab section 4): a <see cref="Parallel.For(int, int, ParallelOptions, Action{int})"/>
+/// over rows (the lab's render loop), each pixel the mean of its samples, each row written straight into the
+/// image's row span. The SIMD packet kernel (<see cref="PacketKernel"/>) renders where the hardware and the
+/// frame allow it, the scalar double loop (<see cref="RenderPixel"/>) everywhere else; every sample is
+/// independent of the thread that takes it, so the bytes are the same whatever the thread count.
+/// </summary>
+internal static class PointRenderer
+{
+    /// <summary>Renders the scene with <paramref name="sampler"/> into <paramref name="image"/>.</summary>
+    public static RenderStatistics Render(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
+    {
+        long rays = (long)image.Width * image.Height * sampler.SamplesPerPixel;
+        RenderKernel kernel = ChooseKernel(options.Kernel, scene, plane, out PacketFrame? frame, out string? reason);
+        options.Progress?.Start(image.Height);
+        var clock = Stopwatch.StartNew();
+        long retraced = kernel switch
+        {
+            RenderKernel.Vector512 => RenderPackets<Lanes512>(frame!, sampler, image, options),
+            RenderKernel.Vector256 => RenderPackets<Lanes256>(frame!, sampler, image, options),
+            RenderKernel.Vector128 => RenderPackets<Lanes128>(frame!, sampler, image, options),
+            _ => RenderScalar(scene, plane, sampler, image, options),
+        };
+        clock.Stop();
+        return new RenderStatistics(rays, clock.Elapsed) { Kernel = kernel, RetracedSamples = retraced, ScalarReason = reason };
+    }
+
+    private static RenderKernel ChooseKernel(RenderKernel requested, Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
+    {
+        frame = null;
+        reason = null;
+        if (requested == RenderKernel.Scalar)
+        {
+            return RenderKernel.Scalar;
+        }
+
+        if (!PacketFrame.TryCreate(scene, plane, out frame, out reason))
+        {
+            return RenderKernel.Scalar;
+        }
+
+        return requested switch
+        {
+            RenderKernel.Auto when Lanes512.IsHardwareAccelerated => RenderKernel.Vector512,
+            RenderKernel.Auto when Lanes256.IsHardwareAccelerated => RenderKernel.Vector256,
+            RenderKernel.Auto when Lanes128.IsHardwareAccelerated => RenderKernel.Vector128,
+            RenderKernel.Auto => RenderKernel.Scalar,
+            _ => requested,
+        };
+    }
+
+    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
+    {
+        Parallel.For(0, image.Height, options.Parallel, row =>
+        {
+            Span<Rgb24> pixels = image.GetRowSpan(row);
+            for (int x = 0; x < pixels.Length; x++)
+            {
+                pixels[x] = Rgb24.FromIntensity(RenderPixel(scene, plane, sampler, x, row));
+            }
+
+            options.Progress?.CompleteRow();
+        });
+        return 0;
+    }
+
+    private static long RenderPackets<TL>(PacketFrame frame, IPixelSampler sampler, Image image, RenderOptions options)
+        where TL : struct, ILanes<TL> => sampler switch
+        {
+            JitteredSampler jittered => RenderPackets<TL, JitteredLanes<TL>>(frame, () => new(jittered), sampler.SamplesPerPixel, image, options),
+            RandomSampler random => RenderPackets<TL, RandomLanes<TL>>(frame, () => new(random), sampler.SamplesPerPixel, image, options),
+            RegularSampler regular => RenderPackets<TL, RegularLanes<TL>>(frame, () => new(regular), sampler.SamplesPerPixel, image, options),
+            _ => RenderPackets<TL, BufferedLanes<TL>>(frame, () => new(sampler), sampler.SamplesPerPixel, image, options),
+        };
+
+    private static long RenderPackets<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RenderOptions options)
+        where TL : struct, ILanes<TL>
+        where TS : struct, ILaneSampler<TL> => frame.IsOrthographic
+            ? RenderPackets<TL, TS, OrthographicRays>(frame, newSampler, samplesPerPixel, image, options)
+            : RenderPackets<TL, TS, PerspectiveRays>(frame, newSampler, samplesPerPixel, image, options);
+
+    private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RenderOptions options)
+        where TL : struct, ILanes<TL>
+        where TS : struct, ILaneSampler<TL>
+        where TP : struct, IProjection
+    {
+        long retraced = 0;
+        // Each thread gets its own lane sampler (the buffered one owns arrays); rows are independent.
+        Parallel.For(0, image.Height, options.Parallel, newSampler, (row, _, sampler) =>
+        {
+            int count = PacketKernel.RenderRow<TL, TS, TP>(frame, ref sampler, samplesPerPixel, row, image.GetRowSpan(row));
+            if (count != 0)
+            {
+                Interlocked.Add(ref retraced, count);
+            }
+
+            options.Progress?.CompleteRow();
+            return sampler;
+        }, _ => { });
+        return retraced;
+    }
+
+    /// <summary>The mean of a pixel's samples, in linear intensity (before the 8-bit rule): the scalar double loop.</summary>
+    public static Intensity RenderPixel(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row)
+    {
+        int n = sampler.SamplesPerPixel;
+        double r = 0, g = 0, b = 0;
+        for (int i = 0; i < n; i++)
+        {
+            SamplePoint s = sampler.GetSample(x, row, i);
+            Ray ray = plane.GetPixelRay(x, row, s.X, s.Y);
+            Intensity value = scene.Trace(ray, plane.TMin, plane.TMax);
+            r += value.R;
+            g += value.G;
+            b += value.B;
+        }
+
+        return new Intensity(r / n, g / n, b / n);
+    }
+}

@@ -1,0 +1,15 @@
+namespace RayLab.Rendering;
+
+/// <summary>
+/// What every renderer room shares: how many threads, which kernel, who watches the progress, and the token
+/// that cancels the render (checked before each row).
+/// </summary>
+/// <param name="MaxDegreeOfParallelism">The most threads, or −1 for as many as the runtime likes.</param>
+/// <param name="Kernel">Which loop renders point samples (the adaptive and exact renderers run their own).</param>
+/// <param name="Progress">Counts finished rows, or null.</param>
+/// <param name="CancellationToken">Cancels the render: it then throws <see cref="OperationCanceledException"/>.</param>
+internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, RenderKernel Kernel, RenderProgress? Progress, CancellationToken CancellationToken)
+{
+    /// <summary>The options for <see cref="Parallel.For(int, int, ParallelOptions, Action{int})"/>: threads and cancellation.</summary>
+    public ParallelOptions Parallel => new() { MaxDegreeOfParallelism = MaxDegreeOfParallelism, CancellationToken = CancellationToken };
+}
