@@ -5,7 +5,7 @@ namespace RayLab.Geometry;
 /// point itself (a normal, a secondary ray); the renderer only needs the visibility decision and does not pay
 /// for this.
 /// </summary>
-public static class AccurateHit
+internal static class AccurateHit
 {
     /// <summary>
     /// Makes the same hit/miss decision as <see cref="Sphere.TryIntersect"/> (it calls it), then recomputes the
