@@ -95,17 +95,7 @@ public static class RenderJob
             throw new UsageException($"--threads: must be at least 1, got {request.Threads}");
         }
 
-        SceneDescription description = ApplyOverrides(SceneFile.Load(request.ScenePath), request);
-        PreparedScene prepared;
-        try
-        {
-            prepared = description.Prepare();
-        }
-        catch (SceneFileException e) when (OptionFor(e.Field, request) is { } option)
-        {
-            throw new UsageException($"{option}: {e.Problem}");
-        }
-
+        PreparedScene prepared = request.Overrides.Prepare(SceneFile.Load(request.ScenePath));
         Image image = prepared.CreateImage();
         float[]? raysPerPixel = request.HeatmapPath is null ? null : new float[(long)image.Width * image.Height];
         var progress = new RenderProgress();
@@ -141,48 +131,6 @@ public static class RenderJob
             $"{request.OutputPath}: {image.Width}×{image.Height}, {prepared.Camera.Name} camera, {prepared.SamplerDescription}, "
             + $"{stats.PrimaryRays:N0} rays ({stats.PrimaryRays / ((double)image.Width * image.Height):F2}/px), render {stats.RenderTime.TotalMilliseconds:F1} ms ({stats.RaysPerSecond / 1e6:F1} Mrays/s), encode {encodeMs:F1} ms"));
     }
-
-    private static SceneDescription ApplyOverrides(SceneDescription d, RenderRequest r)
-    {
-        if (r.Camera is not null)
-        {
-            d = d with { Camera = d.Camera with { Type = r.Camera } };
-        }
-
-        SamplerSettings s = d.Sampler;
-        d = d with
-        {
-            Sampler = s with
-            {
-                Type = r.Sampler ?? s.Type,
-                Samples = r.Samples ?? s.Samples,
-                Seed = r.Seed ?? s.Seed,
-                MinDepth = r.MinDepth ?? s.MinDepth,
-                MaxDepth = r.MaxDepth ?? s.MaxDepth,
-                Contrast = r.Contrast ?? s.Contrast,
-                Quincunx = r.Quincunx || s.Quincunx,
-            },
-        };
-
-        return d with { Width = r.Width ?? d.Width, Height = r.Height ?? d.Height };
-    }
-
-    // A problem in a field that an option overrode is the option's problem.
-    private static string? OptionFor(string field, RenderRequest r) => field switch
-    {
-        "image.width" when r.Width is not null => "--width",
-        "image.height" when r.Height is not null => "--height",
-        "image" when r.Width is not null && r.Height is not null => "--width/--height",
-        "image" when r.Height is not null => "--height",
-        "image" when r.Width is not null => "--width",
-        "sampler.minDepth" when r.MinDepth is not null => "--min-depth",
-        "sampler.maxDepth" when r.MaxDepth is not null => "--max-depth",
-        "sampler.contrast" when r.Contrast is not null => "--contrast",
-        "camera.type" when r.Camera is not null => "--camera",
-        "sampler.type" when r.Sampler is not null => "--sampler",
-        "sampler.samples" when r.Samples is not null || r.Sampler is not null => "--samples",
-        _ => null,
-    };
 
     private static void CheckChoice(string? value, string option, string what, IReadOnlyList<string> allowed)
     {
