@@ -21,8 +21,9 @@ public static class CompareJob
     /// <param name="request">What to compare.</param>
     /// <param name="stdout">Where the table goes.</param>
     /// <param name="stderr">Where errors go.</param>
-    /// <returns>0 on success, 1 on bad input or a failed write.</returns>
-    public static int Run(CompareRequest request, TextWriter stdout, TextWriter stderr)
+    /// <param name="cancellation">Cancels the comparison: the report folder is left as it was and the result is <see cref="Program.CancelledExitCode"/>.</param>
+    /// <returns>0 on success, 1 on bad input or a failed write, 130 when cancelled.</returns>
+    public static int Run(CompareRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
         ArgumentNullException.ThrowIfNull(request);
         ArgumentNullException.ThrowIfNull(stdout);
@@ -39,9 +40,10 @@ public static class CompareJob
             Directory.CreateDirectory(Path.Combine(staging, "images"));
             Directory.CreateDirectory(Path.Combine(staging, "errors"));
 
-            (RenderStatistics exact, CompareResult[] results) = Measure(request, stdout, scene, cases, staging);
+            (RenderStatistics exact, CompareResult[] results) = Measure(request, stdout, scene, cases, staging, cancellation);
             var report = new CompareReport(Heading(request, scene, exact), Command(request), results, notes);
             report.WriteTo(staging);
+            cancellation.ThrowIfCancellationRequested(); // the last chance to leave the folder untouched
             Publish(staging, request.OutputFolder);
             done = true;
 
@@ -53,6 +55,11 @@ public static class CompareJob
         {
             stderr.WriteLine($"raylab: error: {e.Message}");
             return 1;
+        }
+        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
+        {
+            stderr.WriteLine($"raylab: cancelled; no report written to {SceneFileException.OneLine(request.OutputFolder)}");
+            return Program.CancelledExitCode;
         }
         catch (OutOfMemoryException)
         {
@@ -132,7 +139,7 @@ public static class CompareJob
     }
 
     private static (RenderStatistics Exact, CompareResult[] Results) Measure(
-        CompareRequest r, TextWriter stdout, PreparedScene scene, CompareCase[] cases, string staging)
+        CompareRequest r, TextWriter stdout, PreparedScene scene, CompareCase[] cases, string staging, CancellationToken cancellation)
     {
         int width = scene.Description.Width, height = scene.Description.Height;
         Image exact = scene.CreateImage();
@@ -141,7 +148,7 @@ public static class CompareJob
         CompareProgress.Run(stdout, 1 + (cases.Length * r.Repeats), progress =>
         {
             // The scene was prepared with the exact method: it renders the reference.
-            var renderer = new Renderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows };
+            var renderer = new Renderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows, CancellationToken = cancellation };
             exactStats = progress.Render("exact image", () => scene.Render(renderer, exact));
             exact.Save(Path.Combine(staging, "images", "exact.png"));
 

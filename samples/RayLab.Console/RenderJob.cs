@@ -20,15 +20,16 @@ public static class RenderJob
     /// </summary>
     /// <param name="stdout">Where the summary lines go.</param>
     /// <param name="stderr">Where errors go.</param>
+    /// <param name="cancellation">Cancels the renders (Ctrl+C).</param>
     /// <returns>The exit code.</returns>
-    public static int RunDefault(TextWriter stdout, TextWriter stderr)
+    public static int RunDefault(TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
         Directory.CreateDirectory("out");
         foreach (string camera in CameraSettings.Types.Reverse())
         {
             var request = new RenderRequest(DefaultScenePath, Path.Combine("out", $"two-spheres-{camera}.png"), Camera: camera,
                 HeatmapPath: Path.Combine("out", $"two-spheres-{camera}-heatmap.png"));
-            int code = Run(request, stdout, stderr);
+            int code = Run(request, stdout, stderr, cancellation);
             if (code != 0)
             {
                 return code;
@@ -42,13 +43,22 @@ public static class RenderJob
     /// <param name="request">What to render.</param>
     /// <param name="stdout">Where the summary goes.</param>
     /// <param name="stderr">Where errors go.</param>
-    /// <returns>0 on success, 1 on bad input or a failed render.</returns>
-    public static int Run(RenderRequest request, TextWriter stdout, TextWriter stderr)
+    /// <param name="cancellation">Cancels the render: no file is written and the result is <see cref="Program.CancelledExitCode"/>.</param>
+    /// <returns>0 on success, 1 on bad input or a failed render, 130 when cancelled.</returns>
+    public static int Run(RenderRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
+        ArgumentNullException.ThrowIfNull(request);
+        ArgumentNullException.ThrowIfNull(stdout);
+        ArgumentNullException.ThrowIfNull(stderr);
         try
         {
-            RunOrThrow(request, stdout);
+            RunOrThrow(request, stdout, cancellation);
             return 0;
+        }
+        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
+        {
+            stderr.WriteLine($"raylab: cancelled; {SceneFileException.OneLine(request.OutputPath)} not written");
+            return Program.CancelledExitCode;
         }
         catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException or NotSupportedException)
         {
@@ -62,7 +72,7 @@ public static class RenderJob
         }
     }
 
-    private static void RunOrThrow(RenderRequest request, TextWriter stdout)
+    private static void RunOrThrow(RenderRequest request, TextWriter stdout, CancellationToken cancellation)
     {
         if (string.IsNullOrWhiteSpace(request.ScenePath))
         {
@@ -99,7 +109,10 @@ public static class RenderJob
         Image image = prepared.CreateImage();
         float[]? raysPerPixel = request.HeatmapPath is null ? null : new float[(long)image.Width * image.Height];
         var progress = new RenderProgress();
-        var renderer = new Renderer { MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress };
+        var renderer = new Renderer
+        {
+            MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress, CancellationToken = cancellation,
+        };
         // A smaller render of the same scene first, so that renderMs is the render and not the JIT compiling it
         // (the native anchors are compiled ahead of time too); its time is reported as warmupMs. It is the same
         // picture scaled down, so it meets the same edges and compiles the paths the render takes there. The
@@ -113,6 +126,9 @@ public static class RenderJob
         {
             stats = prepared.Render(renderer, image, raysPerPixel);
         }
+
+        // A request that came as the last row finished still stops the job; once writing starts, it completes.
+        cancellation.ThrowIfCancellationRequested();
 
         var encodeClock = Stopwatch.StartNew();
         image.Save(request.OutputPath);
