@@ -54,6 +54,7 @@ public sealed class CancelTests : IDisposable
         // The scalar kernel at 4000×3000 and 64 samples: about a minute of CPU, stopped within a row.
         using Process child = ConsoleRunner.StartChild(_dir, "render", Scene, "-o", "big.png", "--width", "4000", "--height", "3000",
             "--sampler", "random", "--samples", "64", "--kernel", "scalar", "--threads", "2");
+        using var _ = EndOnFailure(child);
         Task<string> stdout = child.StandardOutput.ReadToEndAsync(TestContext.Current.CancellationToken);
         Task<string> stderr = child.StandardError.ReadToEndAsync(TestContext.Current.CancellationToken);
 
@@ -79,6 +80,7 @@ public sealed class CancelTests : IDisposable
         // After the exact image, random at 4096 samples per pixel on 1600×1200: minutes of work, stopped within a row.
         using Process child = ConsoleRunner.StartChild(_dir, "compare", Scene, "--out", "report", "--samplers", "random", "--budgets", "4096",
             "--repeats", "1", "--width", "1600", "--height", "1200", "--threads", "2");
+        using var _ = EndOnFailure(child);
         Task<string> stderr = child.StandardError.ReadToEndAsync(TestContext.Current.CancellationToken);
 
         // Redirected, compare prints a line per finished render: the first says the exact image is done.
@@ -107,9 +109,22 @@ public sealed class CancelTests : IDisposable
         }
         catch (OperationCanceledException)
         {
-            child.Kill(entireProcessTree: true);
             Assert.Fail("the child did not stop after SIGINT");
         }
+    }
+
+    // A failed assertion must not leave a child rendering for minutes.
+    private static Finally EndOnFailure(Process child) => new(() =>
+    {
+        if (!child.HasExited)
+        {
+            child.Kill(entireProcessTree: true);
+        }
+    });
+
+    private sealed class Finally(Action action) : IDisposable
+    {
+        public void Dispose() => action();
     }
 
     private static TimeSpan ProcessorTime(Process process)
