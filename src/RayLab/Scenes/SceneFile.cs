@@ -262,7 +262,7 @@ public static class SceneFile
         // An integer in [min, max]; without bounds, any that fits an int (the type that reads it checks its range).
         private int Int(JsonElement element, string path, int min = int.MinValue, int max = int.MaxValue)
         {
-            string expected = min == int.MinValue && max == int.MaxValue ? "a 32-bit integer" : $"an integer from {min} to {max}";
+            bool bounded = min != int.MinValue || max != int.MaxValue;
             if (element.ValueKind != JsonValueKind.Number)
             {
                 throw Error(path, $"must be an integer, got {Describe(element)}");
@@ -270,12 +270,12 @@ public static class SceneFile
 
             if (!element.TryGetInt64(out long value))
             {
-                throw Error(path, $"must be {expected}, got {element.GetRawText()}");
+                throw Error(path, bounded ? $"must be an integer from {min} to {max}, got {element.GetRawText()}" : $"must be an integer, got {element.GetRawText()}");
             }
 
             return value >= min && value <= max
                 ? (int)value
-                : throw Error(path, $"must be {expected}, got {value}");
+                : throw Error(path, $"must be an integer from {min} to {max}, got {value}");
         }
 
         private double[] Numbers(JsonElement element, string path, int count)
