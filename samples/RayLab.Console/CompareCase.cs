@@ -6,24 +6,42 @@ using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Cli;
 
-/// <summary>One setting <c>raylab compare</c> renders: a point sampler at one budget, or one adaptive setting.</summary>
+/// <summary>
+/// One setting <c>raylab compare</c> renders, as a <see cref="RenderMethod"/>: a point sampler at one budget
+/// (<see cref="Sampled"/>), or one adaptive setting (<see cref="Adaptive"/>).
+/// </summary>
 /// <param name="Series">Its line on the chart: the sampler's name, or <c>adaptive c=0.1</c> for each contrast.</param>
 /// <param name="Setting">What varies along the line: <c>16 spp</c>, or <c>depth 0–3</c>.</param>
 /// <param name="Budget">The budget asked for (point samplers); a grid sampler uses the nearest square below it.</param>
-/// <param name="Point">The point sampler, or null.</param>
-/// <param name="Adaptive">The adaptive sampler, or null.</param>
-public sealed record CompareCase(string Series, string Setting, int? Budget, IPixelSampler? Point, AdaptiveSampler? Adaptive)
+/// <param name="Method">How the setting renders.</param>
+/// <param name="FileStem">The name of its image files: <c>jittered-16</c>, <c>adaptive-c0.1-d3</c>.</param>
+/// <param name="MaxDepth">The adaptive sampler's maximum depth, or null.</param>
+/// <param name="Contrast">The adaptive sampler's contrast, or null.</param>
+public sealed record CompareCase(string Series, string Setting, int? Budget, RenderMethod Method, string FileStem, int? MaxDepth = null, double? Contrast = null)
 {
+    /// <summary>A point sampler at the budget asked for.</summary>
+    /// <param name="sampler">The sampler, with the samples per pixel it runs at.</param>
+    /// <param name="budget">The budget asked for.</param>
+    public static CompareCase Sampled(IPixelSampler sampler, int budget)
+    {
+        ArgumentNullException.ThrowIfNull(sampler);
+        return new(sampler.Name, $"{sampler.SamplesPerPixel} spp", budget, RenderMethod.Sampled(sampler), $"{sampler.Name}-{sampler.SamplesPerPixel}");
+    }
+
+    /// <summary>One adaptive setting: a line per contrast, a point per maximum depth.</summary>
+    /// <param name="sampler">The adaptive settings.</param>
+    public static CompareCase Adaptive(AdaptiveSampler sampler)
+    {
+        ArgumentNullException.ThrowIfNull(sampler);
+        return new(FormattableString.Invariant($"adaptive c={sampler.Contrast:G6}"), $"depth {sampler.MinDepth}–{sampler.MaxDepth}", null,
+            RenderMethod.Adaptive(sampler), FormattableString.Invariant($"adaptive-c{sampler.Contrast:G6}-d{sampler.MaxDepth}"), sampler.MaxDepth, sampler.Contrast);
+    }
+
     /// <summary>The sampler's name (<c>jittered</c>, <c>adaptive</c>, …).</summary>
-    public string Sampler => Point?.Name ?? "adaptive";
+    public string Sampler => Method.Name;
 
-    /// <summary>The name of its image files: <c>jittered-16</c>, <c>adaptive-c0.1-d3</c>.</summary>
-    public string FileStem => Point is { } p
-        ? $"{p.Name}-{p.SamplesPerPixel}"
-        : FormattableString.Invariant($"adaptive-c{Adaptive!.Contrast:G6}-d{Adaptive.MaxDepth}");
-
-    /// <summary>The render method of this case.</summary>
-    public RenderMethod Method { get; } = Point is not null ? RenderMethod.Sampled(Point) : RenderMethod.Adaptive(Adaptive!);
+    /// <summary>Samples per pixel of a point sampler; null for the adaptive one.</summary>
+    public int? SamplesPerPixel => Method.SamplesPerPixel > 0 ? Method.SamplesPerPixel : null;
 
     /// <summary>Renders the setting into <paramref name="image"/>.</summary>
     /// <param name="renderer">The renderer.</param>

@@ -12,7 +12,8 @@ public static class CompareCommand
     /// <summary>Builds the command; its action runs <see cref="CompareJob.Run"/> with these writers.</summary>
     /// <param name="stdout">Where the table goes.</param>
     /// <param name="stderr">Where errors go.</param>
-    public static Command Create(TextWriter stdout, TextWriter stderr)
+    /// <param name="cancellation">Cancels the comparison (Ctrl+C).</param>
+    public static Command Create(TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
         var scene = new Argument<string>("scene") { Description = "The scene file (its camera and size; its sampler is ignored)." };
         var seed = new Option<uint?>("--seed") { Description = "The samplers' seed, 0 to 4294967295 (default: the scene's).", HelpName = "S" };
@@ -43,7 +44,8 @@ public static class CompareCommand
                 result.GetValue(width),
                 result.GetValue(height)),
             stdout,
-            stderr));
+            stderr,
+            cancellation));
         return compare;
     }
 }

@@ -4,7 +4,6 @@ using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Rendering.Adaptive;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Cli;
 
@@ -22,8 +21,9 @@ public static class CompareJob
     /// <param name="request">What to compare.</param>
     /// <param name="stdout">Where the table goes.</param>
     /// <param name="stderr">Where errors go.</param>
-    /// <returns>0 on success, 1 on bad input or a failed write.</returns>
-    public static int Run(CompareRequest request, TextWriter stdout, TextWriter stderr)
+    /// <param name="cancellation">Cancels the comparison: the report folder is left as it was and the result is <see cref="Program.CancelledExitCode"/>.</param>
+    /// <returns>0 on success, 1 on bad input or a failed write, 130 when cancelled.</returns>
+    public static int Run(CompareRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
         ArgumentNullException.ThrowIfNull(request);
         ArgumentNullException.ThrowIfNull(stdout);
@@ -40,9 +40,10 @@ public static class CompareJob
             Directory.CreateDirectory(Path.Combine(staging, "images"));
             Directory.CreateDirectory(Path.Combine(staging, "errors"));
 
-            (RenderStatistics exact, CompareResult[] results) = Measure(request, stdout, scene, cases, staging);
+            (RenderStatistics exact, CompareResult[] results) = Measure(request, stdout, scene, cases, staging, cancellation);
             var report = new CompareReport(Heading(request, scene, exact), Command(request), results, notes);
             report.WriteTo(staging);
+            cancellation.ThrowIfCancellationRequested(); // the last chance to leave the folder untouched
             Publish(staging, request.OutputFolder);
             done = true;
 
@@ -54,6 +55,11 @@ public static class CompareJob
         {
             stderr.WriteLine($"raylab: error: {e.Message}");
             return 1;
+        }
+        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
+        {
+            stderr.WriteLine($"raylab: cancelled; no report written to {SceneFileException.OneLine(request.OutputFolder)}");
+            return Program.CancelledExitCode;
         }
         catch (OutOfMemoryException)
         {
@@ -114,7 +120,7 @@ public static class CompareJob
                     notes.Add($"{name}: budget {budget} runs as {spp} samples (an n×n grid needs a perfect square).");
                 }
 
-                cases.Add(new CompareCase(name, $"{spp} spp", budget, Samplers.Create(name, spp, seed), null));
+                cases.Add(CompareCase.Sampled(Samplers.Create(name, spp, seed), budget));
             }
         }
 
@@ -124,8 +130,7 @@ public static class CompareJob
             {
                 foreach (int depth in depths)
                 {
-                    cases.Add(new CompareCase(FormattableString.Invariant($"adaptive c={contrast:G6}"), $"depth 0–{depth}", null,
-                        null, new AdaptiveSampler(0, depth, contrast)));
+                    cases.Add(CompareCase.Adaptive(new AdaptiveSampler(0, depth, contrast)));
                 }
             }
         }
@@ -134,7 +139,7 @@ public static class CompareJob
     }
 
     private static (RenderStatistics Exact, CompareResult[] Results) Measure(
-        CompareRequest r, TextWriter stdout, PreparedScene scene, CompareCase[] cases, string staging)
+        CompareRequest r, TextWriter stdout, PreparedScene scene, CompareCase[] cases, string staging, CancellationToken cancellation)
     {
         int width = scene.Description.Width, height = scene.Description.Height;
         Image exact = scene.CreateImage();
@@ -142,11 +147,11 @@ public static class CompareJob
         var results = new CompareResult[cases.Length];
         CompareProgress.Run(stdout, 1 + (cases.Length * r.Repeats), progress =>
         {
-            var exactRenderer = new ExactRenderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows };
-            exactStats = progress.Render("exact image", () => exactRenderer.Render(scene.Scene, scene.Camera, exact));
+            // The scene was prepared with the exact method: it renders the reference.
+            var renderer = new Renderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows, CancellationToken = cancellation };
+            exactStats = progress.Render("exact image", () => scene.Render(renderer, exact));
             exact.Save(Path.Combine(staging, "images", "exact.png"));
 
-            var renderer = new Renderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows };
             Image image = scene.CreateImage();
             for (int i = 0; i < cases.Length; i++)
             {
@@ -232,25 +237,10 @@ public static class CompareJob
 
     private static PreparedScene Prepare(CompareRequest r)
     {
-        SceneDescription d = SceneFile.Load(r.ScenePath);
         // The scene's own sampler is not used; preparing it as "exact" checks that the exact reference can draw
         // the scene (a sphere behind the eye is an error naming spheres[i]) before anything is rendered.
-        d = d with { Width = r.Width ?? d.Width, Height = r.Height ?? d.Height, Sampler = d.Sampler with { Type = "exact" } };
-        try
-        {
-            return d.Prepare();
-        }
-        catch (SceneFileException e) when (e.Field.StartsWith("image", StringComparison.Ordinal) && (r.Width ?? r.Height) is not null)
-        {
-            string option = e.Field switch
-            {
-                "image.width" when r.Width is not null => "--width",
-                "image.height" when r.Height is not null => "--height",
-                "image" when r.Width is not null && r.Height is not null => "--width/--height",
-                _ => r.Width is not null ? "--width" : "--height",
-            };
-            throw new UsageException($"{option}: {e.Problem}");
-        }
+        SceneDescription d = SceneFile.Load(r.ScenePath);
+        return new SceneOverrides(r.Width, r.Height).Prepare(d with { Sampler = d.Sampler with { Type = "exact" } });
     }
 
     private static string Heading(CompareRequest r, PreparedScene scene, RenderStatistics exact) => string.Create(CultureInfo.InvariantCulture,

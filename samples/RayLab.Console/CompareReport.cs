@@ -42,7 +42,7 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         foreach (CompareResult r in results)
         {
             CompareCase c = r.Case;
-            csv.Append(Invariant($"{c.Series},{c.Sampler},{c.Setting},{c.Budget},{c.Point?.SamplesPerPixel},{c.Adaptive?.MaxDepth},{c.Adaptive?.Contrast:G6},"))
+            csv.Append(Invariant($"{c.Series},{c.Sampler},{c.Setting},{c.Budget},{c.SamplesPerPixel},{c.MaxDepth},{c.Contrast:G6},"))
                .Append(Invariant($"{r.Rays},{r.RaysPerPixel:G9},{r.Time.TotalMilliseconds:F3},{r.Error.Rmse:G9},{r.Error.MeanAbsolute:G9},{r.Error.Max},{r.Error.FractionOverOneLevel:G9},{r.Kernel},"))
                .Append($"images/{c.FileStem}.png,errors/{c.FileStem}.png\n");
         }
@@ -102,7 +102,7 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         }
 
         double? everyLine = LowestCommonRmse(Series);
-        double? everyPointSampler = LowestCommonRmse([.. Series.Where(s => s.First().Case.Point is not null)]);
+        double? everyPointSampler = LowestCommonRmse([.. Series.Where(s => s.First().Case.SamplesPerPixel is not null)]);
         if (everyLine is { } all)
         {
             ReachTable(md, all, "the lowest RMSE every line reaches");

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.CommandLine.Help;
 using System.Globalization;
+using System.Runtime.InteropServices;
 using RayLab.Imaging;
 using RayLab.Sampling;
 using RayLab.Scenes;
@@ -14,19 +15,37 @@ namespace RayLab.Cli;
 /// </summary>
 public static class Program
 {
-    /// <summary>Entry point.</summary>
+    /// <summary>The exit code of a run cancelled by Ctrl+C (SIGINT): 128 + 2, as a shell reports a process the signal ended.</summary>
+    public const int CancelledExitCode = 130;
+
+    /// <summary>Entry point. Ctrl+C (SIGINT) cancels the render, which leaves no output and exits with <see cref="CancelledExitCode"/>.</summary>
     /// <param name="args">Command-line arguments.</param>
-    /// <returns>0 on success, 1 for bad input or a failed render, 2 for a bad command line.</returns>
-    public static int Main(string[] args) => Run(args, Console.Out, Console.Error);
+    /// <returns>0 on success, 1 for bad input or a failed render, 2 for a bad command line, 130 when cancelled.</returns>
+    public static int Main(string[] args)
+    {
+        using var cancel = new CancellationTokenSource();
+        // The first Ctrl+C asks the render to stop (rows in flight finish, then the job cleans up); a second one,
+        // once cancellation is under way, ends the process at once as usual.
+        using PosixSignalRegistration interrupt = PosixSignalRegistration.Create(PosixSignal.SIGINT, context =>
+        {
+            if (!cancel.IsCancellationRequested)
+            {
+                context.Cancel = true;
+                cancel.Cancel();
+            }
+        });
+        return Run(args, Console.Out, Console.Error, cancel.Token);
+    }
 
     /// <summary>Runs the app with the given output writers (tests call this in-process).</summary>
     /// <param name="args">Command-line arguments.</param>
     /// <param name="stdout">Where results go.</param>
     /// <param name="stderr">Where errors go: one line each.</param>
+    /// <param name="cancellation">Cancels a render or comparison: it then leaves no output and the run returns <see cref="CancelledExitCode"/>.</param>
     /// <returns>The exit code.</returns>
-    public static int Run(string[] args, TextWriter stdout, TextWriter stderr)
+    public static int Run(string[] args, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
-        RootCommand root = BuildCommands(stdout, stderr);
+        RootCommand root = BuildCommands(stdout, stderr, cancellation);
         ParseResult parsed = root.Parse(args);
         if (parsed.Errors.Count > 0)
         {
@@ -46,7 +65,7 @@ public static class Program
         }
     }
 
-    private static RootCommand BuildCommands(TextWriter stdout, TextWriter stderr)
+    private static RootCommand BuildCommands(TextWriter stdout, TextWriter stderr, CancellationToken cancellation)
     {
         // Options override the scene file, so each says what it falls back to: the scene's field, and the value
         // a scene file that omits the field gets (SamplerSettings' defaults, as SceneFile reads them).
@@ -91,9 +110,10 @@ public static class Program
                 result.GetValue(kernel),
                 result.GetValue(quincunx)),
             stdout,
-            stderr));
+            stderr,
+            cancellation));
 
-        var compare = CompareCommand.Create(stdout, stderr);
+        var compare = CompareCommand.Create(stdout, stderr, cancellation);
 
         var root = new RootCommand(
             "RayLab: the photorealistic-rendering lab's ray tracer. With no command, renders the two-sphere scene "
@@ -103,7 +123,7 @@ public static class Program
             render, compare,
         };
         root.HelpName = "raylab"; // not the host's name (dotnet, testhost) in the usage lines
-        root.SetAction(_ => RenderJob.RunDefault(stdout, stderr));
+        root.SetAction(_ => RenderJob.RunDefault(stdout, stderr, cancellation));
 
         // Help wraps at the terminal's width, else at 80 columns (the parser's default for redirected output is one long line).
         if (root.Options.OfType<HelpOption>().FirstOrDefault()?.Action is HelpAction help)

@@ -84,7 +84,8 @@ public sealed class ProgressDisplay : IDisposable
             return;
         }
 
-        // Spectre hides the cursor while it draws; Ctrl+C ends the process without giving it back, so do that here.
+        // Spectre hides the cursor while it draws; a Ctrl+C that ends the process (the second: the first cancels the
+        // render, and the bar is cleared as the render returns) would not give it back, so do that here.
         ConsoleCancelEventHandler showCursor = (_, _) => console.Cursor.Show(true);
         Console.CancelKeyPress += showCursor;
         try

@@ -20,15 +20,16 @@ public static class RenderJob
     /// </summary>
     /// <param name="stdout">Where the summary lines go.</param>
     /// <param name="stderr">Where errors go.</param>
+    /// <param name="cancellation">Cancels the renders (Ctrl+C).</param>
     /// <returns>The exit code.</returns>
-    public static int RunDefault(TextWriter stdout, TextWriter stderr)
+    public static int RunDefault(TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
         Directory.CreateDirectory("out");
         foreach (string camera in CameraSettings.Types.Reverse())
         {
             var request = new RenderRequest(DefaultScenePath, Path.Combine("out", $"two-spheres-{camera}.png"), Camera: camera,
                 HeatmapPath: Path.Combine("out", $"two-spheres-{camera}-heatmap.png"));
-            int code = Run(request, stdout, stderr);
+            int code = Run(request, stdout, stderr, cancellation);
             if (code != 0)
             {
                 return code;
@@ -42,13 +43,22 @@ public static class RenderJob
     /// <param name="request">What to render.</param>
     /// <param name="stdout">Where the summary goes.</param>
     /// <param name="stderr">Where errors go.</param>
-    /// <returns>0 on success, 1 on bad input or a failed render.</returns>
-    public static int Run(RenderRequest request, TextWriter stdout, TextWriter stderr)
+    /// <param name="cancellation">Cancels the render: no file is written and the result is <see cref="Program.CancelledExitCode"/>.</param>
+    /// <returns>0 on success, 1 on bad input or a failed render, 130 when cancelled.</returns>
+    public static int Run(RenderRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
+        ArgumentNullException.ThrowIfNull(request);
+        ArgumentNullException.ThrowIfNull(stdout);
+        ArgumentNullException.ThrowIfNull(stderr);
         try
         {
-            RunOrThrow(request, stdout);
+            RunOrThrow(request, stdout, cancellation);
             return 0;
+        }
+        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
+        {
+            stderr.WriteLine($"raylab: cancelled; {SceneFileException.OneLine(request.OutputPath)} not written");
+            return Program.CancelledExitCode;
         }
         catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException or NotSupportedException)
         {
@@ -62,7 +72,7 @@ public static class RenderJob
         }
     }
 
-    private static void RunOrThrow(RenderRequest request, TextWriter stdout)
+    private static void RunOrThrow(RenderRequest request, TextWriter stdout, CancellationToken cancellation)
     {
         if (string.IsNullOrWhiteSpace(request.ScenePath))
         {
@@ -95,21 +105,14 @@ public static class RenderJob
             throw new UsageException($"--threads: must be at least 1, got {request.Threads}");
         }
 
-        SceneDescription description = ApplyOverrides(SceneFile.Load(request.ScenePath), request);
-        PreparedScene prepared;
-        try
-        {
-            prepared = description.Prepare();
-        }
-        catch (SceneFileException e) when (OptionFor(e.Field, request) is { } option)
-        {
-            throw new UsageException($"{option}: {e.Problem}");
-        }
-
+        PreparedScene prepared = request.Overrides.Prepare(SceneFile.Load(request.ScenePath));
         Image image = prepared.CreateImage();
         float[]? raysPerPixel = request.HeatmapPath is null ? null : new float[(long)image.Width * image.Height];
         var progress = new RenderProgress();
-        var renderer = new Renderer { MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress };
+        var renderer = new Renderer
+        {
+            MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress, CancellationToken = cancellation,
+        };
         // A smaller render of the same scene first, so that renderMs is the render and not the JIT compiling it
         // (the native anchors are compiled ahead of time too); its time is reported as warmupMs. It is the same
         // picture scaled down, so it meets the same edges and compiles the paths the render takes there. The
@@ -123,6 +126,9 @@ public static class RenderJob
         {
             stats = prepared.Render(renderer, image, raysPerPixel);
         }
+
+        // A request that came as the last row finished still stops the job; once writing starts, it completes.
+        cancellation.ThrowIfCancellationRequested();
 
         var encodeClock = Stopwatch.StartNew();
         image.Save(request.OutputPath);
@@ -141,48 +147,6 @@ public static class RenderJob
             $"{request.OutputPath}: {image.Width}×{image.Height}, {prepared.Camera.Name} camera, {prepared.SamplerDescription}, "
             + $"{stats.PrimaryRays:N0} rays ({stats.PrimaryRays / ((double)image.Width * image.Height):F2}/px), render {stats.RenderTime.TotalMilliseconds:F1} ms ({stats.RaysPerSecond / 1e6:F1} Mrays/s), encode {encodeMs:F1} ms"));
     }
-
-    private static SceneDescription ApplyOverrides(SceneDescription d, RenderRequest r)
-    {
-        if (r.Camera is not null)
-        {
-            d = d with { Camera = d.Camera with { Type = r.Camera } };
-        }
-
-        SamplerSettings s = d.Sampler;
-        d = d with
-        {
-            Sampler = s with
-            {
-                Type = r.Sampler ?? s.Type,
-                Samples = r.Samples ?? s.Samples,
-                Seed = r.Seed ?? s.Seed,
-                MinDepth = r.MinDepth ?? s.MinDepth,
-                MaxDepth = r.MaxDepth ?? s.MaxDepth,
-                Contrast = r.Contrast ?? s.Contrast,
-                Quincunx = r.Quincunx || s.Quincunx,
-            },
-        };
-
-        return d with { Width = r.Width ?? d.Width, Height = r.Height ?? d.Height };
-    }
-
-    // A problem in a field that an option overrode is the option's problem.
-    private static string? OptionFor(string field, RenderRequest r) => field switch
-    {
-        "image.width" when r.Width is not null => "--width",
-        "image.height" when r.Height is not null => "--height",
-        "image" when r.Width is not null && r.Height is not null => "--width/--height",
-        "image" when r.Height is not null => "--height",
-        "image" when r.Width is not null => "--width",
-        "sampler.minDepth" when r.MinDepth is not null => "--min-depth",
-        "sampler.maxDepth" when r.MaxDepth is not null => "--max-depth",
-        "sampler.contrast" when r.Contrast is not null => "--contrast",
-        "camera.type" when r.Camera is not null => "--camera",
-        "sampler.type" when r.Sampler is not null => "--sampler",
-        "sampler.samples" when r.Samples is not null || r.Sampler is not null => "--samples",
-        _ => null,
-    };
 
     private static void CheckChoice(string? value, string option, string what, IReadOnlyList<string> allowed)
     {

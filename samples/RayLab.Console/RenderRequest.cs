@@ -21,4 +21,8 @@ public sealed record RenderRequest(
     string ScenePath, string OutputPath, string? Camera = null, string? Sampler = null, int? Samples = null,
     uint? Seed = null, int? Threads = null, int? Width = null, int? Height = null, string? StatsPath = null,
     int? MinDepth = null, int? MaxDepth = null, double? Contrast = null, string? HeatmapPath = null,
-    string? Kernel = null, bool Quincunx = false);
+    string? Kernel = null, bool Quincunx = false)
+{
+    /// <summary>The options that override scene-file fields.</summary>
+    internal SceneOverrides Overrides => new(Width, Height, Camera, Sampler, Samples, Seed, MinDepth, MaxDepth, Contrast, Quincunx);
+}

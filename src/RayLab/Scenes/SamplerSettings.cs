@@ -21,6 +21,33 @@ public sealed record SamplerSettings(string Type, int Samples, uint Seed, int Mi
     /// </summary>
     public static IReadOnlyList<string> Types { get; } = [.. Samplers.Names, "adaptive", "exact"];
 
+    /// <summary>The fields of a scene file's <c>sampler</c> object.</summary>
+    public static IReadOnlyList<string> Fields { get; } = ["type", "samples", "seed", "minDepth", "maxDepth", "contrast", "quincunx"];
+
+    /// <summary>
+    /// The <c>sampler</c> field a sampler constructor's parameter stands for where the names differ
+    /// (<see cref="Samplers.Create"/>'s <c>name</c> and <c>samplesPerPixel</c>), or null; the adaptive
+    /// sampler's parameters are spelled as the fields are.
+    /// </summary>
+    /// <param name="parameter">An exception's parameter name.</param>
+    public static string? FieldOf(string parameter) => parameter switch
+    {
+        "name" => "type",
+        "samplesPerPixel" => "samples",
+        _ => null,
+    };
+
+    /// <summary>
+    /// Checks every setting the console could use: the adaptive settings whatever the type (<c>--sampler
+    /// adaptive</c> keeps them), and the method of this type.
+    /// </summary>
+    /// <exception cref="ArgumentException">Unknown type, unusable sample count, or a depth or contrast out of range.</exception>
+    public void Check()
+    {
+        _ = CreateAdaptive();
+        _ = CreateMethod();
+    }
+
     /// <summary>One ray through each pixel centre: the lab's first picture.</summary>
     public static SamplerSettings Default { get; } = new("regular", 1, 0);
 

@@ -27,16 +27,17 @@ public sealed record SceneDescription(
     /// <exception cref="SceneFileException">A setting is out of range or the combination is invalid.</exception>
     public PreparedScene Prepare()
     {
-        string field = "image";
+        // Each step's ArgumentException names a parameter of the section being built, which resolves it to a field.
+        SceneSection section = SceneSection.Image;
         try
         {
             Image.CheckSize(Width, Height);
             CheckAtMost(Width, SceneFile.MaxImageSide, "width");
             CheckAtMost(Height, SceneFile.MaxImageSide, "height");
-            field = "camera";
+            section = SceneSection.Camera;
             Camera camera = Camera.CreateCamera();
             camera.GetImagePlane(Width, Height);
-            field = "sampler";
+            section = SceneSection.Sampler;
             if (Sampler.IsExact)
             {
                 ExactRenderer.Check(Scene, camera, Width, Height);
@@ -50,11 +51,11 @@ public sealed record SceneDescription(
         }
         catch (UnsupportedSceneException e)
         {
-            throw new SceneFileException(Source, $"spheres[{e.SphereIndex}]", e.Reason, e);
+            throw new SceneFileException(Source, SceneSection.Sphere(e.SphereIndex).Path, e.Reason, e);
         }
         catch (ArgumentException e)
         {
-            throw new SceneFileException(Source, FieldOf(field, e.ParamName), FirstLine(e.Message), e);
+            throw section.Error(Source, e);
         }
     }
 
@@ -65,36 +66,6 @@ public sealed record SceneDescription(
         {
             throw new ArgumentOutOfRangeException(name, value, $"must be an integer from 1 to {max}, got {value}");
         }
-    }
-
-    private static string FieldOf(string section, string? param) => (section, param) switch
-    {
-        ("image", "height") => "image.height",
-        ("image", "width") => "image.width",
-        ("image", _) => "image",
-        ("camera", "Position") => "camera.position",
-        ("camera", "Target") => "camera.target",
-        ("camera", "Up") => "camera.up",
-        ("camera", "NearPlane") => "camera.near",
-        ("camera", "FarPlane") => "camera.far",
-        ("camera", "Fov") => "camera.fov",
-        ("camera", "ViewHeight") => "camera.height",
-        ("camera", "Distance") => "camera.distance",
-        ("camera", "Window" or "window") => "camera.window",
-        ("camera", "Type") => "camera.type",
-        ("sampler", "name") => "sampler.type",
-        ("sampler", "minDepth") => "sampler.minDepth",
-        ("sampler", "maxDepth") => "sampler.maxDepth",
-        ("sampler", "contrast") => "sampler.contrast",
-        ("sampler", _) => "sampler.samples",
-        _ => section,
-    };
-
-    // ArgumentException appends " (Parameter 'x')": the field name already says that.
-    private static string FirstLine(string message)
-    {
-        int at = message.IndexOf(" (Parameter '", StringComparison.Ordinal);
-        return at >= 0 ? message[..at] : message;
     }
 }
 

@@ -1,7 +1,6 @@
 using System.Text.Json;
 using RayLab.Cameras;
 using RayLab.Geometry;
-using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Scenes;
 
@@ -78,10 +77,10 @@ public static class SceneFile
         {
             CheckText(root, "");
             JsonElement obj = Object(root, "(root)");
-            Only(obj, "", "image", "background", "ambient", "camera", "spheres", "sampler");
+            Only(obj, "", SceneSection.RootFields);
 
             JsonElement image = Object(Required(obj, "", "image"), "image");
-            Only(image, "image", "width", "height");
+            Only(image, SceneSection.Image);
             int width = Int(Required(image, "image", "width"), "image.width", 1, MaxImageSide);
             int height = Int(Required(image, "image", "height"), "image.height", 1, MaxImageSide);
 
@@ -99,73 +98,56 @@ public static class SceneFile
             int index = 0;
             foreach (JsonElement item in spheresJson.EnumerateArray())
             {
-                spheres.Add(ReadSphere(item, $"spheres[{index++}]"));
+                spheres.Add(ReadSphere(item, SceneSection.Sphere(index++)));
             }
 
             SamplerSettings sampler = Optional(obj, "sampler") is { } s ? ReadSampler(Object(s, "sampler")) : SamplerSettings.Default;
             return new SceneDescription(source, width, height, new Scene(spheres, background, ambient), camera, sampler);
         }
 
+        // The numbers are read as JSON (kind, finiteness); their ranges are the camera's own checks.
         private CameraSettings ReadCamera(JsonElement camera)
         {
-            Only(camera, "camera", "type", "position", "target", "up", "fov", "height", "near", "far", "distance", "window");
+            SceneSection section = SceneSection.Camera;
+            Only(camera, section);
             string type = Name(Required(camera, "camera", "type"), "camera.type", CameraSettings.Types);
             Double3 position = Vector(Required(camera, "camera", "position"), "camera.position");
             Double3 target = Vector(Required(camera, "camera", "target"), "camera.target");
             Double3 up = Optional(camera, "up") is { } u ? Vector(u, "camera.up") : Double3.UnitY;
             double fov = Optional(camera, "fov") is { } f ? Number(f, "camera.fov") : 60;
-            if (!(fov > 0 && fov < 180))
-            {
-                throw Error("camera.fov", $"must be between 0 and 180 degrees (exclusive), got {fov}");
-            }
-
-            double height = Optional(camera, "height") is { } h ? Positive(h, "camera.height") : 2;
+            double height = Optional(camera, "height") is { } h ? Number(h, "camera.height") : 2;
             double near = Optional(camera, "near") is { } n ? Number(n, "camera.near") : 1;
-            if (near < 0)
-            {
-                throw Error("camera.near", $"must be ≥ 0, got {near}");
-            }
-
-            double far = Optional(camera, "far") is { } fa ? Positive(fa, "camera.far") : 1000;
-            if (!(near < far))
-            {
-                throw Error("camera.far", $"must be greater than camera.near ({near}), got {far}");
-            }
-
-            double distance = Optional(camera, "distance") is { } d ? Positive(d, "camera.distance") : 1;
+            double far = Optional(camera, "far") is { } fa ? Number(fa, "camera.far") : 1000;
+            double distance = Optional(camera, "distance") is { } d ? Number(d, "camera.distance") : 1;
             Window? window = null;
             if (Optional(camera, "window") is { } w)
             {
                 double[] c = Numbers(w, "camera.window", 4);
-                if (!(c[2] > c[0]) || !(c[3] > c[1]))
-                {
-                    throw Error("camera.window", $"must be [u0, v0, u1, v1] with u1 > u0 and v1 > v0, got [{string.Join(", ", c)}]");
-                }
-
                 window = new Window(c[0], c[1], c[2], c[3]);
             }
 
-            return new CameraSettings(type, position, target, up, fov, height, near, far, distance, window);
+            var settings = new CameraSettings(type, position, target, up, fov, height, near, far, distance, window);
+            section.Build(source, settings.Check);
+            return settings;
         }
 
-        private Sphere ReadSphere(JsonElement element, string path)
+        private Sphere ReadSphere(JsonElement element, SceneSection section)
         {
+            string path = section.Path;
             JsonElement sphere = Object(element, path);
-            Only(sphere, path, "center", "radius", "color");
+            Only(sphere, section);
             Double3 center = Vector(Required(sphere, path, "center"), path + ".center");
             double radius = Number(Required(sphere, path, "radius"), path + ".radius");
-            if (radius < 0)
-            {
-                throw Error(path + ".radius", $"must be ≥ 0, got {radius}");
-            }
-
             Intensity color = Color(Required(sphere, path, "color"), path + ".color");
-            return new Sphere(center, radius, color);
+            return section.Build(source, () => new Sphere(center, radius, color));
         }
 
+        // The file's own limit on samples is checked here; the depths, the contrast and whether the sampler can
+        // use the sample count are the samplers' own checks.
         private SamplerSettings ReadSampler(JsonElement sampler)
         {
-            Only(sampler, "sampler", "type", "samples", "seed", "minDepth", "maxDepth", "contrast", "quincunx");
+            SceneSection section = SceneSection.Sampler;
+            Only(sampler, section);
             string type = Name(Required(sampler, "sampler", "type"), "sampler.type", SamplerSettings.Types);
             int samples = Optional(sampler, "samples") is { } s ? Int(s, "sampler.samples", 1, MaxSamples) : 1;
             uint seed = 0;
@@ -177,17 +159,14 @@ public static class SceneFile
                 }
             }
 
-            int maxDepth = Optional(sampler, "maxDepth") is { } max ? Int(max, "sampler.maxDepth", 0, Rendering.Adaptive.AdaptiveSampler.MaxSupportedDepth) : 3;
-            int minDepth = Optional(sampler, "minDepth") is { } min ? Int(min, "sampler.minDepth", 0, maxDepth) : 0;
+            int maxDepth = Optional(sampler, "maxDepth") is { } max ? Int(max, "sampler.maxDepth") : 3;
+            int minDepth = Optional(sampler, "minDepth") is { } min ? Int(min, "sampler.minDepth") : 0;
             double contrast = Optional(sampler, "contrast") is { } c ? Number(c, "sampler.contrast") : 0.1;
-            if (contrast < 0)
-            {
-                throw Error("sampler.contrast", $"must be ≥ 0, got {contrast}");
-            }
-
             bool quincunx = Optional(sampler, "quincunx") is { } q
                 && (q.ValueKind is JsonValueKind.True or JsonValueKind.False ? q.GetBoolean() : throw Error("sampler.quincunx", $"must be true or false, got {Describe(q)}"));
-            return new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast, quincunx);
+            var settings = new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast, quincunx);
+            section.Build(source, settings.Check);
+            return settings;
         }
 
         // JSON allows "\ud800" (an unpaired surrogate escape), but System.Text.Json cannot turn it into a .NET
@@ -246,12 +225,14 @@ public static class SceneFile
         private static JsonElement? Optional(JsonElement obj, string name) =>
             obj.TryGetProperty(name, out JsonElement value) && value.ValueKind != JsonValueKind.Null ? value : null;
 
-        private void Only(JsonElement obj, string parent, params string[] allowed)
+        private void Only(JsonElement obj, SceneSection section) => Only(obj, section.Path, section.Fields);
+
+        private void Only(JsonElement obj, string parent, IReadOnlyList<string> allowed)
         {
             var seen = new HashSet<string>(StringComparer.Ordinal);
             foreach (JsonProperty property in obj.EnumerateObject())
             {
-                if (Array.IndexOf(allowed, property.Name) < 0)
+                if (!allowed.Contains(property.Name, StringComparer.Ordinal))
                 {
                     throw Error(Join(parent, property.Name), $"unknown field; expected one of: {string.Join(", ", allowed)}");
                 }
@@ -278,14 +259,10 @@ public static class SceneFile
             return value;
         }
 
-        private double Positive(JsonElement element, string path)
+        // An integer in [min, max]; without bounds, any that fits an int (the type that reads it checks its range).
+        private int Int(JsonElement element, string path, int min = int.MinValue, int max = int.MaxValue)
         {
-            double value = Number(element, path);
-            return value > 0 ? value : throw Error(path, $"must be > 0, got {value}");
-        }
-
-        private int Int(JsonElement element, string path, int min, int max)
-        {
+            bool bounded = min != int.MinValue || max != int.MaxValue;
             if (element.ValueKind != JsonValueKind.Number)
             {
                 throw Error(path, $"must be an integer, got {Describe(element)}");
@@ -293,7 +270,7 @@ public static class SceneFile
 
             if (!element.TryGetInt64(out long value))
             {
-                throw Error(path, $"must be an integer from {min} to {max}, got {element.GetRawText()}");
+                throw Error(path, bounded ? $"must be an integer from {min} to {max}, got {element.GetRawText()}" : $"must be an integer, got {element.GetRawText()}");
             }
 
             return value >= min && value <= max
@@ -352,7 +329,7 @@ public static class SceneFile
 
         private SceneFileException Error(string path, string problem) => new(source, path, problem);
 
-        private static string Join(string parent, string name) => parent.Length == 0 ? name : $"{parent}.{name}";
+        private static string Join(string parent, string name) => SceneSection.Join(parent, name);
 
         private static string Describe(JsonElement element) => element.ValueKind switch
         {

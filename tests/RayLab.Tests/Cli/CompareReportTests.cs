@@ -69,10 +69,10 @@ public class CompareReportTests
     }
 
     private static CompareResult Result(string sampler, int spp, double rmse, double ms, int max = 9) => new(
-        new CompareCase(sampler, $"{spp} spp", spp, Samplers.Create(sampler, spp, 1), null),
+        CompareCase.Sampled(Samplers.Create(sampler, spp, 1), spp),
         spp * 100L, spp, TimeSpan.FromMilliseconds(ms), new ImageError(rmse, rmse, max, 0.01), RenderKernel.Scalar);
 
     private static CompareResult Adaptive(int depth, double raysPerPixel, double rmse, double ms) => new(
-        new CompareCase("adaptive c=0.1", $"depth 0–{depth}", null, null, new AdaptiveSampler(0, depth, 0.1)),
+        CompareCase.Adaptive(new AdaptiveSampler(0, depth, 0.1)),
         (long)(raysPerPixel * 100), raysPerPixel, TimeSpan.FromMilliseconds(ms), new ImageError(rmse, rmse, 40, 0.01), RenderKernel.Scalar);
 }

@@ -58,7 +58,7 @@ public sealed partial class ConsoleFuzzTests : IDisposable
         File.WriteAllText(_dir.File("scene.json"), BaseScene);
         var stderr = new StringWriter();
 
-        int code = Program.Run(["render", _dir.File("scene.json"), "-o", _dir.File("no\nsuch/out.png")], new StringWriter(), stderr);
+        int code = Program.Run(["render", _dir.File("scene.json"), "-o", _dir.File("no\nsuch/out.png")], new StringWriter(), stderr, TestContext.Current.CancellationToken);
 
         Assert.Equal(1, code);
         string line = Assert.Single(Lines(stderr.ToString()));

@@ -21,6 +21,20 @@ internal static class ConsoleRunner
     /// </summary>
     public static async Task<(int Code, string Out, string Err)> RunChildAsync(string workingDirectory, params string[] args)
     {
+        CancellationToken cancel = TestContext.Current.CancellationToken;
+        using Process process = StartChild(workingDirectory, args);
+        Task<string> stdout = process.StandardOutput.ReadToEndAsync(cancel);
+        Task<string> stderr = process.StandardError.ReadToEndAsync(cancel);
+        await process.WaitForExitAsync(cancel);
+        return (process.ExitCode, await stdout, await stderr);
+    }
+
+    /// <summary>
+    /// Starts the built app as a child process, as <see cref="RunChildAsync"/> does, and returns it running with its
+    /// output redirected and unread: the caller reads it (and must, or a full pipe stalls the child) and waits.
+    /// </summary>
+    public static Process StartChild(string workingDirectory, params string[] args)
+    {
         string app = Path.Combine(AppContext.BaseDirectory, "raylab.dll");
         Assert.True(File.Exists(app), $"{app} is missing");
         var start = new ProcessStartInfo(DotnetHost())
@@ -38,12 +52,16 @@ internal static class ConsoleRunner
             start.ArgumentList.Add(arg);
         }
 
-        CancellationToken cancel = TestContext.Current.CancellationToken;
-        using Process process = Process.Start(start) ?? throw new InvalidOperationException("could not start dotnet");
-        Task<string> stdout = process.StandardOutput.ReadToEndAsync(cancel);
-        Task<string> stderr = process.StandardError.ReadToEndAsync(cancel);
-        await process.WaitForExitAsync(cancel);
-        return (process.ExitCode, await stdout, await stderr);
+        return Process.Start(start) ?? throw new InvalidOperationException("could not start dotnet");
+    }
+
+    /// <summary>Sends SIGINT (what Ctrl+C sends) to <paramref name="process"/> with the system's <c>kill</c>.</summary>
+    public static async Task InterruptAsync(Process process)
+    {
+        using Process kill = Process.Start(new ProcessStartInfo("kill", ["-INT", process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]) { UseShellExecute = false })
+            ?? throw new InvalidOperationException("could not start kill");
+        await kill.WaitForExitAsync(TestContext.Current.CancellationToken);
+        Assert.Equal(0, kill.ExitCode);
     }
 
     /// <summary>The dotnet host running these tests (so the child uses the same runtime), else dotnet on the PATH.</summary>

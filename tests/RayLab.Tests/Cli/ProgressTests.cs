@@ -31,7 +31,7 @@ public sealed partial class ProgressTests : IDisposable
         var stderr = new StringWriter();
 
         int code = Program.Run(["render", Scene, "-o", Path.Combine(_dir, "a.png"), "--width", "160", "--height", "120",
-            "--sampler", "jittered", "--samples", "4"], stdout, stderr);
+            "--sampler", "jittered", "--samples", "4"], stdout, stderr, TestContext.Current.CancellationToken);
 
         Assert.Equal(0, code);
         Assert.DoesNotContain(Escape, stdout.ToString());

@@ -205,8 +205,9 @@ public sealed class SceneFileTests : IDisposable
     [InlineData("camera.fov", "\"fov\": 40", "\"fov\": 180")]
     [InlineData("camera.fov", "\"fov\": 40", "\"fov\": 190")]
     [InlineData("camera.near", "\"near\": 0.1", "\"near\": -1")]
-    [InlineData("camera.far", "\"far\": 100", "\"far\": 0.1")]
-    [InlineData("camera.far", "\"near\": 0.1, \"far\": 100", "\"near\": 10, \"far\": 5")]
+    // near ≥ far is the camera's combination check (Camera.GetImagePlane), which names NearPlane and both values.
+    [InlineData("camera.near", "\"far\": 100", "\"far\": 0.1")]
+    [InlineData("camera.near", "\"near\": 0.1, \"far\": 100", "\"near\": 10, \"far\": 5")]
     [InlineData("camera.height", "\"type\": \"perspective\"", "\"type\": \"orthographic\"", "\"height\": 2.5", "\"height\": 0")]
     [InlineData("camera.distance", "\"distance\": 1", "\"distance\": 0")]
     [InlineData("camera.window", "\"distance\": 1", "\"distance\": 1, \"window\": [1, -1, 1, 1]")]
