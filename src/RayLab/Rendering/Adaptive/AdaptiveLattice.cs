@@ -15,7 +15,6 @@ internal sealed class AdaptiveLattice
     private readonly Scene _scene;
     private readonly ImagePlane _plane;
     private readonly long _size;
-    private readonly double _latticeWidth, _latticeHeight;
     private readonly int[] _corners;
     private readonly Intensity[] _palette;
     private readonly ConcurrentDictionary<long, Lazy<Intensity>> _edges = new();
@@ -26,8 +25,6 @@ internal sealed class AdaptiveLattice
         _scene = scene;
         _plane = plane;
         _size = 1L << (maxDepth + 1);
-        _latticeWidth = plane.Width * (double)_size;
-        _latticeHeight = plane.Height * (double)_size;
         int stride = plane.Width + 1;
         // Index 0 is the background, k + 1 sphere k.
         _palette = [scene.Background, .. scene.Spheres.Select(sphere => sphere.Color * scene.Ambient)];
@@ -37,7 +34,7 @@ internal sealed class AdaptiveLattice
             Span<int> row = _corners.AsSpan(j * stride, stride);
             for (int i = 0; i < row.Length; i++)
             {
-                Ray ray = _plane.GetRay(i * _size / _latticeWidth, 1.0 - (j * _size / _latticeHeight));
+                Ray ray = _plane.GetRayAt(i, j);
                 row[i] = _scene.Nearest(ray, _plane.TMin, _plane.TMax) + 1;
             }
         });
@@ -76,7 +73,8 @@ internal sealed class AdaptiveLattice
 
     public Intensity Trace(long lx, long ly)
     {
-        Ray ray = _plane.GetRay(lx / _latticeWidth, 1.0 - (ly / _latticeHeight));
+        // Lattice point (lx, ly) is at pixel coordinates (lx, ly)/size; size is a power of two, so the division is exact.
+        Ray ray = _plane.GetRayAt((double)lx / _size, (double)ly / _size);
         return _scene.Trace(ray, _plane.TMin, _plane.TMax);
     }
 

@@ -214,10 +214,10 @@ internal sealed class ExactRow
         _values[(3 * x) + 2] += c.B * area;
     }
 
-    // The colour at pixel coordinates (X, Y): window point α = X/W, β = 1 − Y/H.
+    // The colour at pixel coordinates (X, Y).
     private Intensity Probe(double x, double y)
     {
-        Ray ray = _plane.GetRay(x / _width, 1 - (y / _plane.Height));
+        Ray ray = _plane.GetRayAt(x, y);
         return _scene.Trace(ray, _plane.TMin, _plane.TMax);
     }
 

@@ -85,8 +85,8 @@ internal static class PointRenderer
     private static long RenderPackets<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RenderOptions options)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL> => frame.IsOrthographic
-            ? RenderPackets<TL, TS, OrthographicRays>(frame, newSampler, samplesPerPixel, image, options)
-            : RenderPackets<TL, TS, PerspectiveRays>(frame, newSampler, samplesPerPixel, image, options);
+            ? RenderPackets<TL, TS, OrthographicProjection>(frame, newSampler, samplesPerPixel, image, options)
+            : RenderPackets<TL, TS, PerspectiveProjection>(frame, newSampler, samplesPerPixel, image, options);
 
     private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RenderOptions options)
         where TL : struct, ILanes<TL>

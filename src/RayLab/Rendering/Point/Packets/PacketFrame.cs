@@ -115,7 +115,7 @@ internal sealed class PacketFrame
     public static bool TryCreate(Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
     {
         frame = null;
-        double depthPerT = plane.IsOrthographic ? 1 : plane.Distance;
+        double depthPerT = plane.DepthPerT;
         double pixel = Math.Min(plane.A.Length / plane.Width, plane.B.Length / plane.Height);
         var kept = new List<Sphere>();
         for (int k = 0; k < scene.Spheres.Count; k++)
