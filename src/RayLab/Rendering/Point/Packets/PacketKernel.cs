@@ -1,7 +1,5 @@
-using System.Buffers.Binary;
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Imaging;
@@ -31,11 +29,8 @@ internal static class PacketKernel
         where TP : struct, IProjection
     {
         int lanes = TL.Count;
-        var buffer = default(WordBuffer);
-        Span<uint> words = buffer;
         int retraced = 0;
         TL scale = TL.Broadcast(256f / samplesPerPixel);
-        TL top = TL.Broadcast(255f);
         for (int x0 = 0; x0 < frame.Width; x0 += lanes)
         {
             sampler.BeginPacket(x0, row);
@@ -46,19 +41,8 @@ internal static class PacketKernel
                 retraced += again;
             }
 
-            // The lab's 8-bit rule, ⌊256·I⌋ clamped to 0..255 (the sums are never negative), packed in SIMD as
-            // one word per pixel, R G B 0. Each pixel but the packet's last is written as its 4-byte word (the
-            // next pixel overwrites the zero): one store per pixel rather than three.
-            TL.StoreRgb(TL.Min(sum.R * scale, top), TL.Min(sum.G * scale, top), TL.Min(sum.B * scale, top), words);
-            int last = Math.Min(lanes, frame.Width - x0) - 1;
-            Span<byte> bytes = MemoryMarshal.AsBytes(pixels.Slice(x0, last + 1));
-            for (int lane = 0; lane < last; lane++)
-            {
-                BinaryPrimitives.WriteUInt32LittleEndian(bytes[(3 * lane)..], words[lane]);
-            }
-
-            uint word = words[last];
-            pixels[x0 + last] = new Rgb24((byte)word, (byte)(word >> 8), (byte)(word >> 16));
+            // The lab's 8-bit rule of each pixel's mean, sum/n, as sum · (256/n).
+            EightBit.WriteLanes(sum.R, sum.G, sum.B, scale, pixels.Slice(x0, Math.Min(lanes, frame.Width - x0)));
         }
 
         return retraced;
@@ -205,13 +189,6 @@ internal static class PacketKernel
 
         return new LaneColour<TL>(TL.Load(values[(2 * count)..]), TL.Load(values[(3 * count)..]), TL.Load(values[(4 * count)..]), lanes);
     }
-}
-
-/// <summary>Room for one packed RGB word per lane of the widest packet, on the stack.</summary>
-[InlineArray(16)]
-internal struct WordBuffer
-{
-    private uint _element;
 }
 
 /// <summary>One sample's colour in every lane, and the lanes whose float answer was uncertain.</summary>
