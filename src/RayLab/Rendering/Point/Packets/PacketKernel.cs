@@ -11,7 +11,8 @@ namespace RayLab.Rendering.Point.Packets;
 /// 8 with AVX2, 4 with SSE or NEON). For each sample index it makes the packet's rays, tests every sphere in
 /// float and keeps the nearest hit's colour per lane; lanes whose float answer is not certain (see
 /// <see cref="PacketFrame"/>) are traced again in double. The work per ray is the scalar path's
-/// (<see cref="Scene.Trace"/>), so a student can read that one and trust this one.
+/// (<see cref="Scene.Trace"/>), so a student can read that one and trust this one; like it, the kernel relies on
+/// the scene's flat shading and takes each sphere's colour from <see cref="Scene.ColourOf"/>.
 /// </summary>
 internal static class PacketKernel
 {
