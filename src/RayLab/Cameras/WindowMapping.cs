@@ -20,13 +20,25 @@ internal static class WindowMapping
     /// <param name="x">X, in pixels from the image's left edge.</param>
     /// <param name="width">The image width W.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static double Alpha(double x, int width) => x / width;
+    public static double Alpha(double x, int width) => Alpha(x, (double)width);
 
     /// <summary>β = 1 − Y/H.</summary>
     /// <param name="y">Y, in pixels from the image's top edge.</param>
     /// <param name="height">The image height H.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static double Beta(double y, int height) => 1.0 - (y / height);
+    public static double Beta(double y, int height) => Beta(y, (double)height);
+
+    /// <summary>α = X/W for a grid finer than the pixels: X and W counted in steps of a power of two of a pixel (exactly the α of X/step, W/step).</summary>
+    /// <param name="x">X, in steps from the image's left edge.</param>
+    /// <param name="width">The image width W, in steps.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static double Alpha(double x, double width) => x / width;
+
+    /// <summary>β = 1 − Y/H for a grid finer than the pixels: Y and H counted in steps of a power of two of a pixel.</summary>
+    /// <param name="y">Y, in steps from the image's top edge.</param>
+    /// <param name="height">The image height H, in steps.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static double Beta(double y, double height) => 1.0 - (y / height);
 
     /// <summary>The lane form's per-packet α term x/W for lanes x0, x0 + 1, …; <paramref name="inverseWidth"/> is 1/W.</summary>
     /// <param name="x0">The packet's first pixel column.</param>

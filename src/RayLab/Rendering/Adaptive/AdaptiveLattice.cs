@@ -16,6 +16,7 @@ internal sealed class AdaptiveLattice
     private readonly Scene _scene;
     private readonly ImagePlane _plane;
     private readonly long _size;
+    private readonly double _latticeWidth, _latticeHeight;
     private readonly int[] _corners;
     private readonly Intensity[] _palette;
     private readonly ConcurrentDictionary<long, Lazy<Intensity>> _edges = new();
@@ -26,6 +27,8 @@ internal sealed class AdaptiveLattice
         _scene = scene;
         _plane = plane;
         _size = 1L << (maxDepth + 1);
+        _latticeWidth = plane.Width * (double)_size;
+        _latticeHeight = plane.Height * (double)_size;
         int stride = plane.Width + 1;
         // The scene is flat-shaded: a point's value is the ColourOf what it hit, so a corner keeps that index + 1
         // (0 the background, k + 1 sphere k) and this palette holds the colours.
@@ -75,8 +78,7 @@ internal sealed class AdaptiveLattice
 
     public Intensity Trace(long lx, long ly)
     {
-        // Lattice point (lx, ly) is at pixel coordinates (lx, ly)/size; size is a power of two, so the division is exact.
-        Ray ray = _plane.GetRayAt((double)lx / _size, (double)ly / _size);
+        Ray ray = _plane.GetRay(WindowMapping.Alpha(lx, _latticeWidth), WindowMapping.Beta(ly, _latticeHeight));
         return _scene.Trace(ray, _plane.TMin, _plane.TMax);
     }
 
