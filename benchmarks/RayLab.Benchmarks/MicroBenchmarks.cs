@@ -49,14 +49,14 @@ public class IntersectionBenchmarks
     public int Packet512RowPerSample()
     {
         var sampler = new JitteredLanes<Lanes512>(_jittered);
-        return PacketKernel.RenderRow<Lanes512, JitteredLanes<Lanes512>, PerspectiveRays>(_frame, ref sampler, 16, 540, _row);
+        return PacketKernel.RenderRow<Lanes512, JitteredLanes<Lanes512>, PerspectiveProjection>(_frame, ref sampler, 16, 540, _row);
     }
 
     [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
     public int Packet256RowPerSample()
     {
         var sampler = new JitteredLanes<Lanes256>(_jittered);
-        return PacketKernel.RenderRow<Lanes256, JitteredLanes<Lanes256>, PerspectiveRays>(_frame, ref sampler, 16, 540, _row);
+        return PacketKernel.RenderRow<Lanes256, JitteredLanes<Lanes256>, PerspectiveProjection>(_frame, ref sampler, 16, 540, _row);
     }
 }
 

@@ -87,22 +87,13 @@ public readonly struct Intensity : IEquatable<Intensity>
 
     /// <summary>
     /// The lab's conversion of one component to an 8-bit level (section 2.2): <c>level = int(256 · I)</c>,
-    /// clamped to 0..255 (the lab's rule gives 256 at I = 1), and 0 for NaN. Every pixel writer uses this.
+    /// clamped to 0..255 (the lab's rule gives 256 at I = 1), and 0 for NaN: <see cref="Imaging.EightBit.Level"/>,
+    /// which every pixel writer uses.
     /// </summary>
     /// <param name="component">A component value.</param>
     /// <returns>The level, 0..255.</returns>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static byte ToLevel(double component)
-    {
-        double scaled = component * 256.0;
-        // NaN fails both comparisons and lands on 0; +inf lands on 255.
-        if (!(scaled > 0))
-        {
-            return 0;
-        }
-
-        return scaled >= 255.0 ? (byte)255 : (byte)scaled;
-    }
+    public static byte ToLevel(double component) => Imaging.EightBit.Level(component);
 
     /// <inheritdoc />
     public bool Equals(Intensity other) => R.Equals(other.R) && G.Equals(other.G) && B.Equals(other.B);

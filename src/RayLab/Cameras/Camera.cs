@@ -141,7 +141,7 @@ public abstract class Camera
         Double3 v = Double3.Cross(w, u);
         Window window = GetWindow((double)width / height);
         window.Validate(Window is null ? WindowSource : nameof(Window));
-        var plane = new ImagePlane(width, height, Position, u, v, w, window, PlaneDistance, IsOrthographic, NearPlane, FarPlane);
+        ImagePlane plane = CreatePlane(width, height, u, v, w, window);
         CheckRays(plane);
         return plane;
     }
@@ -153,8 +153,17 @@ public abstract class Camera
     /// <summary>The property the window comes from when <see cref="Window"/> is null (for error messages).</summary>
     protected abstract string WindowSource { get; }
 
-    /// <summary>The distance s from <see cref="Position"/> to the projection plane (1 where it does not matter).</summary>
-    protected virtual double PlaneDistance => 1;
+    /// <summary>
+    /// The image plane with this camera's projection: the frame u, v, w at <see cref="Position"/>, the window,
+    /// and the near and far planes.
+    /// </summary>
+    /// <param name="width">The image width.</param>
+    /// <param name="height">The image height.</param>
+    /// <param name="u">Camera right.</param>
+    /// <param name="v">Camera up.</param>
+    /// <param name="w">Camera backward.</param>
+    /// <param name="window">The checked window.</param>
+    private protected abstract ImagePlane CreatePlane(int width, int height, Double3 u, Double3 v, Double3 w, Window window);
 
     // Every ray must be usable: origin finite and |d|² a finite, normal double (a sphere test squares d). |d|² is
     // convex over the window, so its corners bound it from above; from below, d·w = −s bounds it by s².

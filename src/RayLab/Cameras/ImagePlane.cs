@@ -5,18 +5,21 @@ namespace RayLab.Cameras;
 
 /// <summary>
 /// A camera's view of a W×H image, checked and precomputed by <see cref="Camera.GetImagePlane"/>: the lab's
-/// frame u, v, w, the window (u0, v0, u1, v1), the vectors a, b, c of section 3.2, and the mapping from a
-/// pixel sample to a ray.
+/// frame u, v, w, the window (u0, v0, u1, v1), the vectors a, b, c of section 3.2, and the camera's projection
+/// both ways — a pixel sample to a ray (<see cref="GetPixelRay"/>) and a world point to pixel coordinates
+/// (<see cref="ToPixel"/>).
 /// </summary>
 /// <remarks>
 /// Pixel to window: a sample at (sx, sy) ∈ [0, 1)² inside pixel (x, row) has
 /// <c>α = (x + sx)/W</c> and <c>β = 1 − (row + sy)/H</c>; row 0 is the top row and the pixel centre is
-/// sx = sy = 0.5. Each α is computed from the integer pixel index, never by accumulating steps.
+/// sx = sy = 0.5. Each α is computed from the integer pixel index, never by accumulating steps. Window to ray is
+/// the projection's: each camera's plane is an <c>ImagePlane&lt;TProjection&gt;</c> whose projection type
+/// (<see cref="OrthoCamera"/>: orthographic, <see cref="PerspectiveCamera"/>: perspective) holds the formulas.
 /// </remarks>
-public sealed class ImagePlane
+public abstract class ImagePlane
 {
-    internal ImagePlane(int width, int height, Double3 eye, Double3 u, Double3 v, Double3 w, Window window,
-        double distance, bool orthographic, double near, double far)
+    private protected ImagePlane(int width, int height, Double3 eye, Double3 u, Double3 v, Double3 w, Window window,
+        double distance, bool orthographic, Double3 corner, double depthPerT, double near, double far)
     {
         Width = width;
         Height = height;
@@ -29,12 +32,14 @@ public sealed class ImagePlane
         IsOrthographic = orthographic;
         A = window.Width * u;
         B = window.Height * v;
-        C = (window.U0 * u) + (window.V0 * v) - (orthographic ? Double3.Zero : distance * w);
-        // A hit is visible when its depth along the gaze lies in [near, far]. The gaze component of every
-        // direction this plane makes is the same: s for the perspective ray p − e, 1 for the orthographic −w.
-        double depthPerT = orthographic ? 1 : distance;
+        C = corner;
+        // A hit is visible when its depth along the gaze lies in [near, far]; every ray of this plane has the
+        // same depth per unit of t.
+        DepthPerT = depthPerT;
         TMin = near / depthPerT;
         TMax = far / depthPerT;
+        PixelWidth = window.Width / width;
+        PixelHeight = window.Height / height;
     }
 
     /// <summary>The image width W in pixels.</summary>
@@ -82,17 +87,26 @@ public sealed class ImagePlane
     /// <summary>The largest visible ray parameter: the far plane's depth in units of t.</summary>
     public double TMax { get; }
 
+    /// <summary>The depth along the gaze per unit of the ray parameter t (s for the perspective camera, 1 for the orthographic).</summary>
+    internal double DepthPerT { get; }
+
+    /// <summary>The window's width per pixel, su = (u1 − u0)/W.</summary>
+    internal double PixelWidth { get; }
+
+    /// <summary>The window's height per pixel, sv = (v1 − v0)/H.</summary>
+    internal double PixelHeight { get; }
+
     /// <summary>α = (x + sx)/W for a sample sx ∈ [0, 1) inside pixel column x.</summary>
     /// <param name="x">The pixel column.</param>
     /// <param name="sx">The sample's offset inside the pixel, left to right.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public double Alpha(int x, double sx) => (x + sx) / Width;
+    public double Alpha(int x, double sx) => WindowMapping.Alpha(x + sx, Width);
 
     /// <summary>β = 1 − (row + sy)/H for a sample sy ∈ [0, 1) inside pixel row <paramref name="row"/> (row 0 on top).</summary>
     /// <param name="row">The pixel row, 0 at the top.</param>
     /// <param name="sy">The sample's offset inside the pixel, top to bottom.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public double Beta(int row, double sy) => 1.0 - ((row + sy) / Height);
+    public double Beta(int row, double sy) => WindowMapping.Beta(row + sy, Height);
 
     /// <summary>
     /// The ray through window point (α, β) ∈ [0, 1]², α left to right and β bottom to top. Perspective: the
@@ -101,14 +115,16 @@ public sealed class ImagePlane
     /// </summary>
     /// <param name="alpha">α, the horizontal window coordinate.</param>
     /// <param name="beta">β, the vertical window coordinate.</param>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Ray GetRay(double alpha, double beta)
-    {
-        Double3 onWindow = C + (alpha * A) + (beta * B);
-        return IsOrthographic
-            ? new Ray(Eye + onWindow, -W)
-            : new Ray(Eye, onWindow);
-    }
+    public abstract Ray GetRay(double alpha, double beta);
+
+    /// <summary>
+    /// The ray through the point (<paramref name="x"/>, <paramref name="y"/>) of the image in pixel coordinates:
+    /// X to the right, Y down, pixel (x, row) covering [x, x + 1] × [row, row + 1]; the window point is
+    /// α = X/W, β = 1 − Y/H.
+    /// </summary>
+    /// <param name="x">X, in pixels from the image's left edge.</param>
+    /// <param name="y">Y, in pixels from the image's top edge.</param>
+    public Ray GetRayAt(double x, double y) => GetRay(WindowMapping.Alpha(x, Width), WindowMapping.Beta(y, Height));
 
     /// <summary>The ray through the sample (sx, sy) of pixel (x, row).</summary>
     /// <param name="x">The pixel column.</param>
@@ -116,4 +132,34 @@ public sealed class ImagePlane
     /// <param name="sx">Offset inside the pixel, 0..1 left to right.</param>
     /// <param name="sy">Offset inside the pixel, 0..1 top to bottom.</param>
     public Ray GetPixelRay(int x, int row, double sx, double sy) => GetRay(Alpha(x, sx), Beta(row, sy));
+
+    /// <summary>
+    /// Where a world point is seen: its pixel coordinates (X, Y), X to the right and Y down as in
+    /// <see cref="GetRayAt"/>, so that the ray through them passes through the point. For a perspective camera
+    /// the point must lie in front of the eye (its depth along the gaze positive).
+    /// </summary>
+    /// <param name="world">The point.</param>
+    /// <returns>X and Y in pixels.</returns>
+    public (double X, double Y) ToPixel(Double3 world)
+    {
+        (double x, double y, double z) = ToPixelHomogeneous(ToCamera(world), 1);
+        return (x / z, y / z);
+    }
+
+    /// <summary>The camera coordinates (du, dv, dw) = ((x − e)·u, (x − e)·v, (x − e)·w) of a world point x; its depth along the gaze is −dw.</summary>
+    /// <param name="world">The point.</param>
+    internal Double3 ToCamera(Double3 world)
+    {
+        Double3 d = world - Eye;
+        return new Double3(Double3.Dot(d, U), Double3.Dot(d, V), Double3.Dot(d, W));
+    }
+
+    /// <summary>
+    /// The projection's 3×4 matrix applied to (<paramref name="v"/>, <paramref name="w4"/>) in camera coordinates
+    /// (a point for w4 = 1, a direction for w4 = 0): homogeneous pixel coordinates (Xh, Yh, Zh), the point's
+    /// pixel coordinates being (Xh/Zh, Yh/Zh).
+    /// </summary>
+    /// <param name="v">(du, dv, dw).</param>
+    /// <param name="w4">The homogeneous weight.</param>
+    internal abstract (double X, double Y, double Z) ToPixelHomogeneous(Double3 v, double w4);
 }

@@ -1,3 +1,5 @@
+using RayLab.Geometry;
+
 namespace RayLab.Cameras;
 
 /// <summary>
@@ -43,6 +45,10 @@ public sealed class OrthoCamera : Camera
 
         return Cameras.Window.Centered(ViewHeight * aspectRatio, ViewHeight);
     }
+
+    /// <summary>The plane with the orthographic projection (<see cref="OrthographicProjection"/>); its distance s is 1 (unused).</summary>
+    private protected override ImagePlane CreatePlane(int width, int height, Double3 u, Double3 v, Double3 w, Window window) =>
+        new ImagePlane<OrthographicProjection>(width, height, Position, u, v, w, window, 1, NearPlane, FarPlane);
 
     /// <inheritdoc />
     protected override string WindowSource => nameof(ViewHeight);

@@ -1,3 +1,5 @@
+using RayLab.Geometry;
+
 namespace RayLab.Cameras;
 
 /// <summary>
@@ -23,8 +25,9 @@ public sealed class PerspectiveCamera : Camera
     /// <inheritdoc />
     public override bool IsOrthographic => false;
 
-    /// <inheritdoc />
-    protected override double PlaneDistance => Distance;
+    /// <summary>The plane with the perspective projection (<see cref="PerspectiveProjection"/>) at distance <see cref="Distance"/>.</summary>
+    private protected override ImagePlane CreatePlane(int width, int height, Double3 u, Double3 v, Double3 w, Window window) =>
+        new ImagePlane<PerspectiveProjection>(width, height, Position, u, v, w, window, Distance, NearPlane, FarPlane);
 
     /// <summary>
     /// The explicit window, or the centred one with <c>(v1 − v0)/(2 s) = tan(Fov/2)</c> and

@@ -5,7 +5,7 @@ namespace RayLab.Imaging;
 /// <summary>
 /// The lab's image ("obraz", section 2.2): W×H pixels of 8-bit RGB, kept as tightly packed RGB24 rows, top
 /// row first — the layout ImageSharp's <c>Image.LoadPixelData&lt;Rgb24&gt;</c> takes. Intensities are
-/// converted on the way in by the lab's rule (<see cref="Intensity.ToLevel"/>).
+/// converted on the way in by the lab's rule (<see cref="EightBit.Level"/>).
 /// </summary>
 public sealed class Image
 {

@@ -3,7 +3,7 @@ namespace RayLab.Imaging;
 /// <summary>
 /// How far an image is from the exact image, in 8-bit levels. The error of one channel of one pixel is its
 /// level minus the exact image's level, both by the lab's rule <c>int(256·I)</c>
-/// (<see cref="Intensity.ToLevel"/>): so "every pixel within one level of the exact image" means every byte
+/// (<see cref="EightBit.Level"/>): so "every pixel within one level of the exact image" means every byte
 /// of the two pictures differs by at most 1, which anyone can check with the two files, and a perfect render
 /// scores 0.
 /// </summary>

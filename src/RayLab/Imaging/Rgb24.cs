@@ -9,8 +9,8 @@ namespace RayLab.Imaging;
 [StructLayout(LayoutKind.Sequential, Pack = 1)]
 public readonly record struct Rgb24(byte R, byte G, byte B)
 {
-    /// <summary>Converts an intensity by the lab's rule <c>int(256·I)</c> clamped to 0..255 (<see cref="Intensity.ToLevel"/>).</summary>
+    /// <summary>Converts an intensity by the lab's rule <c>int(256·I)</c> clamped to 0..255 (<see cref="EightBit.Level"/>).</summary>
     /// <param name="intensity">The intensity.</param>
     public static Rgb24 FromIntensity(Intensity intensity) =>
-        new(Intensity.ToLevel(intensity.R), Intensity.ToLevel(intensity.G), Intensity.ToLevel(intensity.B));
+        new(EightBit.Level(intensity.R), EightBit.Level(intensity.G), EightBit.Level(intensity.B));
 }

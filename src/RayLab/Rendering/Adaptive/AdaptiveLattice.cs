@@ -8,7 +8,8 @@ namespace RayLab.Rendering.Adaptive;
 /// The points an adaptive render traces, each once: the (W+1)×(H+1) pixel corners, traced up front; points on
 /// pixel edges, shared between the two pixels beside them (and so between threads); and points inside a
 /// pixel, kept only while that pixel is evaluated. A corner is kept as the index of what it hit (4 bytes, not
-/// a 24-byte intensity: the scenes' colours are flat), so the grid is 8 MB at 1920×1080.
+/// a 24-byte intensity: it relies on the scene's flat shading, <see cref="Scene.ColourOf"/>), so the grid is 8 MB
+/// at 1920×1080.
 /// </summary>
 internal sealed class AdaptiveLattice
 {
@@ -29,15 +30,16 @@ internal sealed class AdaptiveLattice
         _latticeWidth = plane.Width * (double)_size;
         _latticeHeight = plane.Height * (double)_size;
         int stride = plane.Width + 1;
-        // Index 0 is the background, k + 1 sphere k.
-        _palette = [scene.Background, .. scene.Spheres.Select(sphere => sphere.Color * scene.Ambient)];
+        // The scene is flat-shaded: a point's value is the ColourOf what it hit, so a corner keeps that index + 1
+        // (0 the background, k + 1 sphere k) and this palette holds the colours.
+        _palette = [.. Enumerable.Range(-1, scene.Spheres.Count + 1).Select(scene.ColourOf)];
         _corners = new int[(long)stride * (plane.Height + 1)];
         Parallel.For(0, plane.Height + 1, options, j =>
         {
             Span<int> row = _corners.AsSpan(j * stride, stride);
             for (int i = 0; i < row.Length; i++)
             {
-                Ray ray = _plane.GetRay(i * _size / _latticeWidth, 1.0 - (j * _size / _latticeHeight));
+                Ray ray = _plane.GetRayAt(i, j);
                 row[i] = _scene.Nearest(ray, _plane.TMin, _plane.TMax) + 1;
             }
         });
@@ -76,7 +78,7 @@ internal sealed class AdaptiveLattice
 
     public Intensity Trace(long lx, long ly)
     {
-        Ray ray = _plane.GetRay(lx / _latticeWidth, 1.0 - (ly / _latticeHeight));
+        Ray ray = _plane.GetRay(WindowMapping.Alpha(lx, _latticeWidth), WindowMapping.Beta(ly, _latticeHeight));
         return _scene.Trace(ray, _plane.TMin, _plane.TMax);
     }
 

@@ -6,7 +6,9 @@ namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
 /// The lab's adaptive antialiasing (section 4.1.4) as a renderer: the pixel corners are traced once for the
-/// whole image, then each pixel is subdivided where its values disagree (<see cref="AdaptivePixel"/>).
+/// whole image, then each pixel is subdivided where its values disagree (<see cref="AdaptivePixel"/>). It relies
+/// on the scene's flat shading: a corner is kept as the index of what it hit, its value that index's
+/// <see cref="Scene.ColourOf"/> (<see cref="AdaptiveLattice"/>).
 /// </summary>
 internal static class AdaptiveRenderer
 {

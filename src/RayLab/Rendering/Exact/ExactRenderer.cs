@@ -11,8 +11,8 @@ namespace RayLab.Rendering.Exact;
 /// RayLab's "method of our own" for antialiasing (lab section 5), and the truth the samplers are measured against.
 /// </summary>
 /// <remarks>
-/// <para><b>Why it can be exact.</b> Spheres have flat colours (colour × ambient), so the picture is made of
-/// regions of one colour, and the colour can only change where a ray touches a sphere (the sphere's outline),
+/// <para><b>Why it can be exact.</b> It relies on the scene's flat shading: a sample's value is the
+/// <see cref="Scene.ColourOf"/> the sphere it hits (colour × ambient), so the picture is made of regions of one colour, and the colour can only change where a ray touches a sphere (the sphere's outline),
 /// where a hit crosses the near or the far plane (the circle where that plane cuts a sphere), or where two
 /// spheres are hit at the same point (the circle where they meet). Every one of these borders is the picture of
 /// a circle, which in pixel coordinates is an ellipse: a circle for a sphere seen by the orthographic camera, an

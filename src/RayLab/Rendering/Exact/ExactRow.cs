@@ -214,11 +214,11 @@ internal sealed class ExactRow
         _values[(3 * x) + 2] += c.B * area;
     }
 
-    // The colour at pixel coordinates (X, Y): window point α = X/W, β = 1 − Y/H.
+    // The colour at pixel coordinates (X, Y): the ColourOf what the ray there hits (flat shading).
     private Intensity Probe(double x, double y)
     {
-        Ray ray = _plane.GetRay(x / _width, 1 - (y / _plane.Height));
-        return _scene.Trace(ray, _plane.TMin, _plane.TMax);
+        Ray ray = _plane.GetRayAt(x, y);
+        return _scene.ColourOf(_scene.Nearest(ray, _plane.TMin, _plane.TMax));
     }
 
     private readonly record struct Branch(double X, int Outline, int Sign);

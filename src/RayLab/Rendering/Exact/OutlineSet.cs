@@ -39,12 +39,12 @@ internal sealed class OutlineSet
     /// <exception cref="UnsupportedSceneException">
     /// A sphere that visible rays can reach extends behind a perspective camera's eye (or within 1e-4 of its
     /// radius of the plane through the eye): its outline is not an ellipse. Or the zoom is so high that double
-    /// rounding alone moves its picture by more than 1e-6 of a pixel (<see cref="PixelProjection.RoundingInPixels"/>).
+    /// rounding alone moves its picture by more than 1e-6 of a pixel (<see cref="OutlineProjection.RoundingInPixels"/>).
     /// </exception>
     public static OutlineSet Build(Scene scene, ImagePlane plane)
     {
-        var projection = new PixelProjection(plane);
-        double depthPerT = plane.IsOrthographic ? 1 : plane.Distance;
+        var projection = new OutlineProjection(plane);
+        double depthPerT = plane.DepthPerT;
         double near = plane.TMin * depthPerT, far = plane.TMax * depthPerT;
         var kept = new List<(Double3 Centre, double Radius)>();
         var outlines = new List<Outline>();

@@ -11,7 +11,8 @@ namespace RayLab.Rendering.Point;
 /// The point-sampling renderer (lab section 4): a <see cref="Parallel.For(int, int, ParallelOptions, Action{int})"/>
 /// over rows (the lab's render loop), each pixel the mean of its samples, each row written straight into the
 /// image's row span. The SIMD packet kernel (<see cref="PacketKernel"/>) renders where the hardware and the
-/// frame allow it, the scalar double loop (<see cref="RenderPixel"/>) everywhere else; every sample is
+/// frame allow it, the scalar double loop (<see cref="RenderPixel(Scene, ImagePlane, IPixelSampler, int, int)"/>) everywhere else; each loop is
+/// compiled for the camera's projection (<see cref="IProjection"/>), chosen once per render. Every sample is
 /// independent of the thread that takes it, so the bytes are the same whatever the thread count.
 /// </summary>
 internal static class PointRenderer
@@ -58,14 +59,19 @@ internal static class PointRenderer
         };
     }
 
-    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
+    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options) => plane.IsOrthographic
+        ? RenderScalar<OrthographicProjection>(scene, plane, sampler, image, options)
+        : RenderScalar<PerspectiveProjection>(scene, plane, sampler, image, options);
+
+    private static long RenderScalar<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
+        where TP : struct, IProjection
     {
         Parallel.For(0, image.Height, options.Parallel, row =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
             for (int x = 0; x < pixels.Length; x++)
             {
-                pixels[x] = Rgb24.FromIntensity(RenderPixel(scene, plane, sampler, x, row));
+                pixels[x] = Rgb24.FromIntensity(RenderPixel<TP>(scene, plane, sampler, x, row));
             }
 
             options.Progress?.CompleteRow();
@@ -85,8 +91,8 @@ internal static class PointRenderer
     private static long RenderPackets<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RenderOptions options)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL> => frame.IsOrthographic
-            ? RenderPackets<TL, TS, OrthographicRays>(frame, newSampler, samplesPerPixel, image, options)
-            : RenderPackets<TL, TS, PerspectiveRays>(frame, newSampler, samplesPerPixel, image, options);
+            ? RenderPackets<TL, TS, OrthographicProjection>(frame, newSampler, samplesPerPixel, image, options)
+            : RenderPackets<TL, TS, PerspectiveProjection>(frame, newSampler, samplesPerPixel, image, options);
 
     private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RenderOptions options)
         where TL : struct, ILanes<TL>
@@ -110,14 +116,20 @@ internal static class PointRenderer
     }
 
     /// <summary>The mean of a pixel's samples, in linear intensity (before the 8-bit rule): the scalar double loop.</summary>
-    public static Intensity RenderPixel(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row)
+    public static Intensity RenderPixel(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row) => plane.IsOrthographic
+        ? RenderPixel<OrthographicProjection>(scene, plane, sampler, x, row)
+        : RenderPixel<PerspectiveProjection>(scene, plane, sampler, x, row);
+
+    /// <summary>The scalar double loop for one pixel, compiled for the plane's projection <typeparamref name="TP"/>.</summary>
+    private static Intensity RenderPixel<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row)
+        where TP : struct, IProjection
     {
         int n = sampler.SamplesPerPixel;
         double r = 0, g = 0, b = 0;
         for (int i = 0; i < n; i++)
         {
             SamplePoint s = sampler.GetSample(x, row, i);
-            Ray ray = plane.GetPixelRay(x, row, s.X, s.Y);
+            Ray ray = TP.GetRay(plane, plane.Alpha(x, s.X), plane.Beta(row, s.Y));
             Intensity value = scene.Trace(ray, plane.TMin, plane.TMax);
             r += value.R;
             g += value.G;

@@ -5,10 +5,15 @@ namespace RayLab.Rendering.Point.Packets;
 
 /// <summary>
 /// One frame's constants for the packet kernel, in float: the window vectors a, b, c, and per sphere its
-/// offset from the eye, r², colour × ambient and the error bound that decides when a float answer is
-/// certain. <see cref="TryCreate"/> says whether float is good enough for the frame at all.
+/// offset from the eye, r², colour and the error bound that decides when a float answer is certain.
+/// <see cref="TryCreate"/> says whether float is good enough for the frame at all.
 /// </summary>
 /// <remarks>
+/// <para>
+/// The kernel relies on the scene's flat shading (<see cref="Scene"/>): a sample's value is the
+/// <see cref="Scene.ColourOf"/> of the sphere it hits, so each sphere's colour is one constant here and the
+/// background another, both taken from <see cref="Scene.ColourOf"/>.
+/// </para>
 /// <para>
 /// The kernel tests each ray in float with the stable discriminant <c>Δ = r² − |f|²</c>,
 /// <c>f = (o − C) − ((o − C)·d / d·d) d</c> (Ray Tracing Gems, ch. 7). Its rounding error is below
@@ -36,7 +41,7 @@ internal sealed class PacketFrame
     /// <summary>The most (in pixels) that float rounding may move a ray's direction or origin: 1/50 pixel.</summary>
     private const double Resolution = 0.02;
 
-    private PacketFrame(ImagePlane plane, Scene scene, Sphere[] spheres)
+    private PacketFrame(ImagePlane plane, Scene scene, int[] kept)
     {
         Plane = plane;
         Scene = scene;
@@ -47,7 +52,8 @@ internal sealed class PacketFrame
         B = plane.B;
         C = plane.C;
         Direction = plane.IsOrthographic ? -plane.W : Double3.Zero;
-        Background = Vector(scene.Background);
+        Background = Vector(scene.ColourOf(-1));
+        Sphere[] spheres = [.. kept.Select(index => scene.Spheres[index])];
         Spheres = new SphereConstants[spheres.Length];
         double[] reach = new double[spheres.Length];
         for (int k = 0; k < spheres.Length; k++)
@@ -55,7 +61,7 @@ internal sealed class PacketFrame
             Sphere sphere = spheres[k];
             (Double3 offset, double largest) = OffsetOf(sphere, plane);
             double bound = 32 * Epsilon * ((sphere.Radius * sphere.Radius) + (largest * largest));
-            Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(sphere.Color * scene.Ambient));
+            Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(scene.ColourOf(kept[k])));
             reach[k] = 3e-3 * (sphere.Radius + largest);
         }
 
@@ -115,9 +121,9 @@ internal sealed class PacketFrame
     public static bool TryCreate(Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
     {
         frame = null;
-        double depthPerT = plane.IsOrthographic ? 1 : plane.Distance;
+        double depthPerT = plane.DepthPerT;
         double pixel = Math.Min(plane.A.Length / plane.Width, plane.B.Length / plane.Height);
-        var kept = new List<Sphere>();
+        var kept = new List<int>();
         for (int k = 0; k < scene.Spheres.Count; k++)
         {
             Sphere sphere = scene.Spheres[k];
@@ -146,7 +152,7 @@ internal sealed class PacketFrame
                 return false;
             }
 
-            kept.Add(sphere);
+            kept.Add(k);
         }
 
         double direction = plane.C.Length + plane.A.Length + plane.B.Length;
@@ -182,7 +188,7 @@ internal sealed class PacketFrame
 /// <param name="Offset">e − C (perspective) or e + c − C (orthographic).</param>
 /// <param name="RadiusSquared">r².</param>
 /// <param name="InverseBound">1 / the error bound of Δ: |Δ|·this ≤ 1 is uncertain in float.</param>
-/// <param name="Colour">Colour × ambient.</param>
+/// <param name="Colour">The sphere's <see cref="Scene.ColourOf"/>.</param>
 internal readonly record struct SphereConstants(Float3 Offset, float RadiusSquared, float InverseBound, Float3 Colour);
 
 /// <summary>Three floats: a frame constant the kernel broadcasts into lanes.</summary>

@@ -1,7 +1,5 @@
-using System.Buffers.Binary;
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Imaging;
@@ -13,7 +11,8 @@ namespace RayLab.Rendering.Point.Packets;
 /// 8 with AVX2, 4 with SSE or NEON). For each sample index it makes the packet's rays, tests every sphere in
 /// float and keeps the nearest hit's colour per lane; lanes whose float answer is not certain (see
 /// <see cref="PacketFrame"/>) are traced again in double. The work per ray is the scalar path's
-/// (<see cref="Scene.Trace"/>), so a student can read that one and trust this one.
+/// (<see cref="Scene.Trace"/>), so a student can read that one and trust this one; like it, the kernel relies on
+/// the scene's flat shading and takes each sphere's colour from <see cref="Scene.ColourOf"/>.
 /// </summary>
 internal static class PacketKernel
 {
@@ -31,11 +30,8 @@ internal static class PacketKernel
         where TP : struct, IProjection
     {
         int lanes = TL.Count;
-        var buffer = default(WordBuffer);
-        Span<uint> words = buffer;
         int retraced = 0;
         TL scale = TL.Broadcast(256f / samplesPerPixel);
-        TL top = TL.Broadcast(255f);
         for (int x0 = 0; x0 < frame.Width; x0 += lanes)
         {
             sampler.BeginPacket(x0, row);
@@ -46,19 +42,8 @@ internal static class PacketKernel
                 retraced += again;
             }
 
-            // The lab's 8-bit rule, ⌊256·I⌋ clamped to 0..255 (the sums are never negative), packed in SIMD as
-            // one word per pixel, R G B 0. Each pixel but the packet's last is written as its 4-byte word (the
-            // next pixel overwrites the zero): one store per pixel rather than three.
-            TL.StoreRgb(TL.Min(sum.R * scale, top), TL.Min(sum.G * scale, top), TL.Min(sum.B * scale, top), words);
-            int last = Math.Min(lanes, frame.Width - x0) - 1;
-            Span<byte> bytes = MemoryMarshal.AsBytes(pixels.Slice(x0, last + 1));
-            for (int lane = 0; lane < last; lane++)
-            {
-                BinaryPrimitives.WriteUInt32LittleEndian(bytes[(3 * lane)..], words[lane]);
-            }
-
-            uint word = words[last];
-            pixels[x0 + last] = new Rgb24((byte)word, (byte)(word >> 8), (byte)(word >> 16));
+            // The lab's 8-bit rule of each pixel's mean, sum/n, as sum · (256/n).
+            EightBit.WriteLanes(sum.R, sum.G, sum.B, scale, pixels.Slice(x0, Math.Min(lanes, frame.Width - x0)));
         }
 
         return retraced;
@@ -102,41 +87,21 @@ internal static class PacketKernel
         TL one = TL.Broadcast(1f);
         TL invWidth = TL.Broadcast(1f / frame.Width), invHeight = TL.Broadcast(1f / frame.Height);
         Float3 a = frame.A, b = frame.B, c = frame.C, direction = frame.Direction, background = frame.Background;
-        (TL ax, TL ay, TL az) = (TL.Broadcast(a.X), TL.Broadcast(a.Y), TL.Broadcast(a.Z));
-        (TL bx, TL by, TL bz) = (TL.Broadcast(b.X), TL.Broadcast(b.Y), TL.Broadcast(b.Z));
-        (TL cx, TL cy, TL cz) = (TL.Broadcast(c.X), TL.Broadcast(c.Y), TL.Broadcast(c.Z));
+        var window = new LaneWindow<TL>(new(a.X, a.Y, a.Z), new(b.X, b.Y, b.Z), new(c.X, c.Y, c.Z), new(direction.X, direction.Y, direction.Z));
         ReadOnlySpan<SphereConstants> spheres = frame.Spheres;
         bool checkOrder = frame.CheckDepthOrder;
-        // α = (x + sx)/W and β = 1 − (row + sy)/H (as in ImagePlane) are each one multiply-add per sample:
-        // α = sx/W + x/W and β = (1 − row/H) − sy/H, the second terms fixed for the packet.
-        TL left = (TL.Broadcast(x0) + TL.Indices) * invWidth;
-        TL rowTop = TL.Broadcast((float)(1 - ((double)row / frame.Height)));
+        TL left = WindowMapping.PacketLeft(x0, invWidth);
+        TL rowTop = WindowMapping.RowTop<TL>(row, frame.Height);
         (TL backgroundRed, TL backgroundGreen, TL backgroundBlue) = (TL.Broadcast(background.X), TL.Broadcast(background.Y), TL.Broadcast(background.Z));
         TL accumulatedRed = default, accumulatedGreen = default, accumulatedBlue = default;
         uint retraced = 0;
         for (int index = 0; index < samplesPerPixel; index++)
         {
             sampler.Sample(index, out TL sx, out TL sy);
-            TL alpha = TL.MultiplyAdd(sx, invWidth, left);
-            TL beta = TL.NegatedMultiplyAdd(sy, invHeight, rowTop);
-            TL dx, dy, dz, ox, oy, oz;
-            if (TP.IsOrthographic)
-            {
-                // From the window point e + c + α a + β b along −w; the sphere offsets hold e + c − C.
-                (dx, dy, dz) = (TL.Broadcast(direction.X), TL.Broadcast(direction.Y), TL.Broadcast(direction.Z));
-                ox = TL.MultiplyAdd(alpha, ax, beta * bx);
-                oy = TL.MultiplyAdd(alpha, ay, beta * by);
-                oz = TL.MultiplyAdd(alpha, az, beta * bz);
-            }
-            else
-            {
-                // From e through the window point: d = c + α a + β b; the sphere offsets hold e − C.
-                dx = TL.MultiplyAdd(alpha, ax, TL.MultiplyAdd(beta, bx, cx));
-                dy = TL.MultiplyAdd(alpha, ay, TL.MultiplyAdd(beta, by, cy));
-                dz = TL.MultiplyAdd(alpha, az, TL.MultiplyAdd(beta, bz, cz));
-                (ox, oy, oz) = (default, default, default);
-            }
-
+            TL alpha = WindowMapping.Alpha(sx, invWidth, left);
+            TL beta = WindowMapping.Beta(sy, invHeight, rowTop);
+            TP.GetRays(window, alpha, beta, out Lanes3<TL> origin, out Lanes3<TL> ray);
+            (TL dx, TL dy, TL dz) = (ray.X, ray.Y, ray.Z);
             TL dd = TL.MultiplyAdd(dx, dx, TL.MultiplyAdd(dy, dy, dz * dz));
             TL rdd = one / dd;
             TL nearest = TL.Broadcast(float.NegativeInfinity);  // −t of the nearest hit so far (kept negated: saves a negation per sphere)
@@ -146,11 +111,9 @@ internal static class PacketKernel
             TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
             foreach (ref readonly SphereConstants sphere in spheres)
             {
-                TL fx = TL.Broadcast(sphere.Offset.X), fy = TL.Broadcast(sphere.Offset.Y), fz = TL.Broadcast(sphere.Offset.Z);
-                if (TP.IsOrthographic)
-                {
-                    (fx, fy, fz) = (fx + ox, fy + oy, fz + oz);
-                }
+                TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
+                TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
+                TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
 
                 TL half = TL.MultiplyAdd(fx, dx, TL.MultiplyAdd(fy, dy, fz * dz));   // (o − C)·d
                 TL along = half * rdd;
@@ -180,7 +143,7 @@ internal static class PacketKernel
             {
                 if (uncertain != 0)
                 {
-                    LaneColour<TL> exact = Retrace(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertain));
+                    LaneColour<TL> exact = Retrace<TL, TP>(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertain));
                     (red, green, blue) = (exact.R, exact.G, exact.B);
                     retraced |= exact.Unsure;
                     retracedCount += BitOperations.PopCount(exact.Unsure);
@@ -201,8 +164,9 @@ internal static class PacketKernel
 
     /// <summary>The lanes whose float answer is uncertain, traced again in double (<see cref="Scene.Trace"/>).</summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
-    private static LaneColour<TL> Retrace<TL>(PacketFrame frame, int x0, int row, TL sx, TL sy, LaneColour<TL> colour)
+    private static LaneColour<TL> Retrace<TL, TP>(PacketFrame frame, int x0, int row, TL sx, TL sy, LaneColour<TL> colour)
         where TL : struct, ILanes<TL>
+        where TP : struct, IProjection
     {
         int count = TL.Count;
         Span<float> values = stackalloc float[count * 5];
@@ -217,7 +181,7 @@ internal static class PacketKernel
         {
             int lane = BitOperations.TrailingZeroCount(rest);
 
-            Ray ray = plane.GetPixelRay(x0 + lane, row, values[lane], values[count + lane]);
+            Ray ray = TP.GetRay(plane, plane.Alpha(x0 + lane, values[lane]), plane.Beta(row, values[count + lane]));
             Intensity value = frame.Scene.Trace(ray, plane.TMin, plane.TMax);
             values[(2 * count) + lane] = (float)value.R;
             values[(3 * count) + lane] = (float)value.G;
@@ -226,13 +190,6 @@ internal static class PacketKernel
 
         return new LaneColour<TL>(TL.Load(values[(2 * count)..]), TL.Load(values[(3 * count)..]), TL.Load(values[(4 * count)..]), lanes);
     }
-}
-
-/// <summary>Room for one packed RGB word per lane of the widest packet, on the stack.</summary>
-[InlineArray(16)]
-internal struct WordBuffer
-{
-    private uint _element;
 }
 
 /// <summary>One sample's colour in every lane, and the lanes whose float answer was uncertain.</summary>
@@ -256,23 +213,4 @@ internal readonly struct FloatOnly : IPacketMode
 internal readonly struct RetraceInDouble : IPacketMode
 {
     public static bool Retraces => true;
-}
-
-/// <summary>The camera kind as a type, so the kernel is compiled once per projection without a branch per ray.</summary>
-internal interface IProjection
-{
-    /// <summary>True for parallel rays.</summary>
-    static abstract bool IsOrthographic { get; }
-}
-
-/// <summary>The perspective camera's rays: from the eye through the window.</summary>
-internal readonly struct PerspectiveRays : IProjection
-{
-    public static bool IsOrthographic => false;
-}
-
-/// <summary>The orthographic camera's rays: parallel, from the window.</summary>
-internal readonly struct OrthographicRays : IProjection
-{
-    public static bool IsOrthographic => true;
 }

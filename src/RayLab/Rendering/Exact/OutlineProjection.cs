@@ -4,36 +4,29 @@ using RayLab.Geometry;
 namespace RayLab.Rendering.Exact;
 
 /// <summary>
-/// The camera as a projective map from the camera's frame to pixel coordinates (X = α W to the right,
-/// Y = (1 − β) H down), and the projection of spheres and circles to <see cref="Outline"/>s.
+/// The projection of spheres and circles to <see cref="Outline"/>s in pixel coordinates (X = α W to the right,
+/// Y = (1 − β) H down), through the camera's own world → pixel map (<see cref="ImagePlane.ToPixel(Double3)"/>).
 /// </summary>
 /// <remarks>
 /// Camera coordinates of a point x are (du, dv, dw) = ((x − e)·u, (x − e)·v, (x − e)·w); its depth along the
-/// gaze is −dw. A point projects to the pixel coordinates (X, Y) = (Xh/Zh, Yh/Zh) of the 3×4 matrix
-/// this type applies; a sphere or a circle projects to the conic whose dual is <c>C* = M Q* Mᵀ</c>, where Q*
+/// gaze is −dw. A point projects to the pixel coordinates (X, Y) = (Xh/Zh, Yh/Zh) of the camera's 3×4 matrix M
+/// (<see cref="IProjection.ToPixel"/>); a sphere or a circle projects to the conic whose dual is <c>C* = M Q* Mᵀ</c>, where Q*
 /// is the dual quadric (a sphere: Σ r² eₖeₖᵀ − b bᵀ over the three axes; a circle of radius ρ: the same over
 /// two axes in its plane; b = (centre, 1)). From C* the ellipse's centre and shape follow directly, and this
 /// also works for a circle seen edge-on, whose picture is a segment.
 /// </remarks>
-internal readonly struct PixelProjection
+internal readonly struct OutlineProjection
 {
     private readonly ImagePlane _plane;
-    private readonly double _su, _sv; // window units per pixel, across and down
 
-    public PixelProjection(ImagePlane plane)
+    public OutlineProjection(ImagePlane plane)
     {
         _plane = plane;
-        _su = plane.Window.Width / plane.Width;
-        _sv = plane.Window.Height / plane.Height;
     }
 
     /// <summary>The camera coordinates (du, dv, dw) of a world point.</summary>
     /// <param name="world">The point.</param>
-    public Double3 ToCamera(Double3 world)
-    {
-        Double3 d = world - _plane.Eye;
-        return new Double3(Double3.Dot(d, _plane.U), Double3.Dot(d, _plane.V), Double3.Dot(d, _plane.W));
-    }
+    public Double3 ToCamera(Double3 world) => _plane.ToCamera(world);
 
     /// <summary>
     /// True when a sphere (camera coordinates) lies wholly outside one of the four planes through the eye and the
@@ -70,7 +63,7 @@ internal readonly struct PixelProjection
             size *= _plane.Distance / (-centre.Z - radius);
         }
 
-        return 1e-15 * (size + corners) / Math.Min(_su, _sv);
+        return 1e-15 * (size + corners) / Math.Min(_plane.PixelWidth, _plane.PixelHeight);
     }
 
     /// <summary>The outline of a sphere: where the rays tangent to it cross the window.</summary>
@@ -94,14 +87,14 @@ internal readonly struct PixelProjection
     private Outline Project(Double3 centre, ReadOnlySpan<Double3> axes)
     {
         // Work relative to the centre's own picture (x0, y0), so that nothing large cancels.
-        (double bx, double by, double bz) = Apply(centre, 1);
+        (double bx, double by, double bz) = _plane.ToPixelHomogeneous(centre, 1);
         double x0 = bx / bz, y0 = by / bz;
         bx -= x0 * bz;
         by -= y0 * bz;
         double cxx = -bx * bx, cxy = -bx * by, cyy = -by * by, cxz = -bx * bz, cyz = -by * bz, czz = -bz * bz;
         foreach (Double3 axis in axes)
         {
-            (double ax, double ay, double az) = Apply(axis, 0);
+            (double ax, double ay, double az) = _plane.ToPixelHomogeneous(axis, 0);
             ax -= x0 * az;
             ay -= y0 * az;
             cxx += ax * ax;
@@ -121,20 +114,5 @@ internal readonly struct PixelProjection
 
         double pcx = cxz / czz, pcy = cyz / czz;
         return Outline.FromShape(x0 + pcx, y0 + pcy, (cxx / lambda) + (pcx * pcx), (cxy / lambda) + (pcx * pcy), (cyy / lambda) + (pcy * pcy));
-    }
-
-    // The 3×4 matrix applied to (v, w4) in camera coordinates.
-    private (double X, double Y, double Z) Apply(Double3 v, double w4)
-    {
-        Window win = _plane.Window;
-        if (_plane.IsOrthographic)
-        {
-            // X = (du − u0)/su, Y = (v1 − dv)/sv: the ray through (X, Y) starts at e + du u + dv v.
-            return ((v.X - (win.U0 * w4)) / _su, ((win.V1 * w4) - v.Y) / _sv, w4);
-        }
-
-        // The point at depth −dw is seen at window point s·(du, dv)/depth: X = (s du/depth − u0)/su, and so on.
-        double s = _plane.Distance;
-        return ((v.X + (win.U0 / s * v.Z)) / _su, (-v.Y - (win.V1 / s * v.Z)) / _sv, -v.Z / s);
     }
 }
