@@ -6,7 +6,8 @@ namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
 /// The lab's adaptive antialiasing (section 4.1.4) as a renderer: the pixel corners are traced once for the
-/// whole image, then each pixel is subdivided where its values disagree (<see cref="AdaptivePixel"/>).
+/// whole image (<see cref="AdaptiveLattice"/>), then each pixel is subdivided where its values disagree
+/// (<see cref="AdaptivePixel"/>), a row per task, each thread with its own reusable buffers.
 /// </summary>
 internal static class AdaptiveRenderer
 {
@@ -15,39 +16,46 @@ internal static class AdaptiveRenderer
     {
         options.Progress?.Start(image.Height);
         var clock = Stopwatch.StartNew();
-        var lattice = new AdaptiveLattice(scene, plane, sampler.MaxDepth, options.Parallel);
-        long interiorRays = 0;
-        Parallel.For(0, image.Height, options.Parallel, () => new AdaptiveLattice.Source(lattice), (row, _, source) =>
+        var lattice = new AdaptiveLattice(scene, plane, sampler.MaxDepth, options);
+        long rays = lattice.CornerRays;
+        bool flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
+        Parallel.For(0, image.Height, options.Parallel, lattice.Rent, (row, _, source) =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
-            bool flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
+            Span<float> counts = raysPerPixel is null ? default : raysPerPixel.AsSpan((int)((long)row * pixels.Length), pixels.Length);
             for (int x = 0; x < pixels.Length; x++)
             {
                 // Most pixels: four corners on the same sphere (or the background), nothing more to trace.
                 if (flatWithoutCentre && lattice.TryFlat(x, row, out Intensity flat))
                 {
                     pixels[x] = Rgb24.FromIntensity(flat);
-                    if (raysPerPixel is not null)
+                    if (!counts.IsEmpty)
                     {
-                        raysPerPixel[((long)row * pixels.Length) + x] = 1;
+                        counts[x] = 1;
                     }
 
                     continue;
                 }
 
-                source.NextPixel();
+                source.NextPixel(x, row);
                 Intensity value = AdaptivePixel.Evaluate(sampler, ref source, x, row, out double samples);
                 pixels[x] = Rgb24.FromIntensity(value);
-                if (raysPerPixel is not null)
+                if (!counts.IsEmpty)
                 {
-                    raysPerPixel[((long)row * pixels.Length) + x] = (float)samples;
+                    counts[x] = (float)samples;
                 }
             }
 
+            source.EndRow(row);
             options.Progress?.CompleteRow();
             return source;
-        }, source => Interlocked.Add(ref interiorRays, source.Rays));
+        }, source =>
+        {
+            Interlocked.Add(ref rays, source.Rays);
+            lattice.Return(source);
+        });
+        rays -= lattice.SharedEdgeDuplicates();
         clock.Stop();
-        return new RenderStatistics(lattice.SharedRays + interiorRays, clock.Elapsed) { Kernel = RenderKernel.Scalar };
+        return new RenderStatistics(rays, clock.Elapsed) { Kernel = lattice.Kernel, RetracedSamples = lattice.RetracedCorners };
     }
 }
