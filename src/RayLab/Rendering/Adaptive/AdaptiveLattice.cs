@@ -28,7 +28,13 @@ internal sealed class AdaptiveLattice
     private readonly long[]?[] _topPoints, _bottomPoints;
     private readonly ConcurrentBag<Source.Buffers> _buffers = [];
 
-    public AdaptiveLattice(Scene scene, ImagePlane plane, int maxDepth, RenderOptions options)
+    /// <summary>The most entries a thread's band of minimum-depth points may take (16 MB); deeper bands go point by point.</summary>
+    private const long MaxDenseEntries = 1 << 22;
+
+    private readonly LatticeHits? _hits;
+    private readonly int _denseShift;
+
+    public AdaptiveLattice(Scene scene, ImagePlane plane, int minDepth, int maxDepth, RenderOptions options)
     {
         _scene = scene;
         _plane = plane;
@@ -41,38 +47,79 @@ internal sealed class AdaptiveLattice
         _topPoints = new long[]?[plane.Height];
         _bottomPoints = new long[]?[plane.Height];
         Kernel = PointRenderer.ChooseKernel(options.Kernel, scene, plane, out PacketFrame? frame, out _);
-        LatticeHits? hits = Kernel == RenderKernel.Scalar ? null : LatticeHits.TryCreate(scene, plane, _size, frame);
+        _hits = Kernel == RenderKernel.Scalar ? null : LatticeHits.TryCreate(scene, plane, _size, frame);
+        if (minDepth > 0)
+        {
+            long across = plane.Width * (1L << minDepth);
+            if (((2L << minDepth) + 1) * (across + 1) <= MaxDenseEntries)
+            {
+                DenseDepth = minDepth;
+                DenseStride = (int)across + 1;
+                _denseShift = maxDepth - minDepth;
+            }
+        }
+
         long retraced = 0;
         Parallel.For(0, plane.Height + 1, options.Parallel, j =>
         {
-            Span<int> row = _corners.AsSpan(j * stride, stride);
-            int again = hits is null ? 0 : Kernel switch
-            {
-                RenderKernel.Vector512 => TraceCornerRow<Lanes512>(hits, j, row),
-                RenderKernel.Vector256 => TraceCornerRow<Lanes256>(hits, j, row),
-                _ => TraceCornerRow<Lanes128>(hits, j, row),
-            };
-            if (hits is null)
-            {
-                for (int i = 0; i < row.Length; i++)
-                {
-                    row[i] = LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, i * _size, j * _size);
-                }
-            }
-
+            int again = TraceLine(j * _size, 0, _size, _corners.AsSpan(j * stride, stride));
             if (again != 0)
             {
                 Interlocked.Add(ref retraced, again);
             }
         });
-        RetracedCorners = retraced;
+        _retraced = retraced;
+    }
+
+    private long _retraced;
+
+    /// <summary>
+    /// With a minimum depth m ≥ 1, every pixel's squares at depth m have their corners and centres traced whatever
+    /// the values: m, when those points are traced a row of pixels at a time as lattice lines (0 when not).
+    /// </summary>
+    public int DenseDepth { get; }
+
+    /// <summary>Entries per even lattice line of a row's band of minimum-depth points: W·2^m + 1.</summary>
+    public int DenseStride { get; }
+
+    /// <summary>
+    /// Rays for the minimum-depth points beyond the pixel corners: the corners of the depth-m squares,
+    /// (W·2^m + 1)(H·2^m + 1) less the pixel corners, and their centres, W·H·4^m, each counted once although the
+    /// lines between two rows of pixels are traced by both.
+    /// </summary>
+    public long DenseRays => DenseDepth == 0 ? 0
+        : (((_plane.Width * (1L << DenseDepth)) + 1) * ((_plane.Height * (1L << DenseDepth)) + 1)) - CornerRays
+          + ((long)_plane.Width * _plane.Height << (2 * DenseDepth));
+
+    /// <summary>Points whose float answer was uncertain and were traced again in double.</summary>
+    public long RetracedPoints => Interlocked.Read(ref _retraced);
+
+    /// <summary>
+    /// Traces lattice points (<paramref name="lxStart"/> + k·<paramref name="lxStep"/>, <paramref name="ly"/>) into
+    /// <paramref name="ids"/>, by the packet path or the double loop; returns the points traced again in double.
+    /// </summary>
+    private int TraceLine(long ly, long lxStart, long lxStep, Span<int> ids)
+    {
+        if (_hits is null)
+        {
+            for (int i = 0; i < ids.Length; i++)
+            {
+                ids[i] = LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lxStart + (i * lxStep), ly);
+            }
+
+            return 0;
+        }
+
+        return Kernel switch
+        {
+            RenderKernel.Vector512 => TraceLine<Lanes512>(_hits, ly, lxStart, lxStep, ids),
+            RenderKernel.Vector256 => TraceLine<Lanes256>(_hits, ly, lxStart, lxStep, ids),
+            _ => TraceLine<Lanes128>(_hits, ly, lxStart, lxStep, ids),
+        };
     }
 
     /// <summary>The loop that traced the corner grid.</summary>
     public RenderKernel Kernel { get; }
-
-    /// <summary>Corners whose float answer was uncertain and were traced again in double.</summary>
-    public long RetracedCorners { get; }
 
     /// <summary>Steps per pixel side.</summary>
     public long Size => _size;
@@ -135,7 +182,7 @@ internal sealed class AdaptiveLattice
     {
         if (!_buffers.TryTake(out Source.Buffers? buffers))
         {
-            buffers = new Source.Buffers(_size);
+            buffers = new Source.Buffers(_size, DenseDepth == 0 ? 0 : ((2 << DenseDepth) + 1) * DenseStride, _palette.Length);
         }
 
         return new Source(this, buffers);
@@ -144,10 +191,10 @@ internal sealed class AdaptiveLattice
     /// <summary>Gives a thread's buffers back for the next thread.</summary>
     public void Return(Source source) => _buffers.Add(source.Storage);
 
-    private int TraceCornerRow<TL>(LatticeHits hits, int j, Span<int> row)
+    private int TraceLine<TL>(LatticeHits hits, long ly, long lxStart, long lxStep, Span<int> ids)
         where TL : struct, ILanes<TL> => _plane.IsOrthographic
-            ? hits.TraceRow<TL, OrthographicRays>(j * _size, 0, _size, row)
-            : hits.TraceRow<TL, PerspectiveRays>(j * _size, 0, _size, row);
+            ? hits.TraceRow<TL, OrthographicRays>(ly, lxStart, lxStep, ids)
+            : hits.TraceRow<TL, PerspectiveRays>(ly, lxStart, lxStep, ids);
 
     private int Trace(long lx, long ly) => LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lx, ly);
 
@@ -176,6 +223,67 @@ internal sealed class AdaptiveLattice
 
         /// <summary>Rays this source traced: centres, inner points, points on vertical and horizontal pixel lines.</summary>
         public long Rays { get; private set; }
+
+        /// <summary>Starts a row: with a minimum depth, its band of minimum-depth points is traced, line by line.</summary>
+        public readonly void BeginRow(int row)
+        {
+            AdaptiveLattice lattice = _lattice;
+            int m = lattice.DenseDepth;
+            if (m == 0)
+            {
+                return;
+            }
+
+            long g = lattice._size >> (m + 1), y0 = row * lattice._size;
+            int stride = lattice.DenseStride;
+            long again = 0;
+            for (int k = 0; k <= 2 << m; k++)
+            {
+                // Even lines: the depth-m squares' corners, every 2g; odd lines: their centres, between them.
+                again += (k & 1) == 0
+                    ? lattice.TraceLine(y0 + (k * g), 0, 2 * g, _buffers.Dense.AsSpan(k * stride, stride))
+                    : lattice.TraceLine(y0 + (k * g), g, 2 * g, _buffers.Dense.AsSpan(k * stride, stride - 1));
+            }
+
+            if (again != 0)
+            {
+                Interlocked.Add(ref lattice._retraced, again);
+            }
+        }
+
+        /// <summary>
+        /// True when every minimum-depth point of pixel <paramref name="x"/> hit the same thing: no square is refined
+        /// further, so its value and its rays are those of that thing alone, worked out once per thread.
+        /// </summary>
+        public readonly bool TryUniform(AdaptiveSampler sampler, int x, int row, out Intensity value, out double samples)
+        {
+            AdaptiveLattice lattice = _lattice;
+            int m = lattice.DenseDepth, stride = lattice.DenseStride, first = x << m, across = 1 << m;
+            int[] dense = _buffers.Dense;
+            int id = dense[first];
+            for (int k = 0, offset = first; k <= 2 << m; k++, offset += stride)
+            {
+                ReadOnlySpan<int> line = dense.AsSpan(offset, (k & 1) == 0 ? across + 1 : across);
+                if (line.IndexOfAnyExcept(id) >= 0)
+                {
+                    value = default;
+                    samples = 0;
+                    return false;
+                }
+            }
+
+            if (!_buffers.UniformKnown[id])
+            {
+                var constant = new ConstantSource(lattice._palette[id], lattice._size);
+                _buffers.UniformValue[id] = AdaptivePixel.Evaluate(sampler, ref constant, x, row, out double charged);
+                _buffers.UniformSamples[id] = charged;
+                _buffers.UniformKnown[id] = true;
+            }
+
+            value = _buffers.UniformValue[id];
+            samples = _buffers.UniformSamples[id];
+            return true;
+        }
 
         /// <summary>Starts pixel (<paramref name="x"/>, <paramref name="row"/>).</summary>
         public void NextPixel(int x, int row)
@@ -216,6 +324,11 @@ internal sealed class AdaptiveLattice
 
         public Intensity Centre(long lx, long ly)
         {
+            if (TryDense(lx, ly, out Intensity known))
+            {
+                return known;
+            }
+
             Rays++;
             return _lattice._palette[_lattice.Trace(lx, ly)];
         }
@@ -225,16 +338,20 @@ internal sealed class AdaptiveLattice
             long size = _lattice._size, mask = size - 1;
             bool onColumn = (lx & mask) == 0, onRow = (ly & mask) == 0;
             AdaptiveLattice lattice = _lattice;
+            weight = onColumn && onRow ? 0.25 : onColumn || onRow ? 0.5 : 1;
+            if (TryDense(lx, ly, out Intensity known))
+            {
+                return known;
+            }
+
             if (onColumn && onRow)
             {
-                weight = 0.25;
                 return lattice._palette[lattice._corners[((ly / size) * (lattice._plane.Width + 1)) + (lx / size)]];
             }
 
             if (onRow)
             {
                 // Top or bottom pixel edge: shared with another row.
-                weight = 0.5;
                 (ly == _y0 ? _buffers.Top : _buffers.Bottom).Add(lx);
                 Rays++;
                 return lattice._palette[lattice.Trace(lx, ly)];
@@ -246,7 +363,6 @@ internal sealed class AdaptiveLattice
             if (onColumn)
             {
                 // Left or right pixel edge: the right one is the next pixel's left one.
-                weight = 0.5;
                 int line = lx == _x0 ? _pixel : _pixel + 1;
                 slots = _buffers.Lines;
                 index = ((line & 1) * (int)(size + 1)) + (int)(ly - _y0);
@@ -255,7 +371,6 @@ internal sealed class AdaptiveLattice
             else
             {
                 // Inside the pixel: every such point has even coordinates (no square below MaxDepth is refined).
-                weight = 1;
                 slots = _buffers.Interior;
                 index = ((int)((ly - _y0) >> 1) * (int)((size >> 1) + 1)) + (int)((lx - _x0) >> 1);
                 stamp = _pixelStamp;
@@ -274,12 +389,44 @@ internal sealed class AdaptiveLattice
             return lattice._palette[id];
         }
 
+        /// <summary>The value at (lx, ly) when it is one of the row's minimum-depth points, already traced.</summary>
+        private readonly bool TryDense(long lx, long ly, out Intensity value)
+        {
+            AdaptiveLattice lattice = _lattice;
+            int m = lattice.DenseDepth;
+            if (m != 0)
+            {
+                int shift = lattice._denseShift;
+                long g = 1L << shift, y = ly - _y0;
+                if ((y & (g - 1)) == 0)
+                {
+                    long k = y >> shift, x = lx & ((2 * g) - 1);
+                    if (x == ((k & 1) == 0 ? 0 : g))
+                    {
+                        value = lattice._palette[_buffers.Dense[(k * lattice.DenseStride) + (lx >> (shift + 1))]];
+                        return true;
+                    }
+                }
+            }
+
+            value = default;
+            return false;
+        }
+
         /// <summary>
         /// A thread's reusable storage: the pixel's inner lattice and two vertical lines as (stamp, index) pairs,
         /// and the row's notes of horizontal-line points.
         /// </summary>
-        internal sealed class Buffers(long size)
+        internal sealed class Buffers(long size, int denseEntries, int paletteLength)
         {
+            public int[] Dense { get; } = new int[denseEntries];
+
+            public Intensity[] UniformValue { get; } = new Intensity[paletteLength];
+
+            public double[] UniformSamples { get; } = new double[paletteLength];
+
+            public bool[] UniformKnown { get; } = new bool[paletteLength];
+
             public ulong[] Interior { get; } = new ulong[2 * ((size >> 1) + 1) * ((size >> 1) + 1)];
 
             public ulong[] Lines { get; } = new ulong[2 * 2 * (size + 1)];
@@ -291,4 +438,19 @@ internal sealed class AdaptiveLattice
             public uint Stamp { get; set; }
         }
     }
+}
+
+/// <summary>A lattice whose every point has one value: a pixel none of whose traced points disagree.</summary>
+/// <param name="value">The value.</param>
+/// <param name="size">Lattice steps per pixel side, for the share of each point charged to the pixel.</param>
+internal readonly struct ConstantSource(Intensity value, long size) : ILatticeSource
+{
+    public Intensity At(long lx, long ly, out double weight)
+    {
+        bool onColumn = (lx & (size - 1)) == 0, onRow = (ly & (size - 1)) == 0;
+        weight = onColumn && onRow ? 0.25 : onColumn || onRow ? 0.5 : 1;
+        return value;
+    }
+
+    public Intensity Centre(long lx, long ly) => value;
 }

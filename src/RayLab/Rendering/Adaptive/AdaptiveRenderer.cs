@@ -16,12 +16,14 @@ internal static class AdaptiveRenderer
     {
         options.Progress?.Start(image.Height);
         var clock = Stopwatch.StartNew();
-        var lattice = new AdaptiveLattice(scene, plane, sampler.MaxDepth, options);
-        long rays = lattice.CornerRays;
+        var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, options);
+        long rays = lattice.CornerRays + lattice.DenseRays;
         bool flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
         Parallel.For(0, image.Height, options.Parallel, lattice.Rent, (row, _, source) =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
+            source.BeginRow(row);
+            bool dense = lattice.DenseDepth != 0;
             Span<float> counts = raysPerPixel is null ? default : raysPerPixel.AsSpan((int)((long)row * pixels.Length), pixels.Length);
             for (int x = 0; x < pixels.Length; x++)
             {
@@ -37,8 +39,15 @@ internal static class AdaptiveRenderer
                     continue;
                 }
 
-                source.NextPixel(x, row);
-                Intensity value = AdaptivePixel.Evaluate(sampler, ref source, x, row, out double samples);
+                // With a minimum depth: a pixel whose minimum-depth points all agree is refined no further.
+                Intensity value;
+                double samples;
+                if (!dense || !source.TryUniform(sampler, x, row, out value, out samples))
+                {
+                    source.NextPixel(x, row);
+                    value = AdaptivePixel.Evaluate(sampler, ref source, x, row, out samples);
+                }
+
                 pixels[x] = Rgb24.FromIntensity(value);
                 if (!counts.IsEmpty)
                 {
@@ -56,6 +65,6 @@ internal static class AdaptiveRenderer
         });
         rays -= lattice.SharedEdgeDuplicates();
         clock.Stop();
-        return new RenderStatistics(rays, clock.Elapsed) { Kernel = lattice.Kernel, RetracedSamples = lattice.RetracedCorners };
+        return new RenderStatistics(rays, clock.Elapsed) { Kernel = lattice.Kernel, RetracedSamples = lattice.RetracedPoints };
     }
 }
