@@ -165,7 +165,7 @@ public static class SceneFile
 
         private SamplerSettings ReadSampler(JsonElement sampler)
         {
-            Only(sampler, "sampler", "type", "samples", "seed", "minDepth", "maxDepth", "contrast", "quincunx");
+            Only(sampler, "sampler", "type", "samples", "seed", "minDepth", "maxDepth", "contrast", "quincunx", "guard");
             string type = Name(Required(sampler, "sampler", "type"), "sampler.type", SamplerSettings.Types);
             int samples = Optional(sampler, "samples") is { } s ? Int(s, "sampler.samples", 1, MaxSamples) : 1;
             uint seed = 0;
@@ -187,7 +187,9 @@ public static class SceneFile
 
             bool quincunx = Optional(sampler, "quincunx") is { } q
                 && (q.ValueKind is JsonValueKind.True or JsonValueKind.False ? q.GetBoolean() : throw Error("sampler.quincunx", $"must be true or false, got {Describe(q)}"));
-            return new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast, quincunx);
+            bool guard = Optional(sampler, "guard") is { } g
+                && (g.ValueKind is JsonValueKind.True or JsonValueKind.False ? g.GetBoolean() : throw Error("sampler.guard", $"must be true or false, got {Describe(g)}"));
+            return new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast, quincunx, guard);
         }
 
         // JSON allows "\ud800" (an unpaired surrogate escape), but System.Text.Json cannot turn it into a .NET

@@ -29,6 +29,8 @@ public class AdaptiveTests
         }
 
         public readonly Intensity Centre(long lx, long ly) => At(lx, ly, out _);
+
+        public readonly bool MayCross(long x0, long y0, long size) => false;
     }
 
     [Fact]

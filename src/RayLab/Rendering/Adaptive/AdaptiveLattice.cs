@@ -34,8 +34,9 @@ internal sealed class AdaptiveLattice
     private readonly LatticeHits? _hits;
     private readonly int _denseShift;
 
-    public AdaptiveLattice(Scene scene, ImagePlane plane, int minDepth, int maxDepth, RenderOptions options)
+    public AdaptiveLattice(Scene scene, ImagePlane plane, int minDepth, int maxDepth, bool guard, RenderOptions options)
     {
+        Guard = guard ? new SilhouetteGuard(scene, plane, 1L << (maxDepth + 1)) : null;
         _scene = scene;
         _plane = plane;
         _size = 1L << (maxDepth + 1);
@@ -117,6 +118,9 @@ internal sealed class AdaptiveLattice
             _ => TraceLine<Lanes128>(_hits, ly, lxStart, lxStep, ids),
         };
     }
+
+    /// <summary>The silhouette guard, when the sampler has one.</summary>
+    public SilhouetteGuard? Guard { get; }
 
     /// <summary>The loop that traced the corner grid.</summary>
     public RenderKernel Kernel { get; }
@@ -322,6 +326,8 @@ internal sealed class AdaptiveLattice
             }
         }
 
+        public readonly bool MayCross(long x0, long y0, long size) => _lattice.Guard?.MayCross(x0, y0, size) ?? false;
+
         public Intensity Centre(long lx, long ly)
         {
             if (TryDense(lx, ly, out Intensity known))
@@ -453,4 +459,6 @@ internal readonly struct ConstantSource(Intensity value, long size) : ILatticeSo
     }
 
     public Intensity Centre(long lx, long ly) => value;
+
+    public bool MayCross(long x0, long y0, long size) => false;
 }

@@ -16,19 +16,22 @@ internal static class AdaptiveRenderer
     {
         options.Progress?.Start(image.Height);
         var clock = Stopwatch.StartNew();
-        var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, options);
+        var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, sampler.Guard, options);
         long rays = lattice.CornerRays + lattice.DenseRays;
         bool flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
         Parallel.For(0, image.Height, options.Parallel, lattice.Rent, (row, _, source) =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
             source.BeginRow(row);
-            bool dense = lattice.DenseDepth != 0;
+            // The guard may refine a pixel whose points agree: then only the recursion knows its value.
+            bool dense = lattice.DenseDepth != 0 && lattice.Guard is null;
+            SilhouetteGuard? guard = lattice.Guard;
+            long size = lattice.Size;
             Span<float> counts = raysPerPixel is null ? default : raysPerPixel.AsSpan((int)((long)row * pixels.Length), pixels.Length);
             for (int x = 0; x < pixels.Length; x++)
             {
                 // Most pixels: four corners on the same sphere (or the background), nothing more to trace.
-                if (flatWithoutCentre && lattice.TryFlat(x, row, out Intensity flat))
+                if (flatWithoutCentre && lattice.TryFlat(x, row, out Intensity flat) && !(guard is not null && guard.MayCross(x * size, row * size, size)))
                 {
                     pixels[x] = Rgb24.FromIntensity(flat);
                     if (!counts.IsEmpty)
