@@ -166,6 +166,7 @@ public static class RenderJob
                 MaxDepth = r.MaxDepth ?? s.MaxDepth,
                 Contrast = r.Contrast ?? s.Contrast,
                 Quincunx = r.Quincunx || s.Quincunx,
+                Guard = r.Guard || s.Guard,
             },
         };
 
@@ -301,7 +302,7 @@ public static class RenderJob
             foreach ((bool given, string option) in new[]
             {
                 (request.MinDepth is not null, "--min-depth"), (request.MaxDepth is not null, "--max-depth"),
-                (request.Contrast is not null, "--contrast"), (request.Quincunx, "--quincunx"),
+                (request.Contrast is not null, "--contrast"), (request.Quincunx, "--quincunx"), (request.Guard, "--guard"),
             })
             {
                 if (given)
@@ -332,6 +333,7 @@ public static class RenderJob
             maxDepth = sampler.IsAdaptive ? sampler.MaxDepth : (int?)null,
             contrast = sampler.IsAdaptive ? sampler.Contrast : (double?)null,
             quincunx = sampler.IsAdaptive ? sampler.Quincunx : (bool?)null,
+            guard = sampler.IsAdaptive ? sampler.Guard : (bool?)null,
             raysPerPixel = stats.PrimaryRays / ((double)prepared.Description.Width * prepared.Description.Height),
             threads = request.Threads ?? Environment.ProcessorCount,
             rays = stats.PrimaryRays,

@@ -88,4 +88,15 @@ public sealed class AdaptiveCliTests : IDisposable
         Assert.Equal((warmWidth, warmHeight), (warm.Width, warm.Height));
         Assert.True((long)warm.Width * warm.Height * 4 <= (long)width * height);
     }
+
+    [Fact]
+    public void TheGuardOptionReachesTheSamplerAndTheStats()
+    {
+        string image = Path.Combine(_dir, "g.png"), stats = Path.Combine(_dir, "g.json");
+        var r = Run("render", Scene, "-o", image, "--sampler", "adaptive", "--guard", "--max-depth", "4", "--width", "80", "--height", "60", "--stats", stats);
+        Assert.True(r.Code == 0, r.Err);
+        Assert.Contains("guard", r.Out);
+        using JsonDocument json = JsonDocument.Parse(File.ReadAllText(stats));
+        Assert.True(json.RootElement.GetProperty("guard").GetBoolean());
+    }
 }
