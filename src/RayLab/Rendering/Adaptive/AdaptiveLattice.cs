@@ -1,5 +1,6 @@
 using System.Collections.Concurrent;
 using RayLab.Cameras;
+using RayLab.Imaging;
 using RayLab.Rendering.Point;
 using RayLab.Rendering.Point.Packets;
 
@@ -25,6 +26,7 @@ internal sealed class AdaptiveLattice
     private readonly double _latticeWidth, _latticeHeight;
     private readonly int[] _corners;
     private readonly Intensity[] _palette;
+    private readonly Rgb24[] _levels;
     private readonly long[]?[] _topPoints, _bottomPoints;
     private readonly ConcurrentBag<Source.Buffers> _buffers = [];
 
@@ -44,6 +46,7 @@ internal sealed class AdaptiveLattice
         _latticeHeight = plane.Height * (double)_size;
         int stride = plane.Width + 1;
         _palette = [scene.Background, .. scene.Spheres.Select(sphere => sphere.Color * scene.Ambient)];
+        _levels = [.. _palette.Select(Rgb24.FromIntensity)];
         _corners = GC.AllocateUninitializedArray<int>(checked(stride * (plane.Height + 1)));
         _topPoints = new long[]?[plane.Height];
         _bottomPoints = new long[]?[plane.Height];
@@ -133,14 +136,14 @@ internal sealed class AdaptiveLattice
 
     /// <summary>
     /// True when pixel (<paramref name="x"/>, <paramref name="y"/>)'s four corners hit the same thing: a flat pixel
-    /// (when the sampler does not insist on centres), whose value is that thing's, <paramref name="value"/>.
+    /// (when the sampler does not insist on centres), whose value is that thing's, <paramref name="pixel"/> in 8 bits.
     /// </summary>
-    public bool TryFlat(int x, int y, out Intensity value)
+    public bool TryFlat(int x, int y, out Rgb24 pixel)
     {
         int stride = _plane.Width + 1;
         int top = (y * stride) + x, bottom = top + stride;
         int id = _corners[top];
-        value = _palette[id];
+        pixel = _levels[id];
         return _corners[top + 1] == id && _corners[bottom] == id && _corners[bottom + 1] == id;
     }
 

@@ -11,6 +11,24 @@ namespace RayLab.Rendering.Adaptive;
 /// </summary>
 internal static class AdaptiveRenderer
 {
+    /// <summary>Pixels per side of the blocks the guard tests first: a block no silhouette may cross clears its pixels at once.</summary>
+    private const int GuardBlock = 8;
+
+    /// <summary>
+    /// The guard for a flat pixel: false at once when its <see cref="GuardBlock"/>-pixel block is clear of every
+    /// silhouette (the test is conservative for every ray of the block, so for the pixel's too), else the pixel's own test.
+    /// </summary>
+    private static bool MayCross(SilhouetteGuard guard, int x, int row, long size, ref int block, ref bool blockFree)
+    {
+        if (x / GuardBlock != block)
+        {
+            block = x / GuardBlock;
+            blockFree = !guard.MayCross((long)block * GuardBlock * size, (long)(row / GuardBlock) * GuardBlock * size, GuardBlock * size);
+        }
+
+        return !blockFree && guard.MayCross(x * size, row * size, size);
+    }
+
     /// <summary>Renders with <paramref name="sampler"/>'s settings; <paramref name="raysPerPixel"/>, if given, receives each pixel's rays.</summary>
     public static RenderStatistics Render(Scene scene, ImagePlane plane, AdaptiveSampler sampler, Image image, RenderOptions options, float[]? raysPerPixel)
     {
@@ -27,13 +45,15 @@ internal static class AdaptiveRenderer
             bool dense = lattice.DenseDepth != 0 && lattice.Guard is null;
             SilhouetteGuard? guard = lattice.Guard;
             long size = lattice.Size;
+            int block = -1;
+            bool blockFree = false;
             Span<float> counts = raysPerPixel is null ? default : raysPerPixel.AsSpan((int)((long)row * pixels.Length), pixels.Length);
             for (int x = 0; x < pixels.Length; x++)
             {
                 // Most pixels: four corners on the same sphere (or the background), nothing more to trace.
-                if (flatWithoutCentre && lattice.TryFlat(x, row, out Intensity flat) && !(guard is not null && guard.MayCross(x * size, row * size, size)))
+                if (flatWithoutCentre && lattice.TryFlat(x, row, out Rgb24 flat) && !(guard is not null && MayCross(guard, x, row, size, ref block, ref blockFree)))
                 {
-                    pixels[x] = Rgb24.FromIntensity(flat);
+                    pixels[x] = flat;
                     if (!counts.IsEmpty)
                     {
                         counts[x] = 1;

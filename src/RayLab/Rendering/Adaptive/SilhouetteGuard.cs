@@ -10,10 +10,10 @@ namespace RayLab.Rendering.Adaptive;
 /// <remarks>
 /// <para>The ray through the square's centre passes at distance <c>p = |f − (f·d / d·d) d|</c> from a sphere's
 /// centre (f = o − C: the ray–sphere test's stable discriminant is <c>r² − p²</c>). Every other ray of the square
-/// differs from it by a window offset w with <c>|w| ≤ δ = ½ (|a|·Δα + |b|·Δβ)</c>, the square's half-diagonal on the
-/// window. Orthographic: the rays are parallel and their origins differ by w, so their distances differ by at most
-/// δ. Perspective: their directions d + w turn by an angle θ with <c>sin θ ≤ δ / |d|</c> about the eye, so their
-/// distances differ by at most <c>|f| θ ≤ 2 |f| δ / |d|</c>. Calling that bound m, some ray of the square may hit
+/// differs from it by a window offset w with <c>|w| ≤ δ = ½ √((|a|·Δα)² + (|b|·Δβ)²)</c>, the square's half-diagonal on
+/// the window (a ⊥ b). Orthographic: the rays are parallel and their origins differ by w, so their distances differ by at most
+/// δ. Perspective: their directions d + w turn by an angle θ with <c>sin θ ≤ δ / |d|</c> about the eye, and the
+/// distance <c>|f| sin∠(f, d)</c> changes by at most <c>|f| θ = |f| asin(δ / |d|)</c>. Calling that bound m, some ray of the square may hit
 /// the sphere and another miss it only if <c>|p − r| ≤ m</c>: the square is refined then. The test is exact
 /// geometry plus a margin of 10⁻⁹ (|f| + r) for rounding, so it never misses a silhouette that crosses the square
 /// (off-axis windows included: a and b are the window's own edges), and it is nearly free where every sphere is
@@ -64,10 +64,10 @@ internal sealed class SilhouetteGuard
     {
         double half = size * 0.5;
         Ray ray = _plane.GetRay((x0 + half) / _latticeWidth, 1.0 - ((y0 + half) / _latticeHeight));
-        double delta = half * (_stepWidth + _stepHeight);
+        double delta = half * Math.Sqrt((_stepWidth * _stepWidth) + (_stepHeight * _stepHeight));
         Double3 d = ray.Direction;
         double dd = Double3.Dot(d, d);
-        double turn = _plane.IsOrthographic ? 0 : 2 * delta / Math.Sqrt(dd);
+        double turn = _plane.IsOrthographic ? 0 : Math.Asin(Math.Min(1, delta / Math.Sqrt(dd)));
         foreach ((Double3 center, double radius, bool clipped) in _spheres)
         {
             Double3 f = ray.Origin - center;
