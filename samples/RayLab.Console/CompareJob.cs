@@ -128,6 +128,14 @@ public static class CompareJob
                         null, new AdaptiveSampler(0, depth, contrast)));
                 }
             }
+
+            // The guarded sampler beside the lab's rule, at the smallest contrast asked for.
+            double finest = contrasts.Min();
+            foreach (int depth in depths)
+            {
+                cases.Add(new CompareCase(FormattableString.Invariant($"adaptive guard c={finest:G6}"), $"depth 0–{depth}", null,
+                    null, new AdaptiveSampler(0, depth, finest, guard: true)));
+            }
         }
 
         return (scene, [.. cases], notes);
