@@ -36,7 +36,7 @@ internal sealed class AdaptiveLattice
     private readonly LatticeHits? _hits;
     private readonly int _denseShift;
 
-    public AdaptiveLattice(Scene scene, ImagePlane plane, int minDepth, int maxDepth, bool guard, RenderOptions options)
+    public AdaptiveLattice(Scene scene, ImagePlane plane, int minDepth, int maxDepth, bool quincunx, bool guard, RenderOptions options)
     {
         Guard = guard ? new SilhouetteGuard(scene, plane, 1L << (maxDepth + 1)) : null;
         _scene = scene;
@@ -63,6 +63,7 @@ internal sealed class AdaptiveLattice
             }
         }
 
+        CentreLine = quincunx && DenseDepth == 0;
         long retraced = 0;
         Parallel.For(0, plane.Height + 1, options.Parallel, j =>
         {
@@ -94,6 +95,15 @@ internal sealed class AdaptiveLattice
     public long DenseRays => DenseDepth == 0 ? 0
         : (((_plane.Width * (1L << DenseDepth)) + 1) * ((_plane.Height * (1L << DenseDepth)) + 1)) - CornerRays
           + ((long)_plane.Width * _plane.Height << (2 * DenseDepth));
+
+    /// <summary>
+    /// With the quincunx (and no minimum depth): every pixel's centre is traced, a row at a time as one lattice line,
+    /// W·H rays in all.
+    /// </summary>
+    public bool CentreLine { get; }
+
+    /// <summary>Rays for the pixel centres of <see cref="CentreLine"/>.</summary>
+    public long CentreRays => CentreLine ? (long)_plane.Width * _plane.Height : 0;
 
     /// <summary>Points whose float answer was uncertain and were traced again in double.</summary>
     public long RetracedPoints => Interlocked.Read(ref _retraced);
@@ -189,7 +199,7 @@ internal sealed class AdaptiveLattice
     {
         if (!_buffers.TryTake(out Source.Buffers? buffers))
         {
-            buffers = new Source.Buffers(_size, DenseDepth == 0 ? 0 : ((2 << DenseDepth) + 1) * DenseStride, _palette.Length);
+            buffers = new Source.Buffers(_size, DenseDepth == 0 ? 0 : ((2 << DenseDepth) + 1) * DenseStride, CentreLine ? _plane.Width : 0, _palette.Length);
         }
 
         return new Source(this, buffers);
@@ -236,6 +246,15 @@ internal sealed class AdaptiveLattice
         {
             AdaptiveLattice lattice = _lattice;
             int m = lattice.DenseDepth;
+            if (lattice.CentreLine)
+            {
+                long centres = lattice.TraceLine((row * lattice._size) + (lattice._size / 2), lattice._size / 2, lattice._size, _buffers.Centres);
+                if (centres != 0)
+                {
+                    Interlocked.Add(ref lattice._retraced, centres);
+                }
+            }
+
             if (m == 0)
             {
                 return;
@@ -279,9 +298,35 @@ internal sealed class AdaptiveLattice
                 }
             }
 
+            return Uniform(sampler, id, x, row, out value, out samples);
+        }
+
+        /// <summary>
+        /// With <see cref="CentreLine"/>: true when pixel <paramref name="x"/>'s four corners and its centre hit the same
+        /// thing, so no quadrant is refined; its value and rays are then worked out once per thread, as for
+        /// <see cref="TryUniform"/>.
+        /// </summary>
+        public readonly bool TryUniformWithCentre(AdaptiveSampler sampler, int x, int row, out Intensity value, out double samples)
+        {
+            AdaptiveLattice lattice = _lattice;
+            int stride = lattice._plane.Width + 1, top = (row * stride) + x, bottom = top + stride;
+            int[] corners = lattice._corners;
+            int id = corners[top];
+            if (corners[top + 1] != id || corners[bottom] != id || corners[bottom + 1] != id || _buffers.Centres[x] != id)
+            {
+                value = default;
+                samples = 0;
+                return false;
+            }
+
+            return Uniform(sampler, id, x, row, out value, out samples);
+        }
+
+        private readonly bool Uniform(AdaptiveSampler sampler, int id, int x, int row, out Intensity value, out double samples)
+        {
             if (!_buffers.UniformKnown[id])
             {
-                var constant = new ConstantSource(lattice._palette[id], lattice._size);
+                var constant = new ConstantSource(_lattice._palette[id], _lattice._size);
                 _buffers.UniformValue[id] = AdaptivePixel.Evaluate(sampler, ref constant, x, row, out double charged);
                 _buffers.UniformSamples[id] = charged;
                 _buffers.UniformKnown[id] = true;
@@ -336,6 +381,11 @@ internal sealed class AdaptiveLattice
             if (TryDense(lx, ly, out Intensity known))
             {
                 return known;
+            }
+
+            if (_lattice.CentreLine && ly - _y0 == _lattice._size / 2 && lx - _x0 == _lattice._size / 2)
+            {
+                return _lattice._palette[_buffers.Centres[_pixel]];
             }
 
             Rays++;
@@ -426,8 +476,10 @@ internal sealed class AdaptiveLattice
         /// A thread's reusable storage: the pixel's inner lattice and two vertical lines as (stamp, index) pairs,
         /// and the row's notes of horizontal-line points.
         /// </summary>
-        internal sealed class Buffers(long size, int denseEntries, int paletteLength)
+        internal sealed class Buffers(long size, int denseEntries, int centres, int paletteLength)
         {
+            public int[] Centres { get; } = new int[centres];
+
             public int[] Dense { get; } = new int[denseEntries];
 
             public Intensity[] UniformValue { get; } = new Intensity[paletteLength];

@@ -34,8 +34,8 @@ internal static class AdaptiveRenderer
     {
         options.Progress?.Start(image.Height);
         var clock = Stopwatch.StartNew();
-        var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, sampler.Guard, options);
-        long rays = lattice.CornerRays + lattice.DenseRays;
+        var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, sampler.Quincunx, sampler.Guard, options);
+        long rays = lattice.CornerRays + lattice.DenseRays + lattice.CentreRays;
         bool flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
         Parallel.For(0, image.Height, options.Parallel, lattice.Rent, (row, _, source) =>
         {
@@ -43,6 +43,7 @@ internal static class AdaptiveRenderer
             source.BeginRow(row);
             // The guard may refine a pixel whose points agree: then only the recursion knows its value.
             bool dense = lattice.DenseDepth != 0 && lattice.Guard is null;
+            bool centres = lattice.CentreLine && lattice.Guard is null;
             SilhouetteGuard? guard = lattice.Guard;
             long size = lattice.Size;
             int block = -1;
@@ -62,10 +63,12 @@ internal static class AdaptiveRenderer
                     continue;
                 }
 
-                // With a minimum depth: a pixel whose minimum-depth points all agree is refined no further.
+                // With a minimum depth (its band of points) or the quincunx (corners and centre): a pixel whose traced
+                // points all agree is refined no further, and its value is known per colour.
                 Intensity value;
                 double samples;
-                if (!dense || !source.TryUniform(sampler, x, row, out value, out samples))
+                if (!(dense && source.TryUniform(sampler, x, row, out value, out samples))
+                    && !(centres && source.TryUniformWithCentre(sampler, x, row, out value, out samples)))
                 {
                     source.NextPixel(x, row);
                     value = AdaptivePixel.Evaluate(sampler, ref source, x, row, out samples);
