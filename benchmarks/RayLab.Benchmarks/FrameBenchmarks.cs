@@ -29,7 +29,11 @@ public class FrameBenchmarks
     public long Frame() => _renderer.Render(BenchScene.Scene, _camera, _sampler, _image).PrimaryRays;
 }
 
-/// <summary>The lab's adaptive sampler on the same frame at its default settings (depth 0–3, contrast 0.1), with and without the quincunx.</summary>
+/// <summary>
+/// The lab's adaptive sampler on the same frame at its default settings (depth 0–3, contrast 0.1), with and without
+/// the quincunx and the silhouette guard: the allocation column shows nothing per pixel (the corner grid, 8.3 MB,
+/// and O(threads + rows with silhouettes) besides).
+/// </summary>
 [MemoryDiagnoser]
 [SimpleJob(launchCount: 1, warmupCount: 2, iterationCount: 7)]
 public class AdaptiveFrameBenchmarks
@@ -41,8 +45,25 @@ public class AdaptiveFrameBenchmarks
     [Params(false, true)]
     public bool Quincunx { get; set; }
 
+    [Params(false, true)]
+    public bool Guard { get; set; }
+
     [Benchmark]
-    public long Frame() => _renderer.Render(BenchScene.Scene, _camera, new AdaptiveSampler(quincunx: Quincunx), _image).PrimaryRays;
+    public long Frame() => _renderer.Render(BenchScene.Scene, _camera, new AdaptiveSampler(quincunx: Quincunx, guard: Guard), _image).PrimaryRays;
+}
+
+/// <summary>The adaptive sampler with every pixel split to depth 3 (min = max depth 3) at 800×600: 128 rays a pixel, traced in packets.</summary>
+[MemoryDiagnoser]
+[SimpleJob(launchCount: 1, warmupCount: 2, iterationCount: 7)]
+public class AdaptiveDepth3Benchmarks
+{
+    private readonly Image _image = new(800, 600);
+    private readonly Camera _camera = BenchScene.Camera;
+    private readonly Renderer _renderer = new() { MaxDegreeOfParallelism = 2 };
+    private readonly AdaptiveSampler _sampler = new(3, 3, 0.1);
+
+    [Benchmark]
+    public long Frame() => _renderer.Render(BenchScene.Scene, _camera, _sampler, _image).PrimaryRays;
 }
 
 /// <summary>The jittered 16-spp frame through each render loop: the scalar double path and each SIMD width.</summary>

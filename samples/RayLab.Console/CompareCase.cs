@@ -8,13 +8,13 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// One setting <c>raylab compare</c> renders, as a <see cref="RenderMethod"/>: a point sampler at one budget
-/// (<see cref="Sampled"/>), or one adaptive setting (<see cref="Adaptive"/>).
+/// (<see cref="Sampled"/>), or one adaptive setting (<see cref="Adaptive"/>, the lab's rule or the guarded one).
 /// </summary>
-/// <param name="Series">Its line on the chart: the sampler's name, or <c>adaptive c=0.1</c> for each contrast.</param>
+/// <param name="Series">Its line on the chart: the sampler's name, <c>adaptive c=0.1</c> for each contrast, or <c>adaptive guard c=0.01</c> for the guarded sampler.</param>
 /// <param name="Setting">What varies along the line: <c>16 spp</c>, or <c>depth 0–3</c>.</param>
 /// <param name="Budget">The budget asked for (point samplers); a grid sampler uses the nearest square below it.</param>
 /// <param name="Method">How the setting renders.</param>
-/// <param name="FileStem">The name of its image files: <c>jittered-16</c>, <c>adaptive-c0.1-d3</c>.</param>
+/// <param name="FileStem">The name of its image files: <c>jittered-16</c>, <c>adaptive-c0.1-d3</c>, <c>adaptive-guard-c0.01-d3</c>.</param>
 /// <param name="MaxDepth">The adaptive sampler's maximum depth, or null.</param>
 /// <param name="Contrast">The adaptive sampler's contrast, or null.</param>
 public sealed record CompareCase(string Series, string Setting, int? Budget, RenderMethod Method, string FileStem, int? MaxDepth = null, double? Contrast = null)
@@ -28,13 +28,14 @@ public sealed record CompareCase(string Series, string Setting, int? Budget, Ren
         return new(sampler.Name, $"{sampler.SamplesPerPixel} spp", budget, RenderMethod.Sampled(sampler), $"{sampler.Name}-{sampler.SamplesPerPixel}");
     }
 
-    /// <summary>One adaptive setting: a line per contrast, a point per maximum depth.</summary>
+    /// <summary>One adaptive setting: a line per contrast (and one for the guarded sampler), a point per maximum depth.</summary>
     /// <param name="sampler">The adaptive settings.</param>
     public static CompareCase Adaptive(AdaptiveSampler sampler)
     {
         ArgumentNullException.ThrowIfNull(sampler);
-        return new(FormattableString.Invariant($"adaptive c={sampler.Contrast:G6}"), $"depth {sampler.MinDepth}–{sampler.MaxDepth}", null,
-            RenderMethod.Adaptive(sampler), FormattableString.Invariant($"adaptive-c{sampler.Contrast:G6}-d{sampler.MaxDepth}"), sampler.MaxDepth, sampler.Contrast);
+        string guard = sampler.Guard ? " guard" : "";
+        return new(FormattableString.Invariant($"adaptive{guard} c={sampler.Contrast:G6}"), $"depth {sampler.MinDepth}–{sampler.MaxDepth}", null,
+            RenderMethod.Adaptive(sampler), FormattableString.Invariant($"adaptive{guard.Replace(' ', '-')}-c{sampler.Contrast:G6}-d{sampler.MaxDepth}"), sampler.MaxDepth, sampler.Contrast);
     }
 
     /// <summary>The sampler's name (<c>jittered</c>, <c>adaptive</c>, …).</summary>

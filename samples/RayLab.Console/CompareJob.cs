@@ -133,6 +133,13 @@ public static class CompareJob
                     cases.Add(CompareCase.Adaptive(new AdaptiveSampler(0, depth, contrast)));
                 }
             }
+
+            // The guarded sampler beside the lab's rule, at the smallest contrast asked for.
+            double finest = contrasts.Min();
+            foreach (int depth in depths)
+            {
+                cases.Add(CompareCase.Adaptive(new AdaptiveSampler(0, depth, finest, guard: true)));
+            }
         }
 
         return (scene, [.. cases], notes);

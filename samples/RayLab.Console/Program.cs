@@ -84,12 +84,13 @@ public static class Program
         var maxDepth = new Option<int?>("--max-depth") { Description = $"Adaptive: never subdivide deeper, 0 to {AdaptiveSampler.MaxSupportedDepth}. Default: the scene's sampler.maxDepth; {d.MaxDepth} if omitted.", HelpName = "D" };
         var contrast = new Option<double?>("--contrast") { Description = $"Adaptive: subdivide where a channel differs by more than this, ≥ 0. Default: the scene's sampler.contrast; {d.Contrast.ToString(CultureInfo.InvariantCulture)} if omitted.", HelpName = "C" };
         var quincunx = new Option<bool>("--quincunx") { Description = $"Adaptive: trace every pixel's centre, even where its corners agree (≈ 1 ray per pixel more). Default: the scene's sampler.quincunx; {(d.Quincunx ? "true" : "false")} if omitted." };
-        var kernel = new Option<string?>("--kernel") { Description = $"Point samplers: the render loop, {Choices(RenderJob.Kernels)}; auto takes the widest SIMD packet the CPU runs, scalar is the double-precision reference loop. Default: auto.", HelpName = "KERNEL" };
+        var guard = new Option<bool>("--guard") { Description = $"Adaptive: also refine, down to the maximum depth, every square a sphere's silhouette may cross although its points agree (never loses a small sphere or a sliver). Default: the scene's sampler.guard; {(d.Guard ? "true" : "false")} if omitted." };
+        var kernel = new Option<string?>("--kernel") { Description = $"Point samplers and the adaptive sampler's traced points: the render loop, {Choices(RenderJob.Kernels)}; auto takes the widest SIMD packet the CPU runs, scalar is the double-precision reference loop. Default: auto.", HelpName = "KERNEL" };
         var heatmap = new Option<string?>("--heatmap") { Description = "Also write the primary rays spent per pixel as an image with a legend, .png or .bmp. Default: none.", HelpName = "HEAT.png" };
 
         var render = new Command("render", "Render a scene file into an image.")
         {
-            scene, output, camera, sampler, samples, seed, minDepth, maxDepth, contrast, quincunx, width, height, threads, kernel, stats, heatmap,
+            scene, output, camera, sampler, samples, seed, minDepth, maxDepth, contrast, quincunx, guard, width, height, threads, kernel, stats, heatmap,
         };
         render.SetAction(result => RenderJob.Run(
             new RenderRequest(
@@ -108,7 +109,8 @@ public static class Program
                 result.GetValue(contrast),
                 result.GetValue(heatmap),
                 result.GetValue(kernel),
-                result.GetValue(quincunx)),
+                result.GetValue(quincunx),
+                result.GetValue(guard)),
             stdout,
             stderr,
             cancellation));

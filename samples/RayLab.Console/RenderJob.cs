@@ -52,7 +52,7 @@ public static class RenderJob
         ArgumentNullException.ThrowIfNull(stderr);
         try
         {
-            RunOrThrow(request, stdout, cancellation);
+            RunOrThrow(request, stdout, stderr, cancellation);
             return 0;
         }
         catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
@@ -72,7 +72,7 @@ public static class RenderJob
         }
     }
 
-    private static void RunOrThrow(RenderRequest request, TextWriter stdout, CancellationToken cancellation)
+    private static void RunOrThrow(RenderRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation)
     {
         if (string.IsNullOrWhiteSpace(request.ScenePath))
         {
@@ -106,6 +106,11 @@ public static class RenderJob
         }
 
         PreparedScene prepared = request.Overrides.Prepare(SceneFile.Load(request.ScenePath));
+        foreach (string notice in NoticesFor(request, prepared.Description.Sampler))
+        {
+            stderr.WriteLine($"raylab: note: {notice}");
+        }
+
         Image image = prepared.CreateImage();
         float[]? raysPerPixel = request.HeatmapPath is null ? null : new float[(long)image.Width * image.Height];
         var progress = new RenderProgress();
@@ -118,7 +123,7 @@ public static class RenderJob
         // picture scaled down, so it meets the same edges and compiles the paths the render takes there. The
         // image's memory is committed before the clock too, as the anchors' zero-filled buffer is.
         var warmupClock = Stopwatch.StartNew();
-        prepared.Render(renderer, WarmupImage(image.Width, image.Height, Math.Max(1, prepared.SamplesPerPixel)), null);
+        prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
         image.PixelBytes.Clear();
         double warmupMs = warmupClock.Elapsed.TotalMilliseconds;
         RenderStatistics stats;
@@ -217,13 +222,58 @@ public static class RenderJob
     /// </summary>
     /// <param name="width">The render's width in pixels.</param>
     /// <param name="height">The render's height in pixels.</param>
-    /// <param name="samplesPerPixel">The render's samples per pixel (1 for adaptive and exact).</param>
+    /// <param name="samplesPerPixel">The render's rays per pixel (<see cref="WarmupCostPerPixel"/>).</param>
     /// <returns>A new image for the warm-up render.</returns>
     public static Image WarmupImage(int width, int height, int samplesPerPixel)
     {
         double samples = (double)width * height * samplesPerPixel;
         int factor = (int)Math.Max(1, Math.Ceiling(Math.Sqrt(samples / WarmupSamples)));
         return new Image(Math.Max(1, width / factor), Math.Max(1, height / factor));
+    }
+
+    /// <summary>
+    /// The rays per pixel the warm-up is sized by: the point sampler's samples; for the adaptive sampler the
+    /// rays every pixel takes at its minimum depth (about 4^(minDepth + 1): corners and centres) times 4 for its edge
+    /// pixels, 4^(minDepth + 2); 1 for the exact reference. So an adaptive warm-up costs about as much as a point
+    /// sampler's (at most a sixteenth of a 1080p picture at the defaults), never the whole picture again.
+    /// </summary>
+    /// <param name="sampler">The render's sampler settings.</param>
+    /// <returns>Rays per pixel, at least 1.</returns>
+    public static int WarmupCostPerPixel(SamplerSettings sampler)
+    {
+        ArgumentNullException.ThrowIfNull(sampler);
+        return sampler.IsAdaptive ? 1 << (2 * (Math.Min(sampler.MinDepth, 10) + 2))
+            : sampler.IsExact ? 1
+            : Math.Max(1, sampler.Samples);
+    }
+
+    /// <summary>One line for each option given that the chosen sampler does not use (the render goes on without it).</summary>
+    /// <param name="request">The options.</param>
+    /// <param name="sampler">The sampler settings the render uses.</param>
+    /// <returns>The notices, none when every option applies.</returns>
+    public static IEnumerable<string> NoticesFor(RenderRequest request, SamplerSettings sampler)
+    {
+        ArgumentNullException.ThrowIfNull(request);
+        ArgumentNullException.ThrowIfNull(sampler);
+        if (request.Samples is not null && (sampler.IsAdaptive || sampler.IsExact))
+        {
+            yield return $"--samples does not apply to the {sampler.Type} sampler (ignored)";
+        }
+
+        if (!sampler.IsAdaptive)
+        {
+            foreach ((bool given, string option) in new[]
+            {
+                (request.MinDepth is not null, "--min-depth"), (request.MaxDepth is not null, "--max-depth"),
+                (request.Contrast is not null, "--contrast"), (request.Quincunx, "--quincunx"), (request.Guard, "--guard"),
+            })
+            {
+                if (given)
+                {
+                    yield return $"{option} applies to the adaptive sampler only, not {sampler.Type} (ignored)";
+                }
+            }
+        }
     }
 
     /// <summary>The most samples the warm-up render takes: about 1/16 of the 1080p, 16 spp benchmark.</summary>
@@ -246,6 +296,7 @@ public static class RenderJob
             maxDepth = sampler.IsAdaptive ? sampler.MaxDepth : (int?)null,
             contrast = sampler.IsAdaptive ? sampler.Contrast : (double?)null,
             quincunx = sampler.IsAdaptive ? sampler.Quincunx : (bool?)null,
+            guard = sampler.IsAdaptive ? sampler.Guard : (bool?)null,
             raysPerPixel = stats.PrimaryRays / ((double)prepared.Description.Width * prepared.Description.Height),
             threads = request.Threads ?? Environment.ProcessorCount,
             rays = stats.PrimaryRays,

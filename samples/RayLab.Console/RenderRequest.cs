@@ -17,12 +17,13 @@ namespace RayLab.Cli;
 /// <param name="HeatmapPath">Where to write the rays-per-pixel heat map.</param>
 /// <param name="Kernel">Point samplers: the render loop (see <c>RenderKernel</c>), null for auto.</param>
 /// <param name="Quincunx">Adaptive: trace every pixel's centre.</param>
+/// <param name="Guard">Adaptive: also refine squares a sphere's silhouette may cross.</param>
 public sealed record RenderRequest(
     string ScenePath, string OutputPath, string? Camera = null, string? Sampler = null, int? Samples = null,
     uint? Seed = null, int? Threads = null, int? Width = null, int? Height = null, string? StatsPath = null,
     int? MinDepth = null, int? MaxDepth = null, double? Contrast = null, string? HeatmapPath = null,
-    string? Kernel = null, bool Quincunx = false)
+    string? Kernel = null, bool Quincunx = false, bool Guard = false)
 {
     /// <summary>The options that override scene-file fields.</summary>
-    internal SceneOverrides Overrides => new(Width, Height, Camera, Sampler, Samples, Seed, MinDepth, MaxDepth, Contrast, Quincunx);
+    internal SceneOverrides Overrides => new(Width, Height, Camera, Sampler, Samples, Seed, MinDepth, MaxDepth, Contrast, Quincunx, Guard);
 }

@@ -17,9 +17,10 @@ namespace RayLab.Cli;
 /// <param name="MaxDepth"><c>--max-depth</c>: <c>sampler.maxDepth</c>.</param>
 /// <param name="Contrast"><c>--contrast</c>: <c>sampler.contrast</c>.</param>
 /// <param name="Quincunx"><c>--quincunx</c>: <c>sampler.quincunx</c> (only ever turns it on).</param>
+/// <param name="Guard"><c>--guard</c>: <c>sampler.guard</c> (only ever turns it on).</param>
 internal sealed record SceneOverrides(
     int? Width = null, int? Height = null, string? Camera = null, string? Sampler = null, int? Samples = null,
-    uint? Seed = null, int? MinDepth = null, int? MaxDepth = null, double? Contrast = null, bool Quincunx = false)
+    uint? Seed = null, int? MinDepth = null, int? MaxDepth = null, double? Contrast = null, bool Quincunx = false, bool Guard = false)
 {
     /// <summary>The scene with the options applied.</summary>
     public SceneDescription Apply(SceneDescription d)
@@ -39,6 +40,7 @@ internal sealed record SceneOverrides(
                 MaxDepth = MaxDepth ?? s.MaxDepth,
                 Contrast = Contrast ?? s.Contrast,
                 Quincunx = Quincunx || s.Quincunx,
+                Guard = Guard || s.Guard,
             },
         };
     }
@@ -128,6 +130,11 @@ internal sealed record SceneOverrides(
         if (Quincunx)
         {
             yield return ("sampler.quincunx", "--quincunx");
+        }
+
+        if (Guard)
+        {
+            yield return ("sampler.guard", "--guard");
         }
     }
 }

@@ -8,7 +8,7 @@ public readonly record struct RenderStatistics(long PrimaryRays, TimeSpan Render
     /// <summary>Primary rays per second (0 for an instant render).</summary>
     public double RaysPerSecond => RenderTime > TimeSpan.Zero ? PrimaryRays / RenderTime.TotalSeconds : 0;
 
-    /// <summary>The loop that rendered the image (<see cref="RenderKernel.Scalar"/> for adaptive and exact renders).</summary>
+    /// <summary>The loop that rendered the image: for adaptive renders the one that traced the pixel corners, <see cref="RenderKernel.Scalar"/> for exact renders.</summary>
     public RenderKernel Kernel { get; init; }
 
     /// <summary>

@@ -13,7 +13,8 @@ namespace RayLab.Scenes;
 /// <param name="MaxDepth">Adaptive: the maximum subdivision depth.</param>
 /// <param name="Contrast">Adaptive: the spatial contrast threshold.</param>
 /// <param name="Quincunx">Adaptive: trace every pixel's centre, even where its corners agree.</param>
-public sealed record SamplerSettings(string Type, int Samples, uint Seed, int MinDepth = 0, int MaxDepth = 3, double Contrast = 0.1, bool Quincunx = false)
+/// <param name="Guard">Adaptive: also refine squares a sphere's silhouette may cross (<see cref="AdaptiveSampler.Guard"/>).</param>
+public sealed record SamplerSettings(string Type, int Samples, uint Seed, int MinDepth = 0, int MaxDepth = 3, double Contrast = 0.1, bool Quincunx = false, bool Guard = false)
 {
     /// <summary>
     /// Every sampler name a scene file or the console accepts: the point samplers, <c>adaptive</c>, and <c>exact</c>
@@ -22,7 +23,7 @@ public sealed record SamplerSettings(string Type, int Samples, uint Seed, int Mi
     public static IReadOnlyList<string> Types { get; } = [.. Samplers.Names, "adaptive", "exact"];
 
     /// <summary>The fields of a scene file's <c>sampler</c> object.</summary>
-    public static IReadOnlyList<string> Fields { get; } = ["type", "samples", "seed", "minDepth", "maxDepth", "contrast", "quincunx"];
+    public static IReadOnlyList<string> Fields { get; } = ["type", "samples", "seed", "minDepth", "maxDepth", "contrast", "quincunx", "guard"];
 
     /// <summary>
     /// The <c>sampler</c> field a sampler constructor's parameter stands for where the names differ
@@ -63,7 +64,7 @@ public sealed record SamplerSettings(string Type, int Samples, uint Seed, int Mi
 
     /// <summary>Creates the adaptive sampler.</summary>
     /// <exception cref="ArgumentOutOfRangeException">A depth or the contrast is out of range.</exception>
-    public AdaptiveSampler CreateAdaptive() => new(MinDepth, MaxDepth, Contrast, Quincunx);
+    public AdaptiveSampler CreateAdaptive() => new(MinDepth, MaxDepth, Contrast, Quincunx, Guard);
 
     /// <summary>The render method these settings name: the one mapping from a sampler type to a renderer.</summary>
     /// <exception cref="ArgumentException">Unknown type, unusable sample count, or a depth or contrast out of range.</exception>

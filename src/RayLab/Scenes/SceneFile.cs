@@ -164,7 +164,9 @@ public static class SceneFile
             double contrast = Optional(sampler, "contrast") is { } c ? Number(c, "sampler.contrast") : 0.1;
             bool quincunx = Optional(sampler, "quincunx") is { } q
                 && (q.ValueKind is JsonValueKind.True or JsonValueKind.False ? q.GetBoolean() : throw Error("sampler.quincunx", $"must be true or false, got {Describe(q)}"));
-            var settings = new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast, quincunx);
+            bool guard = Optional(sampler, "guard") is { } g
+                && (g.ValueKind is JsonValueKind.True or JsonValueKind.False ? g.GetBoolean() : throw Error("sampler.guard", $"must be true or false, got {Describe(g)}"));
+            var settings = new SamplerSettings(type, samples, seed, minDepth, maxDepth, contrast, quincunx, guard);
             section.Build(source, settings.Check);
             return settings;
         }

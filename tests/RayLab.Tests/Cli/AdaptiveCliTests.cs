@@ -1,4 +1,7 @@
 using System.Text.Json;
+using RayLab.Cli;
+using RayLab.Imaging;
+using RayLab.Scenes;
 
 namespace RayLab.Tests.Cli;
 
@@ -46,5 +49,54 @@ public sealed class AdaptiveCliTests : IDisposable
         Assert.StartsWith($"raylab: error: {named}", r.Err);
         Assert.Single(r.Err.TrimEnd().Split('\n'));
         Assert.Empty(Directory.GetFiles(_dir));
+    }
+
+    [Theory]
+    [InlineData("adaptive", "--samples", "16", "--samples does not apply to the adaptive sampler (ignored)")]
+    [InlineData("exact", "--samples", "16", "--samples does not apply to the exact sampler (ignored)")]
+    [InlineData("jittered", "--contrast", "0.2", "--contrast applies to the adaptive sampler only, not jittered (ignored)")]
+    [InlineData("jittered", "--max-depth", "2", "--max-depth applies to the adaptive sampler only, not jittered (ignored)")]
+    public void AnOptionTheSamplerDoesNotUseIsNamedInAOneLineNotice(string sampler, string option, string value, string notice)
+    {
+        string image = Path.Combine(_dir, "n.png");
+        var r = Run("render", Scene, "-o", image, "--sampler", sampler, option, value, "--width", "40", "--height", "30");
+        Assert.True(r.Code == 0, r.Err);
+        Assert.Equal($"raylab: note: {notice}", r.Err.TrimEnd());
+        Assert.True(File.Exists(image));
+    }
+
+    [Fact]
+    public void OptionsThatApplyGiveNoNotice()
+    {
+        string image = Path.Combine(_dir, "n.png");
+        var r = Run("render", Scene, "-o", image, "--sampler", "adaptive", "--max-depth", "2", "--contrast", "0.2", "--width", "40", "--height", "30");
+        Assert.True(r.Code == 0, r.Err);
+        Assert.Equal("", r.Err);
+        r = Run("render", Scene, "-o", image, "--sampler", "jittered", "--samples", "4", "--width", "40", "--height", "30");
+        Assert.Equal("", r.Err);
+    }
+
+    [Theory]
+    [InlineData(800, 600, 3, 50, 37)]      // min = max depth 3: ~256 rays a pixel, so a few thousand pixels
+    [InlineData(800, 600, 0, 400, 300)]
+    [InlineData(1920, 1080, 0, 480, 270)]
+    [InlineData(1920, 1080, 1, 240, 135)]
+    public void AnAdaptiveWarmUpIsSmallAndBoundedNeverTheWholePicture(int width, int height, int minDepth, int warmWidth, int warmHeight)
+    {
+        var sampler = new SamplerSettings("adaptive", 0, 0, MinDepth: minDepth, MaxDepth: 3);
+        Image warm = RenderJob.WarmupImage(width, height, RenderJob.WarmupCostPerPixel(sampler));
+        Assert.Equal((warmWidth, warmHeight), (warm.Width, warm.Height));
+        Assert.True((long)warm.Width * warm.Height * 4 <= (long)width * height);
+    }
+
+    [Fact]
+    public void TheGuardOptionReachesTheSamplerAndTheStats()
+    {
+        string image = Path.Combine(_dir, "g.png"), stats = Path.Combine(_dir, "g.json");
+        var r = Run("render", Scene, "-o", image, "--sampler", "adaptive", "--guard", "--max-depth", "4", "--width", "80", "--height", "60", "--stats", stats);
+        Assert.True(r.Code == 0, r.Err);
+        Assert.Contains("guard", r.Out);
+        using JsonDocument json = JsonDocument.Parse(File.ReadAllText(stats));
+        Assert.True(json.RootElement.GetProperty("guard").GetBoolean());
     }
 }

@@ -44,9 +44,9 @@ public sealed partial class CompareTests : IDisposable
         Assert.Equal("", stderr);
         Assert.Equal(0, code);
         Row[] rows = ReadCsv(Path.Combine(report, "results.csv"));
-        string[] expectedSeries = [.. Samplers.Names, "adaptive c=0.1", "adaptive c=0.5"];
+        string[] expectedSeries = [.. Samplers.Names, "adaptive c=0.1", "adaptive c=0.5", "adaptive guard c=0.1"];
         Assert.Equal(expectedSeries, rows.Select(r => r.Series).Distinct());
-        Assert.Equal((Samplers.Names.Count * 3) + 4, rows.Length);
+        Assert.Equal((Samplers.Names.Count * 3) + 6, rows.Length);
         Assert.All(rows.Where(r => r.Sampler != "adaptive"), r => Assert.Equal(r.SamplesPerPixel, r.RaysPerPixel, 9));
 
         // Every file is there, and the numbers in the table are those of the images on disk.

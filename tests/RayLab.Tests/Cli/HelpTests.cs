@@ -84,7 +84,7 @@ public sealed class HelpTests
     {
         string[] entries = OptionEntries(RenderHelp());
 
-        Assert.Equal(16, entries.Length); // --output, 14 other options and --help
+        Assert.Equal(17, entries.Length); // --output, 15 other options and --help
         Assert.All(entries.Where(e => !e.Contains("--help", StringComparison.Ordinal)), e =>
             Assert.True(e.Contains("Default:", StringComparison.Ordinal) || e.Contains("(REQUIRED)", StringComparison.Ordinal), e));
     }

@@ -29,6 +29,8 @@ public class AdaptiveTests
         }
 
         public readonly Intensity Centre(long lx, long ly) => At(lx, ly, out _);
+
+        public readonly bool MayCross(long x0, long y0, long size) => false;
     }
 
     [Fact]
@@ -120,6 +122,51 @@ public class AdaptiveTests
         long corners = (W + 1L) * (H + 1), centres = (long)W * H, quadrantCentres = 4L * W * H;
         long edgeMidpoints = ((long)W * (H + 1)) + ((W + 1L) * H);
         Assert.Equal(corners + centres + quadrantCentres + edgeMidpoints, stats.PrimaryRays);
+    }
+
+    public static TheoryData<string, int, int, double, bool> KernelCases => new()
+    {
+        { "perspective", 0, 3, 0.1, false },
+        { "perspective", 0, 2, 0.01, true },
+        { "perspective", 1, 3, 0.05, false },
+        { "orthographic", 0, 3, 0.1, false },
+        { "orthographic", 0, 4, 0.001, true },
+        { "off-axis", 0, 3, 0.1, false },
+        { "off-axis", 2, 2, 0.1, false },
+        { "on the lattice", 0, 3, 0.1, false },
+        { "on the lattice", 1, 2, 0.1, true },
+    };
+
+    [Theory]
+    [MemberData(nameof(KernelCases))]
+    public void EveryPacketWidthGivesTheScalarLoopsBytesRaysAndHeatMap(string view, int minDepth, int maxDepth, double contrast, bool quincunx)
+    {
+        // The corner grid traced in SIMD float must agree with the double loop to the byte, including where a
+        // silhouette passes exactly through lattice points ("on the lattice": a sphere of radius 2 pixels centred
+        // on a pixel corner, seen straight on, touches corners of the grid).
+        (Scene scene, Camera camera) = view switch
+        {
+            "orthographic" => (TwoSpheres(), (Camera)new OrthoCamera { Position = new Double3(0, 0.5, 6), Target = Double3.Zero, Window = new Window(-3, -2, 3, 2) }),
+            "off-axis" => (TwoSpheres(), new PerspectiveCamera { Position = new Double3(0, 0.5, 6), Target = Double3.Zero, Window = new Window(-0.1, -0.25, 0.5, 0.15) }),
+            "on the lattice" => (new Scene([new Sphere(new Double3(1, 1, 0), 0.5, Intensity.White), new Sphere(new Double3(-1.25, 0.5, -1), 0.75, new Intensity(0.3, 0.6, 0.9))], Intensity.Black, Intensity.White),
+                new OrthoCamera { Position = new Double3(0, 0, 10), Target = Double3.Zero, Window = new Window(-3, -2, 3, 2) }),
+            _ => (TwoSpheres(), Camera),
+        };
+        const int W = 24, H = 16;
+        var sampler = new AdaptiveSampler(minDepth, maxDepth, contrast, quincunx);
+        var reference = new Image(W, H);
+        var referenceHeat = new float[W * H];
+        RenderStatistics expected = new Renderer { Kernel = RenderKernel.Scalar }.Render(scene, camera, sampler, reference, referenceHeat);
+        Assert.Equal(RenderKernel.Scalar, expected.Kernel);
+        foreach (RenderKernel kernel in new[] { RenderKernel.Vector128, RenderKernel.Vector256, RenderKernel.Vector512, RenderKernel.Auto })
+        {
+            var image = new Image(W, H);
+            var heat = new float[W * H];
+            RenderStatistics stats = new Renderer { Kernel = kernel, MaxDegreeOfParallelism = 2 }.Render(scene, camera, sampler, image, heat);
+            Assert.Equal(reference.PixelBytes.ToArray(), image.PixelBytes.ToArray());
+            Assert.Equal(expected.PrimaryRays, stats.PrimaryRays);
+            Assert.Equal(referenceHeat, heat);
+        }
     }
 
     [Fact]

@@ -186,10 +186,12 @@ public class PacketKernelTests
     }
 
     [Fact]
-    public void AdaptiveAndExactRendersReportTheScalarLoopTheyUse()
+    public void AdaptiveRendersReportTheCornerGridsLoopAndExactRendersTheScalarOne()
     {
         var image = new Image(32, 24);
         RenderStatistics stats = new Renderer { Kernel = RenderKernel.Vector512 }.Render(TwoSpheres(), Perspective, new AdaptiveSampler(), image);
+        Assert.Equal(RenderKernel.Vector512, stats.Kernel);
+        stats = new Renderer { Kernel = RenderKernel.Scalar }.Render(TwoSpheres(), Perspective, new AdaptiveSampler(), image);
         Assert.Equal(RenderKernel.Scalar, stats.Kernel);
         Assert.Equal(RenderKernel.Scalar, new ExactRenderer().Render(TwoSpheres(), Perspective, image).Kernel);
     }

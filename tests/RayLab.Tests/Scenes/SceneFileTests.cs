@@ -325,6 +325,31 @@ public sealed class SceneFileTests : IDisposable
     }
 
     [Theory]
+    [InlineData("true", true)]
+    [InlineData("false", false)]
+    [InlineData("null", false)]
+    public void TheAdaptiveSamplerMayAskForTheGuard(string value, bool expected)
+    {
+        string json = Mutate(Base, SamplerLine, $$"""  "sampler": { "type": "adaptive", "guard": {{value}} }""" + "\n");
+
+        SamplerSettings sampler = SceneFile.Parse(json, Source).Sampler;
+
+        Assert.Equal(expected, sampler.Guard);
+        Assert.Equal(expected, sampler.CreateAdaptive().Guard);
+    }
+
+    [Fact]
+    public void AGuardThatIsNotABooleanIsReported()
+    {
+        string json = Mutate(Base, SamplerLine, """  "sampler": { "type": "adaptive", "guard": 1 }""" + "\n");
+
+        SceneFileException e = Assert.Throws<SceneFileException>(() => SceneFile.Parse(json, Source));
+
+        Assert.Equal("sampler.guard", e.Field);
+        Assert.Contains("true or false", e.Problem, StringComparison.Ordinal);
+    }
+
+    [Theory]
     [InlineData("1")]
     [InlineData("\"yes\"")]
     public void AQuincunxThatIsNotABooleanIsReported(string value)

@@ -15,6 +15,12 @@ internal interface ILatticeSource
     /// <param name="lx">Lattice column.</param>
     /// <param name="ly">Lattice row.</param>
     Intensity Centre(long lx, long ly);
+
+    /// <summary>True when a sphere's silhouette may pass through the square of <paramref name="size"/> steps at (x0, y0) (<see cref="AdaptiveSampler.Guard"/>).</summary>
+    /// <param name="x0">The square's left lattice column.</param>
+    /// <param name="y0">The square's top lattice row.</param>
+    /// <param name="size">The square's side in lattice steps.</param>
+    bool MayCross(long x0, long y0, long size);
 }
 
 /// <summary>The lab's adaptive recursion and combination rule for one pixel (see <see cref="AdaptiveSampler"/>).</summary>
@@ -31,7 +37,8 @@ internal static class AdaptivePixel
         Intensity tr = Take(ref source, x0 + size, y0, ref samples);
         Intensity bl = Take(ref source, x0, y0 + size, ref samples);
         Intensity br = Take(ref source, x0 + size, y0 + size, ref samples);
-        if (!sampler.Quincunx && sampler.MinDepth == 0 && !CornersDiffer(sampler, tl, tr, bl, br))
+        if (!sampler.Quincunx && sampler.MinDepth == 0 && !CornersDiffer(sampler, tl, tr, bl, br)
+            && !(sampler.Guard && source.MayCross(x0, y0, size)))
         {
             // A flat pixel: the mean of its corners, which is what the combination rule gives for any centre that
             // agrees (exactly the corners' value when they are equal, as AdaptiveLattice.TryFlat takes it).
@@ -63,6 +70,16 @@ internal static class AdaptivePixel
                 {
                     // The corners disagree although each agrees with the centre: refine them all.
                     refineTl = refineTr = refineBl = refineBr = true;
+                }
+
+                if (s.Guard)
+                {
+                    // Where the values agree, a silhouette may still cross a quadrant between its traced points.
+                    long half = size / 2;
+                    refineTl = refineTl || source.MayCross(x0, y0, half);
+                    refineTr = refineTr || source.MayCross(x0 + half, y0, half);
+                    refineBl = refineBl || source.MayCross(x0, y0 + half, half);
+                    refineBr = refineBr || source.MayCross(x0 + half, y0 + half, half);
                 }
             }
         }

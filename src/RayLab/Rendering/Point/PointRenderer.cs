@@ -35,7 +35,8 @@ internal static class PointRenderer
         return new RenderStatistics(rays, clock.Elapsed) { Kernel = kernel, RetracedSamples = retraced, ScalarReason = reason };
     }
 
-    private static RenderKernel ChooseKernel(RenderKernel requested, Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
+    /// <summary>The kernel that renders: the one asked for, the widest native packet for Auto, or scalar when the frame needs double.</summary>
+    internal static RenderKernel ChooseKernel(RenderKernel requested, Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
     {
         frame = null;
         reason = null;

@@ -1,0 +1,187 @@
+using System.Runtime.CompilerServices;
+using RayLab.Cameras;
+using RayLab.Geometry;
+using RayLab.Rendering.Point.Packets;
+
+namespace RayLab.Rendering.Adaptive;
+
+/// <summary>
+/// What a point of the adaptive lattice hits, as an index (0: the background, k + 1: sphere k of the scene), traced
+/// one point at a time in double (<see cref="TraceScalar"/>) or a row of points at a time in SIMD float with an
+/// error bound (<see cref="TraceRow{TL, TP}"/>), the two giving the same index for every point.
+/// </summary>
+/// <remarks>
+/// <para>Lattice point (lx, ly), with <c>S = 2^(MaxDepth+1)</c> steps per pixel, is the window point
+/// <c>α = lx / (W·S)</c>, <c>β = 1 − ly / (H·S)</c> (<see cref="ImagePlane.GetRay"/>).</para>
+/// <para>The SIMD path tests each sphere with the packet kernel's stable discriminant
+/// <c>Δ = r² − |f⊥|²</c> (see <see cref="PacketFrame"/>), in float, and keeps the answer only where |Δ| exceeds a
+/// bound that covers both the float arithmetic (<c>32 ε (r² + L²)</c>, L the largest |o − C| over the window) and
+/// the float rounding of the ray itself, which the point kernel does not need to cover (its samples are
+/// random) but the lattice does, since the double path is its reference to the byte. A ray whose direction
+/// (perspective) is off by δ turns by at most <c>δ/s</c> about the eye, moving its distance from the centre by at
+/// most <c>L δ / s</c> and Δ by at most <c>3 L² δ / s</c>; one whose origin (orthographic) is off by δ moves
+/// Δ by at most <c>3 L δ</c>. With δ ≤ 8 ε (|c| + |a| + |b|) (resp. |e + c − C| + |a| + |b| + L), twice those
+/// terms are added. Lanes within the bound, and lanes whose two nearest hits are within the packet kernel's depth
+/// tolerance of each other, are traced again in double.</para>
+/// </remarks>
+internal sealed class LatticeHits
+{
+    private const double Epsilon = 1.0 / (1 << 23);
+
+    private readonly Scene _scene;
+    private readonly ImagePlane _plane;
+    private readonly double _latticeWidth, _latticeHeight;
+    private readonly HitSphere[] _spheres;
+
+    private LatticeHits(Scene scene, ImagePlane plane, long size, PacketFrame frame)
+    {
+        _scene = scene;
+        _plane = plane;
+        _latticeWidth = plane.Width * (double)size;
+        _latticeHeight = plane.Height * (double)size;
+        A = plane.A;
+        B = plane.B;
+        C = plane.C;
+        Direction = plane.IsOrthographic ? -plane.W : Double3.Zero;
+        CheckDepthOrder = frame.CheckDepthOrder;
+        DepthTolerance = frame.DepthTolerance;
+        var spheres = new List<HitSphere>();
+        double rayError = 8 * Epsilon * (plane.C.Length + plane.A.Length + plane.B.Length);
+        for (int k = 0; k < scene.Spheres.Count; k++)
+        {
+            Sphere sphere = scene.Spheres[k];
+            if (sphere.Radius == 0)
+            {
+                continue;
+            }
+
+            Double3 offset = plane.Eye - sphere.Center + (plane.IsOrthographic ? plane.C : Double3.Zero);
+            double largest = plane.IsOrthographic
+                ? Math.Max(Math.Max(offset.Length, (offset + plane.A).Length), Math.Max((offset + plane.B).Length, (offset + plane.A + plane.B).Length))
+                : offset.Length;
+            double r2 = sphere.Radius * sphere.Radius;
+            double arithmetic = 32 * Epsilon * (r2 + (largest * largest));
+            double ray = plane.IsOrthographic
+                ? 2 * ((3 * largest * 8 * Epsilon * (offset.Length + plane.A.Length + plane.B.Length + largest)) + (3 * largest * largest * 8 * Epsilon))
+                : 2 * 3 * largest * largest * rayError / plane.Distance;
+            spheres.Add(new HitSphere(offset, (float)r2, (float)(1 / (arithmetic + ray)), k + 1));
+        }
+
+        _spheres = [.. spheres];
+    }
+
+    /// <summary>The lab's a, b, c in float.</summary>
+    public Float3 A { get; }
+
+    /// <summary>The lab's b.</summary>
+    public Float3 B { get; }
+
+    /// <summary>The lab's c.</summary>
+    public Float3 C { get; }
+
+    /// <summary>Orthographic: the common direction −w.</summary>
+    public Float3 Direction { get; }
+
+    /// <summary>True when two spheres are close enough that float could order their hits wrongly.</summary>
+    public bool CheckDepthOrder { get; }
+
+    /// <summary>With <see cref="CheckDepthOrder"/>: hits closer than this (world units) along a ray are uncertain.</summary>
+    public float DepthTolerance { get; }
+
+    /// <summary>The SIMD tracer for this frame, or null when float cannot serve it (see <see cref="PacketFrame.TryCreate"/>).</summary>
+    public static LatticeHits? TryCreate(Scene scene, ImagePlane plane, long size, PacketFrame? frame) =>
+        frame is null ? null : new LatticeHits(scene, plane, size, frame);
+
+    /// <summary>The index of what lattice point (lx, ly) hits, traced in double: the reference.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static int TraceScalar(Scene scene, ImagePlane plane, double latticeWidth, double latticeHeight, long lx, long ly)
+    {
+        Ray ray = plane.GetRay(WindowMapping.Alpha(lx, latticeWidth), WindowMapping.Beta(ly, latticeHeight));
+        return scene.Nearest(ray, plane.TMin, plane.TMax) + 1;
+    }
+
+    /// <summary>
+    /// Fills <paramref name="ids"/> with the indices hit by lattice points (<paramref name="lxStart"/> + k·<paramref name="lxStep"/>,
+    /// <paramref name="ly"/>), k = 0 … ids.Length − 1; returns how many were traced again in double.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    public int TraceRow<TL, TP>(long ly, long lxStart, long lxStep, Span<int> ids)
+        where TL : struct, ILanes<TL>
+        where TP : struct, IProjection
+    {
+        int lanes = TL.Count;
+        Span<float> buffer = stackalloc float[lanes];
+        TL one = TL.Broadcast(1f);
+        var window = new LaneWindow<TL>(new(A.X, A.Y, A.Z), new(B.X, B.Y, B.Z), new(C.X, C.Y, C.Z), new(Direction.X, Direction.Y, Direction.Z));
+        TL beta = TL.Broadcast((float)WindowMapping.Beta(ly, _latticeHeight));
+        TL start = TL.Broadcast((float)WindowMapping.Alpha(lxStart, _latticeWidth)), step = TL.Broadcast((float)(lxStep / _latticeWidth));
+        ReadOnlySpan<HitSphere> spheres = _spheres;
+        bool checkOrder = CheckDepthOrder;
+        int retraced = 0;
+        for (int k0 = 0; k0 < ids.Length; k0 += lanes)
+        {
+            TL alpha = TL.MultiplyAdd(TL.Broadcast(k0) + TL.Indices, step, start);
+            TP.GetRays(window, alpha, beta, out Lanes3<TL> origin, out Lanes3<TL> ray);
+            (TL dx, TL dy, TL dz) = (ray.X, ray.Y, ray.Z);
+            TL dd = TL.MultiplyAdd(dx, dx, TL.MultiplyAdd(dy, dy, dz * dz));
+            TL rdd = one / dd;
+            TL nearest = TL.Broadcast(float.NegativeInfinity);
+            TL id = default;
+            TL closest = TL.Broadcast(float.PositiveInfinity);
+            TL unsure = default;
+            TL depthTolerance = checkOrder ? TL.Broadcast(DepthTolerance) / TL.Sqrt(dd) : default;
+            foreach (ref readonly HitSphere sphere in spheres)
+            {
+                TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
+                TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
+                TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
+
+                TL half = TL.MultiplyAdd(fx, dx, TL.MultiplyAdd(fy, dy, fz * dz));
+                TL along = half * rdd;
+                TL px = TL.NegatedMultiplyAdd(dx, along, fx);
+                TL py = TL.NegatedMultiplyAdd(dy, along, fy);
+                TL pz = TL.NegatedMultiplyAdd(dz, along, fz);
+                TL disc = TL.Broadcast(sphere.RadiusSquared) - TL.MultiplyAdd(px, px, TL.MultiplyAdd(py, py, pz * pz));
+                TL negatedT = (half + TL.Sqrt(disc * dd)) * rdd;
+                TL hit = TL.LessThan(nearest, negatedT);
+                closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
+                if (checkOrder)
+                {
+                    unsure |= hit & TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
+                }
+
+                nearest = TL.Select(hit, negatedT, nearest);
+                id = TL.Select(hit, TL.Broadcast(sphere.Id), id);
+            }
+
+            uint uncertain = TL.MaskBits(unsure | TL.LessThanOrEqual(closest, one));
+            id.Store(buffer);
+            int count = Math.Min(lanes, ids.Length - k0);
+            for (int lane = 0; lane < count; lane++)
+            {
+                ids[k0 + lane] = (int)buffer[lane];
+            }
+
+            for (uint rest = uncertain & (uint)((1UL << count) - 1); rest != 0; rest &= rest - 1)
+            {
+                int lane = System.Numerics.BitOperations.TrailingZeroCount(rest);
+                ids[k0 + lane] = TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lxStart + ((k0 + lane) * lxStep), ly);
+                retraced++;
+            }
+        }
+
+        return retraced;
+    }
+
+    /// <summary>One sphere's constants: o − C at α = β = 0, r², 1 / the error bound of Δ, and its index + 1 as a float.</summary>
+    private readonly struct HitSphere(Double3 offset, float radiusSquared, float inverseBound, int id)
+    {
+        public Float3 Offset { get; } = offset;
+
+        public float RadiusSquared { get; } = radiusSquared;
+
+        public float InverseBound { get; } = inverseBound;
+
+        public float Id { get; } = id;
+    }
+}
