@@ -110,4 +110,39 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Top24(Lanes128 bits) => new(Vector128.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 AddBits(Lanes128 a, Lanes128 b) => new((a.V.AsUInt32() + b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 SubtractBits(Lanes128 a, Lanes128 b) => new((a.V.AsUInt32() - b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 MultiplyBits(Lanes128 a, Lanes128 b) => new((a.V.AsUInt32() * b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 ShiftLeftBits(Lanes128 bits, int count) => new((bits.V.AsUInt32() << count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 ShiftRightBits(Lanes128 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 LessThanBits(Lanes128 a, Lanes128 b) => new(Vector128.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 BitsToFloat(Lanes128 bits) => new(Vector128.ConvertToSingle(bits.V.AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 TruncateToBits(Lanes128 x) => new(Vector128.ConvertToInt32Native(x.V).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 InDouble<TF>(in TF formula, Lanes128 a, Lanes128 b, Lanes128 c, Lanes128 d)
+        where TF : struct, IDoubleFormula
+    {
+        (Vector128<double> aLow, Vector128<double> aHigh) = Vector128.Widen(a.V);
+        (Vector128<double> bLow, Vector128<double> bHigh) = Vector128.Widen(b.V);
+        (Vector128<double> cLow, Vector128<double> cHigh) = Vector128.Widen(c.V);
+        (Vector128<double> dLow, Vector128<double> dHigh) = Vector128.Widen(d.V);
+        return new(Vector128.Narrow(formula.Apply(aLow, bLow, cLow, dLow), formula.Apply(aHigh, bHigh, cHigh, dHigh)));
+    }
 }

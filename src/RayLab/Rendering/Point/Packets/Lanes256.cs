@@ -110,4 +110,39 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 Top24(Lanes256 bits) => new(Vector256.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 AddBits(Lanes256 a, Lanes256 b) => new((a.V.AsUInt32() + b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 SubtractBits(Lanes256 a, Lanes256 b) => new((a.V.AsUInt32() - b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 MultiplyBits(Lanes256 a, Lanes256 b) => new((a.V.AsUInt32() * b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 ShiftLeftBits(Lanes256 bits, int count) => new((bits.V.AsUInt32() << count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 ShiftRightBits(Lanes256 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 LessThanBits(Lanes256 a, Lanes256 b) => new(Vector256.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 BitsToFloat(Lanes256 bits) => new(Vector256.ConvertToSingle(bits.V.AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 TruncateToBits(Lanes256 x) => new(Vector256.ConvertToInt32Native(x.V).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 InDouble<TF>(in TF formula, Lanes256 a, Lanes256 b, Lanes256 c, Lanes256 d)
+        where TF : struct, IDoubleFormula
+    {
+        (Vector256<double> aLow, Vector256<double> aHigh) = Vector256.Widen(a.V);
+        (Vector256<double> bLow, Vector256<double> bHigh) = Vector256.Widen(b.V);
+        (Vector256<double> cLow, Vector256<double> cHigh) = Vector256.Widen(c.V);
+        (Vector256<double> dLow, Vector256<double> dHigh) = Vector256.Widen(d.V);
+        return new(Vector256.Narrow(formula.Apply(aLow, bLow, cLow, dLow), formula.Apply(aHigh, bHigh, cHigh, dHigh)));
+    }
 }

@@ -110,4 +110,39 @@ internal readonly record struct Lanes512(Vector512<float> V) : ILanes<Lanes512>
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 Top24(Lanes512 bits) => new(Vector512.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 AddBits(Lanes512 a, Lanes512 b) => new((a.V.AsUInt32() + b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 SubtractBits(Lanes512 a, Lanes512 b) => new((a.V.AsUInt32() - b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 MultiplyBits(Lanes512 a, Lanes512 b) => new((a.V.AsUInt32() * b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 ShiftLeftBits(Lanes512 bits, int count) => new((bits.V.AsUInt32() << count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 ShiftRightBits(Lanes512 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 LessThanBits(Lanes512 a, Lanes512 b) => new(Vector512.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 BitsToFloat(Lanes512 bits) => new(Vector512.ConvertToSingle(bits.V.AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 TruncateToBits(Lanes512 x) => new(Vector512.ConvertToInt32Native(x.V).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 InDouble<TF>(in TF formula, Lanes512 a, Lanes512 b, Lanes512 c, Lanes512 d)
+        where TF : struct, IDoubleFormula
+    {
+        (Vector512<double> aLow, Vector512<double> aHigh) = Vector512.Widen(a.V);
+        (Vector512<double> bLow, Vector512<double> bHigh) = Vector512.Widen(b.V);
+        (Vector512<double> cLow, Vector512<double> cHigh) = Vector512.Widen(c.V);
+        (Vector512<double> dLow, Vector512<double> dHigh) = Vector512.Widen(d.V);
+        return new(Vector512.Narrow(formula.Apply(aLow, bLow, cLow, dLow), formula.Apply(aHigh, bHigh, cHigh, dHigh)));
+    }
 }
