@@ -89,6 +89,7 @@ public class LanesTests
             Expect(TL.AddBits(x, y), (p, q) => unchecked(p + q), "AddBits");
             Expect(TL.SubtractBits(x, y), (p, q) => unchecked(p - q), "SubtractBits");
             Expect(TL.MultiplyBits(x, y), (p, q) => unchecked(p * q), "MultiplyBits");
+            Expect(TL.ReverseBits(y), (_, q) => LowDiscrepancy.ReverseBits(q), "ReverseBits");
             Expect(TL.LessThanBits(x, y), (p, q) => (int)p < (int)q ? uint.MaxValue : 0, "LessThanBits");
             Expect(TL.ShiftLeftBits(x, shift), (p, _) => p << shift, "ShiftLeftBits");
             Expect(TL.ShiftRightBits(x, shift), (p, _) => p >> shift, "ShiftRightBits");
@@ -126,12 +127,12 @@ public class LanesTests
         int n = TL.Count;
         float[] result = new float[n], shifted = new float[n];
         const double Kensler = 1.0 / 4294967808.0;
-        foreach ((double scale, double inner, double outer) in new[] { (CellFormula.UnitScale, 7.0, 1.0), (Kensler, 3.0, 5.0), (Kensler, 17.0, 1.0), (CellFormula.UnitScale, 16.0, 16.0) })
+        foreach ((double scale, int inner, int outer) in new[] { (CellFormula.UnitScale, 7, 1), (Kensler, 3, 5), (Kensler, 17, 1), (CellFormula.UnitScale, 16, 16), (Kensler, 4, 8), (Kensler, 8, 3), (CellFormula.UnitScale, 1, 256) })
         {
             var formula = new CellFormula(scale, inner, outer);
             for (int shift = 0; shift < Words.Length; shift++)
             {
-                float[] a = Enumerable.Range(0, n).Select(lane => (float)((lane + shift) % (int)inner)).ToArray();
+                float[] a = Enumerable.Range(0, n).Select(lane => (float)((lane + shift) % inner)).ToArray();
                 float[] c = Enumerable.Range(0, n).Select(lane => (float)((lane * 3) % 5)).ToArray();
                 uint[] hashes = Enumerable.Range(0, n).Select(lane => CounterHash.Hash((uint)(lane + (17 * shift)))).ToArray();
                 float[] high = hashes.Select(h => (float)(h >> 8)).ToArray(), low = hashes.Select(h => (float)(h & 0xff)).ToArray();
@@ -140,7 +141,7 @@ public class LanesTests
                 for (int lane = 0; lane < n; lane++)
                 {
                     double jitter = hashes[lane] * scale;
-                    float expected = (float)((c[lane] + ((a[lane] + jitter) / inner)) / outer);
+                    float expected = (float)((c[lane] + ((a[lane] + jitter) / (double)inner)) / outer);
                     Assert.Equal(BitConverter.SingleToInt32Bits(expected), BitConverter.SingleToInt32Bits(result[lane]));
                     double wrapped = ((double)shift / 17) + CounterHash.ToUnit(hashes[lane]);
                     float expectedShift = (float)(wrapped >= 1 ? wrapped - 1 : wrapped);

@@ -124,6 +124,9 @@ internal interface ILanes<TSelf>
     /// <summary>Mask of lanes where <c>a &lt; b</c>, the lanes' bits compared as signed 32-bit integers.</summary>
     static abstract TSelf LessThanBits(TSelf a, TSelf b);
 
+    /// <summary><see cref="Sampling.LowDiscrepancy.ReverseBits"/> of each lane's bits: a byte shuffle and two nibble lookups where the hardware shuffles bytes.</summary>
+    static abstract TSelf ReverseBits(TSelf bits);
+
     /// <summary>Each lane's bits as a signed 32-bit integer, converted to the nearest float (exact below 2²⁴).</summary>
     static abstract TSelf BitsToFloat(TSelf bits);
 

@@ -15,13 +15,13 @@ internal struct LanePermutation<TL>
 {
     private TL _p, _p16, _p8, _p23, _multiplier, _rotation;
 
-    /// <summary>Sets the lanes' pattern numbers; <paramref name="patterns"/> has one per lane.</summary>
-    /// <param name="patterns">The pattern numbers, <see cref="ILanes{TSelf}.Count"/> of them.</param>
+    /// <summary>Sets the lanes' pattern numbers.</summary>
+    /// <param name="patterns">Each lane's pattern number p.</param>
     /// <param name="length">The permutations' common length l.</param>
     /// <param name="scratch">Room for <see cref="ILanes{TSelf}.Count"/> values.</param>
-    public void Set(ReadOnlySpan<uint> patterns, uint length, Span<uint> scratch)
+    public void Set(TL patterns, in LaneLength<TL> length, Span<uint> scratch)
     {
-        _p = TL.Load(MemoryMarshal.Cast<uint, float>(patterns));
+        _p = patterns;
         _p16 = TL.ShiftRightBits(_p, 16);
         _p8 = TL.ShiftRightBits(_p, 8);
         _p23 = TL.ShiftRightBits(_p, 23);
@@ -31,13 +31,21 @@ internal struct LanePermutation<TL>
         _multiplier = TL.MultiplyBits(TL.ShiftRightBits(_p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(0x6935fa69u));
 
         // The final rotation (v + p) mod l, with v < l, is v + (p mod l) less l if that reaches l: p mod l is
-        // the one division, made here once per pixel.
-        for (int lane = 0; lane < scratch.Length; lane++)
+        // made here once per pixel, a mask when l is a power of two, else Lemire's multiply-only remainder.
+        if (length.IsPowerOfTwo)
         {
-            scratch[lane] = patterns[lane] % length;
+            _rotation = _p & length.Last;
         }
+        else
+        {
+            _p.Store(MemoryMarshal.Cast<uint, float>(scratch));
+            for (int lane = 0; lane < scratch.Length; lane++)
+            {
+                scratch[lane] = length.Remainder(scratch[lane]);
+            }
 
-        _rotation = TL.Load(MemoryMarshal.Cast<uint, float>(scratch));
+            _rotation = TL.Load(MemoryMarshal.Cast<uint, float>(scratch));
+        }
     }
 
     /// <summary>
@@ -93,6 +101,9 @@ internal struct LanePermutation<TL>
 internal readonly struct LaneLength<TL>
     where TL : struct, ILanes<TL>
 {
+    private readonly uint _length;
+    private readonly ulong _remainderMultiplier;
+
     /// <summary>Broadcasts <paramref name="length"/> (1 … 2³⁰) and the values derived from it.</summary>
     /// <param name="length">The permutation length.</param>
     public LaneLength(int length)
@@ -103,10 +114,16 @@ internal readonly struct LaneLength<TL>
         w |= w >> 4;
         w |= w >> 8;
         w |= w >> 16;
+        _length = (uint)length;
+        _remainderMultiplier = unchecked((ulong.MaxValue / _length) + 1);
+        IsPowerOfTwo = int.IsPow2(length);
         Length = TL.BroadcastBits((uint)length);
         Last = TL.BroadcastBits((uint)length - 1);
         Mask = TL.BroadcastBits(w);
     }
+
+    /// <summary>True when l is a power of two (p mod l is p and (l − 1)).</summary>
+    public bool IsPowerOfTwo { get; }
 
     /// <summary>l.</summary>
     public TL Length { get; }
@@ -116,30 +133,55 @@ internal readonly struct LaneLength<TL>
 
     /// <summary>w.</summary>
     public TL Mask { get; }
+
+    /// <summary>
+    /// <paramref name="p"/> mod l without a division (Lemire, Kaser and Kurz, "Faster remainder by direct
+    /// computation", 2019: exact for every 32-bit p and l).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public uint Remainder(uint p) => (uint)Math.BigMul(unchecked(_remainderMultiplier * p), _length, out _);
 }
 
 /// <summary>
 /// The cell formula of the jittered family, in double as the scalar samplers write it:
 /// <c>(c + ((a + j) / d₁)) / d₂</c> with the jitter <c>j = (bHi·256 + bLo) · scale</c> from a 32-bit hash split in two
 /// exact floats (its top 24 bits and its low 8). With scale 2⁻³² and bLo = 0, j is <see cref="CounterHash.ToUnit"/>;
-/// with Kensler's 1/(2³² + 512) it is his <c>randfloat</c>. An outer divisor of 1 with c = 0 leaves (a + j) / d₁.
+/// with Kensler's 1/(2³² + 512) it is his <c>randfloat</c>.
 /// </summary>
-/// <param name="scale">The jitter's scale.</param>
-/// <param name="inner">d₁.</param>
-/// <param name="outer">d₂.</param>
-internal readonly struct CellFormula(double scale, double inner, double outer) : IDoubleFormula
+/// <remarks>
+/// A division by a power of two is a multiplication by its reciprocal, exactly (no result here is subnormal), so
+/// those divisors (every count a sampler gets at 4, 16, 64, 256 spp) cost a multiply, not a divide; a divisor of 1
+/// costs nothing.
+/// </remarks>
+internal readonly struct CellFormula : IDoubleFormula
 {
     /// <summary>The scale that makes the jitter <see cref="CounterHash.ToUnit"/> of the hash.</summary>
     public const double UnitScale = LowDiscrepancy.TwoToMinus32;
 
-    private readonly double _scale = scale, _inner = inner, _outer = outer;
+    private readonly double _scale, _inner, _outer;
+    private readonly bool _innerByMultiply, _outerByMultiply, _outerIsOne;
+
+    /// <summary>The formula with jitter scale <paramref name="scale"/> and divisors d₁ = <paramref name="inner"/>, d₂ = <paramref name="outer"/>.</summary>
+    /// <param name="scale">The jitter's scale.</param>
+    /// <param name="inner">d₁, a whole number ≥ 1.</param>
+    /// <param name="outer">d₂, a whole number ≥ 1.</param>
+    public CellFormula(double scale, int inner, int outer)
+    {
+        _scale = scale;
+        _innerByMultiply = int.IsPow2(inner);
+        _outerByMultiply = int.IsPow2(outer);
+        _outerIsOne = outer == 1;
+        _inner = _innerByMultiply ? 1.0 / inner : inner;
+        _outer = _outerByMultiply ? 1.0 / outer : outer;
+    }
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector128<double> Apply(Vector128<double> a, Vector128<double> bHigh, Vector128<double> c, Vector128<double> bLow)
     {
         Vector128<double> jitter = ((bHigh * 256.0) + bLow) * _scale;
-        return (c + ((a + jitter) / Vector128.Create(_inner))) / Vector128.Create(_outer);
+        Vector128<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector128.Create(_inner);
+        return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector128.Create(_outer);
     }
 
     /// <inheritdoc />
@@ -147,7 +189,8 @@ internal readonly struct CellFormula(double scale, double inner, double outer) :
     public Vector256<double> Apply(Vector256<double> a, Vector256<double> bHigh, Vector256<double> c, Vector256<double> bLow)
     {
         Vector256<double> jitter = ((bHigh * 256.0) + bLow) * _scale;
-        return (c + ((a + jitter) / Vector256.Create(_inner))) / Vector256.Create(_outer);
+        Vector256<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector256.Create(_inner);
+        return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector256.Create(_outer);
     }
 
     /// <inheritdoc />
@@ -155,7 +198,8 @@ internal readonly struct CellFormula(double scale, double inner, double outer) :
     public Vector512<double> Apply(Vector512<double> a, Vector512<double> bHigh, Vector512<double> c, Vector512<double> bLow)
     {
         Vector512<double> jitter = ((bHigh * 256.0) + bLow) * _scale;
-        return (c + ((a + jitter) / Vector512.Create(_inner))) / Vector512.Create(_outer);
+        Vector512<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector512.Create(_inner);
+        return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector512.Create(_outer);
     }
 }
 
@@ -193,62 +237,41 @@ internal readonly struct ShiftFormula(double q) : IDoubleFormula
     }
 }
 
-/// <summary>Per-thread scratch for the per-pixel values a packet's lane sampler makes in scalar code.</summary>
-internal static class LaneScratch
-{
-    /// <summary>The pixel keys (<see cref="CounterHash.PixelKey"/>) of pixels x0 … x0 + Count − 1 of a row into <paramref name="keys"/>.</summary>
-    public static void PixelKeys(int x0, int row, uint seed, Span<uint> keys)
-    {
-        for (int lane = 0; lane < keys.Length; lane++)
-        {
-            keys[lane] = CounterHash.PixelKey(x0 + lane, row, seed);
-        }
-    }
-}
-
 /// <summary>
-/// <see cref="NRooksSampler"/> in lanes: both of a pixel's permutations (column and row) walk in SIMD, the
-/// jitter is the counter hash in SIMD, and the cell formula runs in double so each point is the scalar one's float.
+/// <see cref="NRooksSampler"/> in lanes: both of a pixel's permutations (column and row) walk in SIMD and the
+/// jitter is the counter hash in SIMD. Each point is the scalar sampler's float: with a power-of-two count the cell
+/// formula's double value is exact and one float rounding gives it; otherwise it runs in double.
 /// </summary>
 internal struct NRooksLanes<TL> : ILaneSampler<TL>
     where TL : struct, ILanes<TL>
 {
-    private readonly uint _seed;
-    private readonly int _count;
+    private readonly uint _salt;
     private readonly LaneLength<TL> _length;
     private readonly CellFormula _cell;
-    private readonly uint[] _scratch = new uint[3 * TL.Count];
+    private readonly bool _exactInFloat;
+    private readonly TL _inverseCount;
+    private readonly uint[] _scratch = new uint[TL.Count];
     private LanePermutation<TL> _columns, _rows;
     private TL _keys;
 
     /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
     public NRooksLanes(NRooksSampler sampler)
     {
-        _seed = sampler.Seed;
-        _count = sampler.SamplesPerPixel;
-        _length = new LaneLength<TL>(_count);
-        _cell = new CellFormula(CellFormula.UnitScale, _count, 1.0);
+        int count = sampler.SamplesPerPixel;
+        _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
+        _length = new LaneLength<TL>(count);
+        _cell = new CellFormula(CellFormula.UnitScale, count, 1);
+        _exactInFloat = int.IsPow2(count);
+        _inverseCount = TL.Broadcast(1f / count);
     }
 
     /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void BeginPacket(int x0, int row)
     {
-        int lanes = TL.Count;
-        Span<uint> keys = _scratch.AsSpan(0, lanes), patterns = _scratch.AsSpan(lanes, lanes), scratch = _scratch.AsSpan(2 * lanes, lanes);
-        LaneScratch.PixelKeys(x0, row, _seed, keys);
-        _keys = TL.Load(MemoryMarshal.Cast<uint, float>(keys));
-        for (int lane = 0; lane < lanes; lane++)
-        {
-            patterns[lane] = keys[lane] * 0xa511e9b3u;
-        }
-
-        _columns.Set(patterns, (uint)_count, scratch);
-        for (int lane = 0; lane < lanes; lane++)
-        {
-            patterns[lane] = keys[lane] * 0x63d83595u;
-        }
-
-        _rows.Set(patterns, (uint)_count, scratch);
+        _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
+        _columns.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(0xa511e9b3u)), _length, _scratch);
+        _rows.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(0x63d83595u)), _length, _scratch);
     }
 
     /// <inheritdoc />
@@ -261,14 +284,25 @@ internal struct NRooksLanes<TL> : ILaneSampler<TL>
         TL row = TL.BitsToFloat(_rows.Element(i, _length));
         TL h1 = LaneHash.SampleHash(_keys, index);
         TL h2 = TL.Hash(h1);
-        sx = TL.InDouble(_cell, column, TL.Top24(h1), default, default);
-        sy = TL.InDouble(_cell, row, TL.Top24(h2), default, default);
+        if (_exactInFloat)
+        {
+            // (column + u)/N with N = 2ᵏ: column + u rounded once (u·2²⁴ is exact), then an exact scaling.
+            TL unit = TL.Broadcast(1f / 16777216f);
+            sx = TL.MultiplyAdd(TL.Top24(h1), unit, column) * _inverseCount;
+            sy = TL.MultiplyAdd(TL.Top24(h2), unit, row) * _inverseCount;
+        }
+        else
+        {
+            sx = TL.InDouble(_cell, column, TL.Top24(h1), default, default);
+            sy = TL.InDouble(_cell, row, TL.Top24(h2), default, default);
+        }
     }
 }
 
 /// <summary>
 /// <see cref="MultiJitteredSampler"/> in lanes: the n column and n row permutations of each pixel get their
-/// pattern numbers once per packet; the elements walk in SIMD and the cell formula runs in double.
+/// pattern numbers once per packet and their elements walk in SIMD. Each point is the scalar sampler's float: with
+/// n a power of two the formula's double value is exact and one float rounding gives it; otherwise it runs in double.
 /// </summary>
 internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
     where TL : struct, ILanes<TL>
@@ -276,21 +310,25 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
     private const uint ColumnSalt = 0x2f5a1c37u;
     private const uint RowSalt = 0xc13fa9a9u;
 
-    private readonly uint _seed;
+    private readonly uint _salt;
     private readonly int _n;
     private readonly LaneLength<TL> _length;
     private readonly CellFormula _cell;
-    private readonly uint[] _scratch = new uint[3 * TL.Count];
+    private readonly bool _exactInFloat;
+    private readonly TL _inverseCount;
+    private readonly uint[] _scratch = new uint[TL.Count];
     private readonly LanePermutation<TL>[] _columns, _rows;
     private TL _keys;
 
     /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
     public MultiJitteredLanes(MultiJitteredSampler sampler)
     {
-        _seed = sampler.Seed;
+        _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
         _n = sampler.GridSize;
         _length = new LaneLength<TL>(_n);
         _cell = new CellFormula(CellFormula.UnitScale, _n, _n);
+        _exactInFloat = int.IsPow2(_n);
+        _inverseCount = TL.Broadcast(1f / (_n * _n));
         _columns = new LanePermutation<TL>[_n];
         _rows = new LanePermutation<TL>[_n];
     }
@@ -298,24 +336,12 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
     /// <inheritdoc />
     public void BeginPacket(int x0, int row)
     {
-        int lanes = TL.Count;
-        Span<uint> keys = _scratch.AsSpan(0, lanes), patterns = _scratch.AsSpan(lanes, lanes), scratch = _scratch.AsSpan(2 * lanes, lanes);
-        LaneScratch.PixelKeys(x0, row, _seed, keys);
-        _keys = TL.Load(MemoryMarshal.Cast<uint, float>(keys));
+        _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
+        TL columnKeys = TL.Xor(_keys, TL.BroadcastBits(ColumnSalt)), rowKeys = TL.Xor(_keys, TL.BroadcastBits(RowSalt));
         for (int k = 0; k < _n; k++)
         {
-            for (int lane = 0; lane < lanes; lane++)
-            {
-                patterns[lane] = CounterHash.SampleHash(keys[lane] ^ ColumnSalt, k);
-            }
-
-            _columns[k].Set(patterns, (uint)_n, scratch);
-            for (int lane = 0; lane < lanes; lane++)
-            {
-                patterns[lane] = CounterHash.SampleHash(keys[lane] ^ RowSalt, k);
-            }
-
-            _rows[k].Set(patterns, (uint)_n, scratch);
+            _columns[k].Set(LaneHash.SampleHash(columnKeys, k), _length, _scratch);
+            _rows[k].Set(LaneHash.SampleHash(rowKeys, k), _length, _scratch);
         }
     }
 
@@ -329,54 +355,59 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
         TL subRow = TL.BitsToFloat(_rows[row].Element(TL.BroadcastBits((uint)column), _length));
         TL h1 = LaneHash.SampleHash(_keys, index);
         TL h2 = TL.Hash(h1);
-        sx = TL.InDouble(_cell, subColumn, TL.Top24(h1), TL.Broadcast(column), default);
-        sy = TL.InDouble(_cell, subRow, TL.Top24(h2), TL.Broadcast(row), default);
+        if (_exactInFloat)
+        {
+            // (column + (sub + u)/n)/n = (column·n + sub + u)/n² with n = 2ᵏ: one rounding of the sum, an exact scaling.
+            TL unit = TL.Broadcast(1f / 16777216f);
+            sx = TL.MultiplyAdd(TL.Top24(h1), unit, TL.Broadcast(column * _n) + subColumn) * _inverseCount;
+            sy = TL.MultiplyAdd(TL.Top24(h2), unit, TL.Broadcast(row * _n) + subRow) * _inverseCount;
+        }
+        else
+        {
+            sx = TL.InDouble(_cell, subColumn, TL.Top24(h1), TL.Broadcast(column), default);
+            sy = TL.InDouble(_cell, subRow, TL.Top24(h2), TL.Broadcast(row), default);
+        }
     }
 }
 
 /// <summary>
 /// <see cref="CorrelatedMultiJitteredSampler"/> in lanes: Kensler's three permutations walk in SIMD, his
-/// <c>randfloat</c> hash runs in SIMD, and the cell formulas run in double.
+/// <c>randfloat</c> hash runs in SIMD, and the cell formulas run in double (the jitter is a rounded double, so
+/// only double arithmetic gives the scalar sampler's floats).
 /// </summary>
 internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
     where TL : struct, ILanes<TL>
 {
-    private readonly uint _seed;
-    private readonly int _count, _m, _n;
+    private readonly uint _salt;
     private readonly LaneLength<TL> _all, _columns, _rows;
     private readonly TL _inverseColumns, _columnCount;
     private readonly CellFormula _x, _y;
-    private readonly uint[] _scratch = new uint[3 * TL.Count];
+    private readonly uint[] _scratch = new uint[TL.Count];
     private LanePermutation<TL> _index, _column, _row;
     private TL _jx, _jxMultiplier, _jy, _jyMultiplier;
 
     /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
     public CorrelatedMultiJitteredLanes(CorrelatedMultiJitteredSampler sampler)
     {
-        _seed = sampler.Seed;
-        _count = sampler.SamplesPerPixel;
-        _m = sampler.Columns;
-        _n = sampler.Rows;
-        _all = new LaneLength<TL>(_count);
+        int count = sampler.SamplesPerPixel;
+        _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
+        _all = new LaneLength<TL>(count);
         _columns = new LaneLength<TL>(sampler.Columns);
         _rows = new LaneLength<TL>(sampler.Rows);
         _inverseColumns = TL.Broadcast(1f / sampler.Columns);
         _columnCount = TL.BroadcastBits((uint)sampler.Columns);
         const double Kensler = 1.0 / 4294967808.0;
         _x = new CellFormula(Kensler, sampler.Rows, sampler.Columns);
-        _y = new CellFormula(Kensler, _count, 1.0);
+        _y = new CellFormula(Kensler, count, 1);
     }
 
     /// <inheritdoc />
     public void BeginPacket(int x0, int row)
     {
-        int lanes = TL.Count;
-        Span<uint> keys = _scratch.AsSpan(0, lanes), patterns = _scratch.AsSpan(lanes, lanes), scratch = _scratch.AsSpan(2 * lanes, lanes);
-        LaneScratch.PixelKeys(x0, row, _seed, keys);
-        TL p = TL.Load(MemoryMarshal.Cast<uint, float>(keys));
-        SetPermutation(ref _index, keys, patterns, scratch, 0x51633e2du, _count);
-        SetPermutation(ref _column, keys, patterns, scratch, 0x68bc21ebu, _m);
-        SetPermutation(ref _row, keys, patterns, scratch, 0x02e5be93u, _n);
+        TL p = LaneHash.PixelKeys<TL>(x0, row, _salt);
+        _index.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x51633e2du)), _all, _scratch);
+        _column.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x68bc21ebu)), _columns, _scratch);
+        _row.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x02e5be93u)), _rows, _scratch);
         _jx = TL.MultiplyBits(p, TL.BroadcastBits(0x967a889bu));
         _jxMultiplier = TL.ShiftRightBits(_jx, 18) | TL.BroadcastBits(1);
         _jy = TL.MultiplyBits(p, TL.BroadcastBits(0x368cc8b7u));
@@ -406,16 +437,6 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
         TL jy = RandomBits(s, _jy, _jyMultiplier);
         sx = TL.InDouble(_x, row, TL.Top24(jx), column, LowByte(jx));
         sy = TL.InDouble(_y, TL.BitsToFloat(s), TL.Top24(jy), default, LowByte(jy));
-    }
-
-    private static void SetPermutation(ref LanePermutation<TL> permutation, ReadOnlySpan<uint> keys, Span<uint> patterns, Span<uint> scratch, uint salt, int length)
-    {
-        for (int lane = 0; lane < keys.Length; lane++)
-        {
-            patterns[lane] = keys[lane] * salt;
-        }
-
-        permutation.Set(patterns, (uint)length, scratch);
     }
 
     /// <summary>The low 8 bits of each lane as an exact float.</summary>
@@ -546,14 +567,7 @@ internal struct SobolLanes<TL> : ILaneSampler<TL>
 
     /// <summary><see cref="LowDiscrepancy.ReverseBits"/> in every lane.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    internal static TL Reverse(TL x)
-    {
-        x = TL.ShiftLeftBits(x, 16) | TL.ShiftRightBits(x, 16);
-        x = TL.ShiftLeftBits(x & TL.BroadcastBits(0x00ff00ffu), 8) | (TL.ShiftRightBits(x, 8) & TL.BroadcastBits(0x00ff00ffu));
-        x = TL.ShiftLeftBits(x & TL.BroadcastBits(0x0f0f0f0fu), 4) | (TL.ShiftRightBits(x, 4) & TL.BroadcastBits(0x0f0f0f0fu));
-        x = TL.ShiftLeftBits(x & TL.BroadcastBits(0x33333333u), 2) | (TL.ShiftRightBits(x, 2) & TL.BroadcastBits(0x33333333u));
-        return TL.ShiftLeftBits(x & TL.BroadcastBits(0x55555555u), 1) | (TL.ShiftRightBits(x, 1) & TL.BroadcastBits(0x55555555u));
-    }
+    internal static TL Reverse(TL x) => TL.ReverseBits(x);
 }
 
 /// <summary>Where the permutation samplers' lanes are exact.</summary>
