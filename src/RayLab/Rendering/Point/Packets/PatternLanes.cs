@@ -1,3 +1,4 @@
+using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
@@ -59,7 +60,15 @@ internal struct LanePermutation<TL>
     public readonly TL Element(TL i, in LaneLength<TL> length)
     {
         TL w = length.Mask, last = length.Last;
-        TL v = i;
+        TL v;
+        if (length.IsPowerOfTwo)
+        {
+            // w = l − 1: one round always lands below l, and the rotation wraps with the mask.
+            v = Round(i, w);
+            return TL.AddBits(v, _rotation) & w;
+        }
+
+        v = i;
         TL pending = TL.BroadcastBits(uint.MaxValue);
         do
         {
@@ -318,6 +327,7 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
     private readonly TL _inverseCount;
     private readonly uint[] _scratch = new uint[TL.Count];
     private readonly LanePermutation<TL>[] _columns, _rows;
+    private readonly (int Column, int Row)[] _cells;
     private TL _keys;
 
     /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
@@ -331,6 +341,13 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
         _inverseCount = TL.Broadcast(1f / (_n * _n));
         _columns = new LanePermutation<TL>[_n];
         _rows = new LanePermutation<TL>[_n];
+
+        // Sample i's coarse cell (i mod n, i div n), looked up rather than divided for in the hot loop.
+        _cells = new (int, int)[_n * _n];
+        for (int i = 0; i < _cells.Length; i++)
+        {
+            _cells[i] = (i % _n, i / _n);
+        }
     }
 
     /// <inheritdoc />
@@ -350,7 +367,7 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
     [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
-        int column = index % _n, row = index / _n;
+        (int column, int row) = _cells[index];
         TL subColumn = TL.BitsToFloat(_columns[column].Element(TL.BroadcastBits((uint)row), _length));
         TL subRow = TL.BitsToFloat(_rows[row].Element(TL.BroadcastBits((uint)column), _length));
         TL h1 = LaneHash.SampleHash(_keys, index);
@@ -381,6 +398,7 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
     private readonly uint _salt;
     private readonly LaneLength<TL> _all, _columns, _rows;
     private readonly TL _inverseColumns, _columnCount;
+    private readonly int _columnShift;
     private readonly CellFormula _x, _y;
     private readonly uint[] _scratch = new uint[TL.Count];
     private LanePermutation<TL> _index, _column, _row;
@@ -396,6 +414,7 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
         _rows = new LaneLength<TL>(sampler.Rows);
         _inverseColumns = TL.Broadcast(1f / sampler.Columns);
         _columnCount = TL.BroadcastBits((uint)sampler.Columns);
+        _columnShift = BitOperations.Log2((uint)sampler.Columns);
         const double Kensler = 1.0 / 4294967808.0;
         _x = new CellFormula(Kensler, sampler.Rows, sampler.Columns);
         _y = new CellFormula(Kensler, count, 1);
@@ -420,8 +439,29 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
         TL s = _index.Element(TL.BroadcastBits((uint)index), _all);
+        TL quotient, remainder;
+        if (_columns.IsPowerOfTwo)
+        {
+            quotient = TL.ShiftRightBits(s, _columnShift);
+            remainder = s & _columns.Last;
+        }
+        else
+        {
+            (quotient, remainder) = DivideByColumns(s);
+        }
 
-        // s div m and s mod m: a float quotient (s < 2²⁴ is exact) truncated, then corrected by one either way.
+        TL column = TL.BitsToFloat(_column.Element(remainder, _columns));
+        TL row = TL.BitsToFloat(_row.Element(quotient, _rows));
+        TL jx = RandomBits(s, _jx, _jxMultiplier);
+        TL jy = RandomBits(s, _jy, _jyMultiplier);
+        sx = TL.InDouble(_x, row, TL.Top24(jx), column, LowByte(jx));
+        sy = TL.InDouble(_y, TL.BitsToFloat(s), TL.Top24(jy), default, LowByte(jy));
+    }
+
+    /// <summary>s div m and s mod m: a float quotient (s &lt; 2²⁴ is exact) truncated, then corrected by one either way.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private readonly (TL Quotient, TL Remainder) DivideByColumns(TL s)
+    {
         TL quotient = TL.TruncateToBits(TL.BitsToFloat(s) * _inverseColumns);
         TL remainder = TL.SubtractBits(s, TL.MultiplyBits(quotient, _columnCount));
         TL low = TL.LessThanBits(remainder, default);
@@ -430,13 +470,7 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
         TL high = TL.LessThanBits(TL.SubtractBits(_columnCount, TL.BroadcastBits(1)), remainder);
         quotient = TL.Select(high, TL.AddBits(quotient, TL.BroadcastBits(1)), quotient);
         remainder = TL.Select(high, TL.SubtractBits(remainder, _columnCount), remainder);
-
-        TL column = TL.BitsToFloat(_column.Element(remainder, _columns));
-        TL row = TL.BitsToFloat(_row.Element(quotient, _rows));
-        TL jx = RandomBits(s, _jx, _jxMultiplier);
-        TL jy = RandomBits(s, _jy, _jyMultiplier);
-        sx = TL.InDouble(_x, row, TL.Top24(jx), column, LowByte(jx));
-        sy = TL.InDouble(_y, TL.BitsToFloat(s), TL.Top24(jy), default, LowByte(jy));
+        return (quotient, remainder);
     }
 
     /// <summary>The low 8 bits of each lane as an exact float.</summary>
