@@ -169,4 +169,48 @@ public class LaneSamplerTests
             Assert.True(lanes.PixelBytes.SequenceEqual(buffered.PixelBytes), $"{name} × {kernel}: the lane sampler's image differs from the buffered one.");
         }
     }
+
+    /// <summary>A student's sampler with its own batch call, which the buffered path must use (and count).</summary>
+    private sealed class BatchingStudentSampler(IPixelSampler inner) : IPixelSampler
+    {
+        public int BatchCalls;
+
+        public int SingleCalls;
+
+        public string Name => "student-batch";
+
+        public int SamplesPerPixel => inner.SamplesPerPixel;
+
+        public uint Seed => inner.Seed;
+
+        public SamplePoint GetSample(int x, int y, int index)
+        {
+            Interlocked.Increment(ref SingleCalls);
+            return inner.GetSample(x, y, index);
+        }
+
+        public void GetSamples(int x, int y, Span<SamplePoint> points)
+        {
+            Interlocked.Increment(ref BatchCalls);
+            for (int i = 0; i < points.Length; i++)
+            {
+                points[i] = inner.GetSample(x, y, i);
+            }
+        }
+    }
+
+    [Fact]
+    public void TheBufferedPathAsksForAPixelsSamplesInOneCall()
+    {
+        var scene = new Scene([new Sphere(new Double3(0, 0, 0), 1, new Intensity(0.9, 0.2, 0.2))], new Intensity(0.1, 0.1, 0.15), Intensity.White);
+        var camera = new PerspectiveCamera { Position = new Double3(0, 0.5, 6), Target = Double3.Zero, Fov = 40, NearPlane = 0.1, FarPlane = 100 };
+        IPixelSampler stock = Samplers.Create("cmj", 5, 2);
+        var student = new BatchingStudentSampler(stock);
+        Image viaBatch = new(37, 9), viaLanes = new(37, 9);
+        new Renderer { Kernel = RenderKernel.Vector256 }.Render(scene, camera, student, viaBatch);
+        new Renderer { Kernel = RenderKernel.Vector256 }.Render(scene, camera, stock, viaLanes);
+        Assert.True(viaBatch.PixelBytes.SequenceEqual(viaLanes.PixelBytes));
+        Assert.Equal(0, student.SingleCalls);
+        Assert.True(student.BatchCalls >= 40 * 9, $"{student.BatchCalls} batch calls for 37 × 9 pixels in packets of 8");
+    }
 }
