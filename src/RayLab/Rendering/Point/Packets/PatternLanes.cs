@@ -82,6 +82,26 @@ internal struct LanePermutation<TL>
         return TL.Select(TL.LessThanBits(last, rotated), TL.SubtractBits(rotated, length.Length), rotated);
     }
 
+    /// <summary>
+    /// <see cref="Element"/> of two permutations at once. Each round is a chain of dependent multiplies, so its
+    /// latency, not its instruction count, sets the time; two independent chains side by side overlap. With both
+    /// lengths powers of two (one round each) the two chains are written out here; otherwise each is an
+    /// <see cref="Element"/> call.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    public static (TL A, TL B) Pair(in LanePermutation<TL> a, TL ia, in LaneLength<TL> la, in LanePermutation<TL> b, TL ib, in LaneLength<TL> lb)
+    {
+        if (la.IsPowerOfTwo && lb.IsPowerOfTwo)
+        {
+            TL wa = la.Mask, wb = lb.Mask;
+            TL va = a.Round(ia, wa);
+            TL vb = b.Round(ib, wb);
+            return (TL.AddBits(va, a._rotation) & wa, TL.AddBits(vb, b._rotation) & wb);
+        }
+
+        return (a.Element(ia, la), b.Element(ib, lb));
+    }
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private readonly TL Round(TL v, TL w)
     {
@@ -289,8 +309,8 @@ internal struct NRooksLanes<TL> : ILaneSampler<TL>
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
         TL i = TL.BroadcastBits((uint)index);
-        TL column = TL.BitsToFloat(_columns.Element(i, _length));
-        TL row = TL.BitsToFloat(_rows.Element(i, _length));
+        (TL columnBits, TL rowBits) = LanePermutation<TL>.Pair(_columns, i, _length, _rows, i, _length);
+        TL column = TL.BitsToFloat(columnBits), row = TL.BitsToFloat(rowBits);
         TL h1 = LaneHash.SampleHash(_keys, index);
         TL h2 = TL.Hash(h1);
         if (_exactInFloat)
@@ -368,8 +388,9 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
         (int column, int row) = _cells[index];
-        TL subColumn = TL.BitsToFloat(_columns[column].Element(TL.BroadcastBits((uint)row), _length));
-        TL subRow = TL.BitsToFloat(_rows[row].Element(TL.BroadcastBits((uint)column), _length));
+        (TL subColumnBits, TL subRowBits) = LanePermutation<TL>.Pair(
+            _columns[column], TL.BroadcastBits((uint)row), _length, _rows[row], TL.BroadcastBits((uint)column), _length);
+        TL subColumn = TL.BitsToFloat(subColumnBits), subRow = TL.BitsToFloat(subRowBits);
         TL h1 = LaneHash.SampleHash(_keys, index);
         TL h2 = TL.Hash(h1);
         if (_exactInFloat)
@@ -450,8 +471,8 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
             (quotient, remainder) = DivideByColumns(s);
         }
 
-        TL column = TL.BitsToFloat(_column.Element(remainder, _columns));
-        TL row = TL.BitsToFloat(_row.Element(quotient, _rows));
+        (TL columnBits, TL rowBits) = LanePermutation<TL>.Pair(_column, remainder, _columns, _row, quotient, _rows);
+        TL column = TL.BitsToFloat(columnBits), row = TL.BitsToFloat(rowBits);
         TL jx = RandomBits(s, _jx, _jxMultiplier);
         TL jy = RandomBits(s, _jy, _jyMultiplier);
         sx = TL.InDouble(_x, row, TL.Top24(jx), column, LowByte(jx));
@@ -529,8 +550,7 @@ internal struct HammersleyLanes<TL> : ILaneSampler<TL>
     }
 
     /// <inheritdoc />
-    /// <remarks>Not inlined: inside the kernel's loop it would use up the JIT's inlining budget, and the ray's own lane operations would become calls.</remarks>
-    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
         sx = TL.InDouble(new ShiftFormula(_unshifted[2 * index]), _shiftX, default, default, default);
