@@ -1,4 +1,5 @@
 using BenchmarkDotNet.Attributes;
+using System.Runtime.Intrinsics;
 using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Imaging;
@@ -88,5 +89,57 @@ public class SamplerBenchmarks
         }
 
         return sum;
+    }
+}
+
+/// <summary>
+/// Each sampler's points as the packet kernel gets them (8 lanes): 16 samples for each pixel of a 1920-pixel row,
+/// through the sampler's own lane sampler and through the buffered path a student's sampler takes.
+/// </summary>
+[MemoryDiagnoser]
+public class LaneSamplerBenchmarks
+{
+    private IPixelSampler _sampler = null!;
+
+    [ParamsSource(nameof(Names))]
+    public string Sampler { get; set; } = "jittered";
+
+    public static IEnumerable<string> Names => Samplers.Names;
+
+    [GlobalSetup]
+    public void Setup() => _sampler = Samplers.Create(Sampler, 16, 1);
+
+    [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
+    public float LanesPerSample() => _sampler switch
+    {
+        JitteredSampler s => Row(new JitteredLanes<Lanes256>(s)),
+        RandomSampler s => Row(new RandomLanes<Lanes256>(s)),
+        RegularSampler s => Row(new RegularLanes<Lanes256>(s)),
+        CorrelatedMultiJitteredSampler s => Row(new CorrelatedMultiJitteredLanes<Lanes256>(s)),
+        MultiJitteredSampler s => Row(new MultiJitteredLanes<Lanes256>(s)),
+        NRooksSampler s => Row(new NRooksLanes<Lanes256>(s)),
+        HammersleySampler s => Row(new HammersleyLanes<Lanes256>(s)),
+        SobolSampler s => Row(new SobolLanes<Lanes256>(s)),
+        _ => Row(new BufferedLanes<Lanes256>(_sampler)),
+    };
+
+    [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
+    public float BufferedPerSample() => Row(new BufferedLanes<Lanes256>(_sampler));
+
+    private static float Row<TS>(TS lanes)
+        where TS : struct, ILaneSampler<Lanes256>
+    {
+        Lanes256 sum = default;
+        for (int x0 = 0; x0 < BenchScene.Width; x0 += Lanes256.Count)
+        {
+            lanes.BeginPacket(x0, 540);
+            for (int i = 0; i < 16; i++)
+            {
+                lanes.Sample(i, out Lanes256 sx, out Lanes256 sy);
+                sum += sx + sy;
+            }
+        }
+
+        return sum.V.ToScalar();
     }
 }

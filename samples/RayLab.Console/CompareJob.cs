@@ -14,6 +14,15 @@ namespace RayLab.Cli;
 /// </summary>
 public static class CompareJob
 {
+    /// <summary>
+    /// The least total render time a setting's time is taken from: a setting whose <c>--repeats</c> renders add up
+    /// to less is rendered again until they reach it (or <see cref="MaximumRenders"/>).
+    /// </summary>
+    public static readonly TimeSpan MinimumMeasured = TimeSpan.FromMilliseconds(250);
+
+    /// <summary>The most renders of one setting taken to reach <see cref="MinimumMeasured"/>.</summary>
+    public const int MaximumRenders = 64;
+
     /// <summary>The samplers a comparison renders: every point sampler and adaptive (the exact one is the reference).</summary>
     public static IReadOnlyList<string> Compared { get; } = [.. Samplers.Names, "adaptive"];
 
@@ -28,6 +37,7 @@ public static class CompareJob
         ArgumentNullException.ThrowIfNull(request);
         ArgumentNullException.ThrowIfNull(stdout);
         ArgumentNullException.ThrowIfNull(stderr);
+        var clock = System.Diagnostics.Stopwatch.StartNew();
         string? staging = null;
         string[] created = [];
         bool done = false;
@@ -49,6 +59,7 @@ public static class CompareJob
 
             stdout.Write(report.Table());
             stdout.WriteLine($"wrote {Path.Combine(request.OutputFolder, "index.html")} ({results.Length} settings; results.md, results.csv, charts, images)");
+            stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"total time {clock.Elapsed.TotalSeconds:F1} s"));
             return 0;
         }
         catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException)
@@ -163,18 +174,28 @@ public static class CompareJob
             for (int i = 0; i < cases.Length; i++)
             {
                 CompareCase c = cases[i];
-                var times = new TimeSpan[r.Repeats];
+                var times = new List<TimeSpan>(r.Repeats);
                 RenderStatistics stats = default;
                 for (int k = 0; k < r.Repeats; k++)
                 {
                     stats = progress.Render($"{c.Series}, {c.Setting} ({k + 1}/{r.Repeats})", () => c.Render(renderer, scene.Scene, scene.Camera, image));
-                    times[k] = stats.RenderTime;
+                    times.Add(stats.RenderTime);
+                }
+
+                // A render of a few milliseconds is timer and scheduler noise: render again (outside the progress
+                // count) until the renders add up to a time worth measuring; the report says which were.
+                TimeSpan measured = times.Aggregate(TimeSpan.Zero, (sum, t) => sum + t);
+                while (measured < MinimumMeasured && times.Count < MaximumRenders)
+                {
+                    TimeSpan again = c.Render(renderer, scene.Scene, scene.Camera, image).RenderTime;
+                    times.Add(again);
+                    measured += again;
                 }
 
                 ImageError error = ImageError.Measure(image, exact);
                 image.Save(Path.Combine(staging, "images", c.FileStem + ".png"));
                 HeatMap.Render(ImageError.PerPixel(image, exact), width, height, "levels").Save(Path.Combine(staging, "errors", c.FileStem + ".png"));
-                results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median(times), error, stats.Kernel);
+                results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median([.. times]), error, stats.Kernel) { Renders = times.Count, Retimed = times.Count > r.Repeats };
             }
         });
         return (exactStats, results);

@@ -72,6 +72,14 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
             md.Append($"- {note}\n");
         }
 
+        int retimed = results.Count(r => r.Retimed);
+        if (retimed > 0)
+        {
+            double minimum = CompareJob.MinimumMeasured.TotalMilliseconds;
+            int most = results.Max(r => r.Renders);
+            md.Append(Invariant($"\nEach time is the median of its setting's renders. {retimed} of {results.Count} settings rendered in less than {minimum:F0} ms in all over the repeats were rendered again until they reached it (at most {CompareJob.MaximumRenders} renders; up to {most} here): a time of a few milliseconds is timer noise.\n"));
+        }
+
         md.Append("\n## Convergence slopes\n\n")
           .Append("Least-squares slope of ln(error) against ln(rays per pixel) over each line's settings with error > 0 (rays, "
                   + "not time: rays are exact, times are noisy). Theory for pixels on an edge (Mitchell 1996): random −0.5, "
@@ -80,12 +88,22 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
           .Append("| sampler | slope of RMSE | slope of mean abs. | settings |\n|---|---:|---:|---:|\n");
         foreach (IGrouping<string, CompareResult> s in Series)
         {
-            double[] rays = [.. s.Where(r => r.Error.Rmse > 0).Select(r => r.RaysPerPixel)];
+            CompareResult[] measured = [.. s.Where(r => r.Error.Rmse > 0).OrderBy(r => r.RaysPerPixel)];
+            CompareResult[] falling = BeforePlateau(measured);
+            double[] rays = [.. falling.Select(r => r.RaysPerPixel)];
             string rmse = "n/a", mean = "n/a (rays span less than 2×)";
             if (rays.Length > 1 && rays.Max() >= 2 * rays.Min())
             {
-                rmse = Format(Slope(s.Select(r => (r.RaysPerPixel, r.Error.Rmse))));
-                mean = Format(Slope(s.Select(r => (r.RaysPerPixel, r.Error.MeanAbsolute))));
+                rmse = Format(Slope(falling.Select(r => (r.RaysPerPixel, r.Error.Rmse))));
+                mean = Format(Slope(falling.Select(r => (r.RaysPerPixel, r.Error.MeanAbsolute))));
+                if (falling.Length < measured.Length)
+                {
+                    mean += Invariant($" (fitted below {measured[falling.Length].RaysPerPixel:0.##} rays/px, where the error stops falling)");
+                }
+            }
+            else if (falling.Length < measured.Length)
+            {
+                mean = Invariant($"n/a (the error stops falling at {measured[falling.Length].RaysPerPixel:0.##} rays/px)");
             }
 
             md.Append(Invariant($"| {s.Key} | {rmse} | {mean} | {rays.Length} |\n"));
@@ -116,6 +134,28 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         md.Append($"\nMade by:\n\n```\n{command}\n```\n");
         return md.ToString();
     }
+
+    /// <summary>
+    /// A line's results, in order of rays per pixel, up to where its RMSE stops falling: the longest prefix in which
+    /// each RMSE is below <see cref="PlateauRatio"/> times the one before. A slope fitted through a plateau (adaptive's
+    /// error levels off once its depth stops resolving the edges) would average a falling line with a flat one and
+    /// describe neither.
+    /// </summary>
+    /// <param name="line">One line's results with RMSE &gt; 0, sorted by rays per pixel.</param>
+    public static CompareResult[] BeforePlateau(CompareResult[] line)
+    {
+        ArgumentNullException.ThrowIfNull(line);
+        int n = Math.Min(line.Length, 1);
+        while (n < line.Length && line[n].Error.Rmse < PlateauRatio * line[n - 1].Error.Rmse)
+        {
+            n++;
+        }
+
+        return line[..n];
+    }
+
+    /// <summary>The factor by which a line's RMSE must fall from one setting to the next to count as still falling.</summary>
+    public const double PlateauRatio = 0.95;
 
     /// <summary>The least-squares slope of ln y against ln x over the points with x, y &gt; 0; null with fewer than two distinct x.</summary>
     /// <param name="points">The points.</param>

@@ -7,7 +7,14 @@ namespace RayLab.Cli;
 /// <param name="Case">The setting.</param>
 /// <param name="Rays">Primary rays traced by one render.</param>
 /// <param name="RaysPerPixel">Rays divided by W·H.</param>
-/// <param name="Time">The median render time of the repeats (the render loop only).</param>
+/// <param name="Time">The median render time of the renders (the render loop only).</param>
 /// <param name="Error">The image's error against the exact image.</param>
 /// <param name="Kernel">The render loop that ran (packet or scalar).</param>
-public sealed record CompareResult(CompareCase Case, long Rays, double RaysPerPixel, TimeSpan Time, ImageError Error, RenderKernel Kernel);
+public sealed record CompareResult(CompareCase Case, long Rays, double RaysPerPixel, TimeSpan Time, ImageError Error, RenderKernel Kernel)
+{
+    /// <summary>How many renders <see cref="Time"/> is the median of: the <c>--repeats</c>, or more where they were too quick to time.</summary>
+    public int Renders { get; init; } = 1;
+
+    /// <summary>True when the setting was rendered again past <c>--repeats</c> because its renders were too quick to time.</summary>
+    public bool Retimed { get; init; }
+}

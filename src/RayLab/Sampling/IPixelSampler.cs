@@ -20,4 +20,21 @@ public interface IPixelSampler
     /// <param name="y">The pixel row, 0 at the top.</param>
     /// <param name="index">The sample index.</param>
     SamplePoint GetSample(int x, int y, int index);
+
+    /// <summary>
+    /// Every sample of pixel (x, y) at once: <paramref name="points"/>[i] is <see cref="GetSample"/>(x, y, i). The
+    /// packet renderer asks a sampler it has no SIMD version of for its points this way, one call per pixel;
+    /// this default asks <see cref="GetSample"/> for each, and a sampler may override it with a faster loop that
+    /// must give the same points (work shared by a pixel's samples, such as its hash key, done once).
+    /// </summary>
+    /// <param name="x">The pixel column.</param>
+    /// <param name="y">The pixel row, 0 at the top.</param>
+    /// <param name="points">Where the points go; its length is <see cref="SamplesPerPixel"/>.</param>
+    void GetSamples(int x, int y, Span<SamplePoint> points)
+    {
+        for (int i = 0; i < points.Length; i++)
+        {
+            points[i] = GetSample(x, y, i);
+        }
+    }
 }

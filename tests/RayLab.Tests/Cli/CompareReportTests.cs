@@ -68,6 +68,35 @@ public class CompareReportTests
         Assert.EndsWith("```\nraylab compare x --out y\n```\n", md, StringComparison.Ordinal);
     }
 
+    [Fact]
+    public void NoSlopeIsFittedThroughAPlateau()
+    {
+        // Falls as rays^-0.5 up to 16 rays, then stays flat: the slope is the falling part's, and says where it stops.
+        CompareResult[] results =
+        [
+            Adaptive(1, 1, 4, 10), Adaptive(2, 4, 2, 20), Adaptive(3, 16, 1, 40), Adaptive(4, 64, 0.99, 80), Adaptive(5, 256, 1.0, 160),
+            Result("random", 1, 4, 10), Result("random", 4, 3.9, 20), Result("random", 16, 3.95, 40),
+        ];
+
+        Assert.Equal(3, CompareReport.BeforePlateau([.. results[..5]]).Length);
+        string md = new CompareReport("heading", "raylab compare x --out y", results, []).Markdown();
+
+        Assert.Contains("| adaptive c=0.1 | -0.50 | -0.50 (fitted below 64 rays/px, where the error stops falling) | 3 |", md, StringComparison.Ordinal);
+        Assert.Contains("| random | n/a | n/a (the error stops falling at 4 rays/px) | 1 |", md, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void TheMarkdownSaysWhichTimesWereRenderedAgain()
+    {
+        CompareResult[] results = [Result("random", 1, 4, 1) with { Renders = 40, Retimed = true }, Result("random", 4, 2, 300) with { Renders = 3 }];
+
+        string md = new CompareReport("heading", "raylab compare x --out y", results, []).Markdown();
+
+        Assert.Contains("1 of 2 settings rendered in less than 250 ms", md, StringComparison.Ordinal);
+        Assert.Contains("up to 40 here", md, StringComparison.Ordinal);
+        Assert.DoesNotContain("rendered again", new CompareReport("h", "c", [results[1]], []).Markdown(), StringComparison.Ordinal);
+    }
+
     private static CompareResult Result(string sampler, int spp, double rmse, double ms, int max = 9) => new(
         CompareCase.Sampled(Samplers.Create(sampler, spp, 1), spp),
         spp * 100L, spp, TimeSpan.FromMilliseconds(ms), new ImageError(rmse, rmse, max, 0.01), RenderKernel.Scalar);

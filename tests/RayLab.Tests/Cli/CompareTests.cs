@@ -70,13 +70,14 @@ public sealed partial class CompareTests : IDisposable
         double[] jittered = [.. rows.Where(r => r.Series == "jittered").Select(r => r.Rmse)];
         Assert.True(jittered[0] > jittered[1] && jittered[1] > jittered[2], string.Join(", ", jittered));
 
-        // stdout is the table (one row per setting, as in the CSV) and a last line naming index.html: no progress.
+        // stdout is the table (one row per setting, as in the CSV), a line naming index.html and the run's total time: no progress.
         string[] lines = stdout.TrimEnd('\n').Split('\n');
         Assert.StartsWith("| sampler | setting |", lines[0], StringComparison.Ordinal);
-        Assert.Equal(rows.Length + 3, lines.Length);
-        Assert.All(lines[2..^1], l => Assert.Equal(9, l.Count(c => c == '|')));
+        Assert.Equal(rows.Length + 4, lines.Length);
+        Assert.All(lines[2..^2], l => Assert.Equal(9, l.Count(c => c == '|')));
         Assert.All(rows.Select((r, i) => (r, i)), p => Assert.StartsWith($"| {p.r.Series} | {p.r.Setting} |", lines[2 + p.i], StringComparison.Ordinal));
-        Assert.Contains("index.html", lines[^1], StringComparison.Ordinal);
+        Assert.Contains("index.html", lines[^2], StringComparison.Ordinal);
+        Assert.Matches(@"^total time \d+\.\d s$", lines[^1]);
 
         // The charts have a line per series; index.html links every file it names, and they all exist.
         XDocument chart = XDocument.Load(Path.Combine(report, "error-vs-time.svg"));

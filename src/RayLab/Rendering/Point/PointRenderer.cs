@@ -86,6 +86,14 @@ internal static class PointRenderer
             JitteredSampler jittered => RenderPackets<TL, JitteredLanes<TL>>(frame, () => new(jittered), sampler.SamplesPerPixel, image, options),
             RandomSampler random => RenderPackets<TL, RandomLanes<TL>>(frame, () => new(random), sampler.SamplesPerPixel, image, options),
             RegularSampler regular => RenderPackets<TL, RegularLanes<TL>>(frame, () => new(regular), sampler.SamplesPerPixel, image, options),
+            SobolSampler sobol => RenderPackets<TL, SobolLanes<TL>>(frame, () => new(sobol), sampler.SamplesPerPixel, image, options),
+            HammersleySampler hammersley => RenderPackets<TL, HammersleyLanes<TL>>(frame, () => new(hammersley), sampler.SamplesPerPixel, image, options),
+            CorrelatedMultiJitteredSampler cmj when cmj.SamplesPerPixel <= PatternLimits.MaxSamples =>
+                RenderPackets<TL, CorrelatedMultiJitteredLanes<TL>>(frame, () => new(cmj), sampler.SamplesPerPixel, image, options),
+            MultiJitteredSampler multiJittered when multiJittered.SamplesPerPixel <= PatternLimits.MaxSamples =>
+                RenderPackets<TL, MultiJitteredLanes<TL>>(frame, () => new(multiJittered), sampler.SamplesPerPixel, image, options),
+            NRooksSampler nrooks when nrooks.SamplesPerPixel <= PatternLimits.MaxSamples =>
+                RenderPackets<TL, NRooksLanes<TL>>(frame, () => new(nrooks), sampler.SamplesPerPixel, image, options),
             _ => RenderPackets<TL, BufferedLanes<TL>>(frame, () => new(sampler), sampler.SamplesPerPixel, image, options),
         };
 

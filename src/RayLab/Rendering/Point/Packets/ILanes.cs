@@ -1,3 +1,5 @@
+using System.Runtime.Intrinsics;
+
 namespace RayLab.Rendering.Point.Packets;
 
 /// <summary>
@@ -103,4 +105,55 @@ internal interface ILanes<TSelf>
 
     /// <summary>The top 24 bits of each lane as a float in [0, 2²⁴), exactly: <see cref="ToUnit"/> before its scaling by 2⁻²⁴.</summary>
     static abstract TSelf Top24(TSelf bits);
+
+    /// <summary>Lane-wise sum of the lanes' bits as 32-bit integers (wrapping).</summary>
+    static abstract TSelf AddBits(TSelf a, TSelf b);
+
+    /// <summary>Lane-wise difference of the lanes' bits as 32-bit integers (wrapping).</summary>
+    static abstract TSelf SubtractBits(TSelf a, TSelf b);
+
+    /// <summary>Lane-wise product of the lanes' bits as 32-bit integers: the low 32 bits, as C#'s unchecked <c>uint</c> product.</summary>
+    static abstract TSelf MultiplyBits(TSelf a, TSelf b);
+
+    /// <summary>Each lane's bits shifted left by <paramref name="count"/> (0 … 31), zeros shifted in.</summary>
+    static abstract TSelf ShiftLeftBits(TSelf bits, int count);
+
+    /// <summary>Each lane's bits shifted right by <paramref name="count"/> (0 … 31), zeros shifted in (<c>uint</c>'s <c>&gt;&gt;</c>).</summary>
+    static abstract TSelf ShiftRightBits(TSelf bits, int count);
+
+    /// <summary>Mask of lanes where <c>a &lt; b</c>, the lanes' bits compared as signed 32-bit integers.</summary>
+    static abstract TSelf LessThanBits(TSelf a, TSelf b);
+
+    /// <summary><see cref="Sampling.LowDiscrepancy.ReverseBits"/> of each lane's bits: a byte shuffle and two nibble lookups where the hardware shuffles bytes.</summary>
+    static abstract TSelf ReverseBits(TSelf bits);
+
+    /// <summary>Each lane's bits as a signed 32-bit integer, converted to the nearest float (exact below 2²⁴).</summary>
+    static abstract TSelf BitsToFloat(TSelf bits);
+
+    /// <summary>Each lane's float truncated toward zero to a signed 32-bit integer, as bits (lanes must be in int range).</summary>
+    static abstract TSelf TruncateToBits(TSelf x);
+
+    /// <summary>
+    /// <paramref name="formula"/> evaluated in double precision on the lanes widened to doubles (exactly), each
+    /// result rounded to the nearest float: what a scalar <c>(float)</c> of the same double expression gives.
+    /// </summary>
+    static abstract TSelf InDouble<TF>(in TF formula, TSelf a, TSelf b, TSelf c, TSelf d)
+        where TF : struct, IDoubleFormula;
+}
+
+/// <summary>
+/// A double-precision expression of four lanes for <see cref="ILanes{TSelf}.InDouble"/>, written once per register
+/// width. The samplers' points are double expressions; evaluating them in double keeps the lanes' points the
+/// exact floats the scalar path's <c>(float)</c> gives.
+/// </summary>
+internal interface IDoubleFormula
+{
+    /// <summary>The expression on two double lanes.</summary>
+    Vector128<double> Apply(Vector128<double> a, Vector128<double> b, Vector128<double> c, Vector128<double> d);
+
+    /// <summary>The expression on four double lanes.</summary>
+    Vector256<double> Apply(Vector256<double> a, Vector256<double> b, Vector256<double> c, Vector256<double> d);
+
+    /// <summary>The expression on eight double lanes.</summary>
+    Vector512<double> Apply(Vector512<double> a, Vector512<double> b, Vector512<double> c, Vector512<double> d);
 }

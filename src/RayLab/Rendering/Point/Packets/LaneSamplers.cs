@@ -127,26 +127,29 @@ internal readonly struct RegularLanes<TL>(RegularSampler sampler) : ILaneSampler
 }
 
 /// <summary>
-/// Any other <see cref="IPixelSampler"/>: its points for a whole packet are asked for once per packet (one
-/// scalar call per sample) and kept in a buffer that belongs to one thread.
+/// Any other <see cref="IPixelSampler"/>: its points for a whole packet are asked for once per packet, one
+/// <see cref="IPixelSampler.GetSamples"/> call per pixel (not a call per sample), and kept in a buffer that belongs
+/// to one thread.
 /// </summary>
 internal readonly struct BufferedLanes<TL>(IPixelSampler sampler) : ILaneSampler<TL>
     where TL : struct, ILanes<TL>
 {
     private readonly float[] _x = new float[sampler.SamplesPerPixel * TL.Count];
     private readonly float[] _y = new float[sampler.SamplesPerPixel * TL.Count];
+    private readonly SamplePoint[] _pixel = new SamplePoint[sampler.SamplesPerPixel];
 
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void BeginPacket(int x0, int row)
     {
         int lanes = TL.Count;
-        for (int index = 0; index < sampler.SamplesPerPixel; index++)
+        SamplePoint[] pixel = _pixel;
+        float[] xs = _x, ys = _y;
+        for (int lane = 0; lane < lanes; lane++)
         {
-            for (int lane = 0; lane < lanes; lane++)
+            sampler.GetSamples(x0 + lane, row, pixel);
+            for (int index = 0; index < pixel.Length; index++)
             {
-                SamplePoint p = sampler.GetSample(x0 + lane, row, index);
-                _x[(index * lanes) + lane] = (float)p.X;
-                _y[(index * lanes) + lane] = (float)p.Y;
+                xs[(index * lanes) + lane] = (float)pixel[index].X;
+                ys[(index * lanes) + lane] = (float)pixel[index].Y;
             }
         }
     }

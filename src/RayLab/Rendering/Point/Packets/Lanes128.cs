@@ -110,4 +110,61 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Top24(Lanes128 bits) => new(Vector128.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 AddBits(Lanes128 a, Lanes128 b) => new((a.V.AsUInt32() + b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 SubtractBits(Lanes128 a, Lanes128 b) => new((a.V.AsUInt32() - b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 MultiplyBits(Lanes128 a, Lanes128 b) => new((a.V.AsUInt32() * b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 ShiftLeftBits(Lanes128 bits, int count) => new((bits.V.AsUInt32() << count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 ShiftRightBits(Lanes128 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 LessThanBits(Lanes128 a, Lanes128 b) => new(Vector128.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 BitsToFloat(Lanes128 bits) => new(Vector128.ConvertToSingle(bits.V.AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 TruncateToBits(Lanes128 x) => new(Vector128.ConvertToInt32Native(x.V).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 InDouble<TF>(in TF formula, Lanes128 a, Lanes128 b, Lanes128 c, Lanes128 d)
+        where TF : struct, IDoubleFormula
+    {
+        (Vector128<double> aLow, Vector128<double> aHigh) = Vector128.Widen(a.V);
+        (Vector128<double> bLow, Vector128<double> bHigh) = Vector128.Widen(b.V);
+        (Vector128<double> cLow, Vector128<double> cHigh) = Vector128.Widen(c.V);
+        (Vector128<double> dLow, Vector128<double> dHigh) = Vector128.Widen(d.V);
+        return new(Vector128.Narrow(formula.Apply(aLow, bLow, cLow, dLow), formula.Apply(aHigh, bHigh, cHigh, dHigh)));
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 ReverseBits(Lanes128 bits)
+    {
+        if (Ssse3.IsSupported)
+        {
+            // The bytes of each lane in reverse order, then each byte's bits reversed by its two nibbles' lookups.
+            Vector128<byte> swapped = Ssse3.Shuffle(bits.V.AsByte(), Vector128.Create((byte)3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
+            Vector128<byte> nibble = Vector128.Create((byte)0x0f);
+            Vector128<byte> low = Ssse3.Shuffle(Vector128.Create((byte)0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0), swapped & nibble);
+            Vector128<byte> high = Ssse3.Shuffle(Vector128.Create((byte)0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf), (swapped.AsUInt16() >>> 4).AsByte() & nibble);
+            return new((low | high).AsSingle());
+        }
+
+        Vector128<uint> x = bits.V.AsUInt32();
+        x = (x << 16) | (x >>> 16);
+        x = ((x & Vector128.Create(0x00ff00ffu)) << 8) | ((x >>> 8) & Vector128.Create(0x00ff00ffu));
+        x = ((x & Vector128.Create(0x0f0f0f0fu)) << 4) | ((x >>> 4) & Vector128.Create(0x0f0f0f0fu));
+        x = ((x & Vector128.Create(0x33333333u)) << 2) | ((x >>> 2) & Vector128.Create(0x33333333u));
+        x = ((x & Vector128.Create(0x55555555u)) << 1) | ((x >>> 1) & Vector128.Create(0x55555555u));
+        return new(x.AsSingle());
+    }
 }

@@ -110,4 +110,61 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 Top24(Lanes256 bits) => new(Vector256.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 AddBits(Lanes256 a, Lanes256 b) => new((a.V.AsUInt32() + b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 SubtractBits(Lanes256 a, Lanes256 b) => new((a.V.AsUInt32() - b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 MultiplyBits(Lanes256 a, Lanes256 b) => new((a.V.AsUInt32() * b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 ShiftLeftBits(Lanes256 bits, int count) => new((bits.V.AsUInt32() << count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 ShiftRightBits(Lanes256 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 LessThanBits(Lanes256 a, Lanes256 b) => new(Vector256.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 BitsToFloat(Lanes256 bits) => new(Vector256.ConvertToSingle(bits.V.AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 TruncateToBits(Lanes256 x) => new(Vector256.ConvertToInt32Native(x.V).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 InDouble<TF>(in TF formula, Lanes256 a, Lanes256 b, Lanes256 c, Lanes256 d)
+        where TF : struct, IDoubleFormula
+    {
+        (Vector256<double> aLow, Vector256<double> aHigh) = Vector256.Widen(a.V);
+        (Vector256<double> bLow, Vector256<double> bHigh) = Vector256.Widen(b.V);
+        (Vector256<double> cLow, Vector256<double> cHigh) = Vector256.Widen(c.V);
+        (Vector256<double> dLow, Vector256<double> dHigh) = Vector256.Widen(d.V);
+        return new(Vector256.Narrow(formula.Apply(aLow, bLow, cLow, dLow), formula.Apply(aHigh, bHigh, cHigh, dHigh)));
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 ReverseBits(Lanes256 bits)
+    {
+        if (Avx2.IsSupported)
+        {
+            // The bytes of each lane in reverse order, then each byte's bits reversed by its two nibbles' lookups.
+            Vector256<byte> swapped = Avx2.Shuffle(bits.V.AsByte(), Vector256.Create((byte)3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12, 3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
+            Vector256<byte> nibble = Vector256.Create((byte)0x0f);
+            Vector256<byte> low = Avx2.Shuffle(Vector256.Create((byte)0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0, 0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0), swapped & nibble);
+            Vector256<byte> high = Avx2.Shuffle(Vector256.Create((byte)0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf, 0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf), (swapped.AsUInt16() >>> 4).AsByte() & nibble);
+            return new((low | high).AsSingle());
+        }
+
+        Vector256<uint> x = bits.V.AsUInt32();
+        x = (x << 16) | (x >>> 16);
+        x = ((x & Vector256.Create(0x00ff00ffu)) << 8) | ((x >>> 8) & Vector256.Create(0x00ff00ffu));
+        x = ((x & Vector256.Create(0x0f0f0f0fu)) << 4) | ((x >>> 4) & Vector256.Create(0x0f0f0f0fu));
+        x = ((x & Vector256.Create(0x33333333u)) << 2) | ((x >>> 2) & Vector256.Create(0x33333333u));
+        x = ((x & Vector256.Create(0x55555555u)) << 1) | ((x >>> 1) & Vector256.Create(0x55555555u));
+        return new(x.AsSingle());
+    }
 }

@@ -110,4 +110,61 @@ internal readonly record struct Lanes512(Vector512<float> V) : ILanes<Lanes512>
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 Top24(Lanes512 bits) => new(Vector512.ConvertToSingle((bits.V.AsUInt32() >>> 8).AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 AddBits(Lanes512 a, Lanes512 b) => new((a.V.AsUInt32() + b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 SubtractBits(Lanes512 a, Lanes512 b) => new((a.V.AsUInt32() - b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 MultiplyBits(Lanes512 a, Lanes512 b) => new((a.V.AsUInt32() * b.V.AsUInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 ShiftLeftBits(Lanes512 bits, int count) => new((bits.V.AsUInt32() << count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 ShiftRightBits(Lanes512 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 LessThanBits(Lanes512 a, Lanes512 b) => new(Vector512.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 BitsToFloat(Lanes512 bits) => new(Vector512.ConvertToSingle(bits.V.AsInt32()));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 TruncateToBits(Lanes512 x) => new(Vector512.ConvertToInt32Native(x.V).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 InDouble<TF>(in TF formula, Lanes512 a, Lanes512 b, Lanes512 c, Lanes512 d)
+        where TF : struct, IDoubleFormula
+    {
+        (Vector512<double> aLow, Vector512<double> aHigh) = Vector512.Widen(a.V);
+        (Vector512<double> bLow, Vector512<double> bHigh) = Vector512.Widen(b.V);
+        (Vector512<double> cLow, Vector512<double> cHigh) = Vector512.Widen(c.V);
+        (Vector512<double> dLow, Vector512<double> dHigh) = Vector512.Widen(d.V);
+        return new(Vector512.Narrow(formula.Apply(aLow, bLow, cLow, dLow), formula.Apply(aHigh, bHigh, cHigh, dHigh)));
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 ReverseBits(Lanes512 bits)
+    {
+        if (Avx512BW.IsSupported)
+        {
+            // The bytes of each lane in reverse order, then each byte's bits reversed by its two nibbles' lookups.
+            Vector512<byte> swapped = Avx512BW.Shuffle(bits.V.AsByte(), Vector512.Create((byte)3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12, 3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12, 3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12, 3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
+            Vector512<byte> nibble = Vector512.Create((byte)0x0f);
+            Vector512<byte> low = Avx512BW.Shuffle(Vector512.Create((byte)0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0, 0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0, 0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0, 0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0), swapped & nibble);
+            Vector512<byte> high = Avx512BW.Shuffle(Vector512.Create((byte)0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf, 0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf, 0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf, 0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf), (swapped.AsUInt16() >>> 4).AsByte() & nibble);
+            return new((low | high).AsSingle());
+        }
+
+        Vector512<uint> x = bits.V.AsUInt32();
+        x = (x << 16) | (x >>> 16);
+        x = ((x & Vector512.Create(0x00ff00ffu)) << 8) | ((x >>> 8) & Vector512.Create(0x00ff00ffu));
+        x = ((x & Vector512.Create(0x0f0f0f0fu)) << 4) | ((x >>> 4) & Vector512.Create(0x0f0f0f0fu));
+        x = ((x & Vector512.Create(0x33333333u)) << 2) | ((x >>> 2) & Vector512.Create(0x33333333u));
+        x = ((x & Vector512.Create(0x55555555u)) << 1) | ((x >>> 1) & Vector512.Create(0x55555555u));
+        return new(x.AsSingle());
+    }
 }

@@ -1,0 +1,636 @@
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
+using RayLab.Sampling;
+
+namespace RayLab.Rendering.Point.Packets;
+
+/// <summary>
+/// One of Kensler's permutations (<see cref="Permutation.PermutationElement"/>) per lane: the lane's pattern
+/// number and the values derived from it that every element of that permutation needs, made once per packet.
+/// </summary>
+/// <typeparam name="TL">The lane type.</typeparam>
+internal struct LanePermutation<TL>
+    where TL : struct, ILanes<TL>
+{
+    private TL _p, _p16, _p8, _p23, _multiplier, _rotation;
+
+    /// <summary>Sets the lanes' pattern numbers.</summary>
+    /// <param name="patterns">Each lane's pattern number p.</param>
+    /// <param name="length">The permutations' common length l.</param>
+    /// <param name="scratch">Room for <see cref="ILanes{TSelf}.Count"/> values.</param>
+    public void Set(TL patterns, in LaneLength<TL> length, Span<uint> scratch)
+    {
+        _p = patterns;
+        _p16 = TL.ShiftRightBits(_p, 16);
+        _p8 = TL.ShiftRightBits(_p, 8);
+        _p23 = TL.ShiftRightBits(_p, 23);
+
+        // The listing multiplies by 1 | (p ≫ 27) and then by 0x6935fa69; products modulo 2³² associate, so one
+        // multiplier per lane does both.
+        _multiplier = TL.MultiplyBits(TL.ShiftRightBits(_p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(0x6935fa69u));
+
+        // The final rotation (v + p) mod l, with v < l, is v + (p mod l) less l if that reaches l: p mod l is
+        // made here once per pixel, a mask when l is a power of two, else Lemire's multiply-only remainder.
+        if (length.IsPowerOfTwo)
+        {
+            _rotation = _p & length.Last;
+        }
+        else
+        {
+            _p.Store(MemoryMarshal.Cast<uint, float>(scratch));
+            for (int lane = 0; lane < scratch.Length; lane++)
+            {
+                scratch[lane] = length.Remainder(scratch[lane]);
+            }
+
+            _rotation = TL.Load(MemoryMarshal.Cast<uint, float>(scratch));
+        }
+    }
+
+    /// <summary>
+    /// Element <paramref name="i"/> of each lane's permutation, bit for bit the scalar one: Kensler's cycle walking
+    /// as a loop that runs until every lane has left the range [l, w], lanes that are done kept as they are.
+    /// </summary>
+    /// <param name="i">Each lane's position, 0 ≤ i &lt; l.</param>
+    /// <param name="length">The lengths l (all lanes equal, l ≤ 2³⁰).</param>
+    /// <remarks>A call of its own: inlined two or three times into a sampler it would use up the JIT's inlining budget.</remarks>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    public readonly TL Element(TL i, in LaneLength<TL> length)
+    {
+        TL w = length.Mask, last = length.Last;
+        TL v;
+        if (length.IsPowerOfTwo)
+        {
+            // w = l − 1: one round always lands below l, and the rotation wraps with the mask.
+            v = Round(i, w);
+            return TL.AddBits(v, _rotation) & w;
+        }
+
+        v = i;
+        TL pending = TL.BroadcastBits(uint.MaxValue);
+        do
+        {
+            TL next = Round(v, w);
+            v = TL.Select(pending, next, v);
+            pending = TL.LessThanBits(last, v);
+        }
+        while (TL.MaskBits(pending) != 0);
+
+        TL rotated = TL.AddBits(v, _rotation);
+        return TL.Select(TL.LessThanBits(last, rotated), TL.SubtractBits(rotated, length.Length), rotated);
+    }
+
+    /// <summary>
+    /// <see cref="Element"/> of two permutations at once. Each round is a chain of dependent multiplies, so its
+    /// latency, not its instruction count, sets the time; two independent chains side by side overlap. With both
+    /// lengths powers of two (one round each) the two chains are written out here; otherwise each is an
+    /// <see cref="Element"/> call.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    public static (TL A, TL B) Pair(in LanePermutation<TL> a, TL ia, in LaneLength<TL> la, in LanePermutation<TL> b, TL ib, in LaneLength<TL> lb)
+    {
+        if (la.IsPowerOfTwo && lb.IsPowerOfTwo)
+        {
+            TL wa = la.Mask, wb = lb.Mask;
+            TL va = a.Round(ia, wa);
+            TL vb = b.Round(ib, wb);
+            return (TL.AddBits(va, a._rotation) & wa, TL.AddBits(vb, b._rotation) & wb);
+        }
+
+        return (a.Element(ia, la), b.Element(ib, lb));
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private readonly TL Round(TL v, TL w)
+    {
+        v = TL.Xor(v, _p);
+        v = TL.MultiplyBits(v, TL.BroadcastBits(0xe170893du));
+        v = TL.Xor(v, _p16);
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 4));
+        v = TL.Xor(v, _p8);
+        v = TL.MultiplyBits(v, TL.BroadcastBits(0x0929eb3fu));
+        v = TL.Xor(v, _p23);
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 1));
+        v = TL.MultiplyBits(v, _multiplier);
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 11));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(0x74dcb303u));
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(0x9e501cc3u));
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(0xc860a3dfu));
+        v &= w;
+        return TL.Xor(v, TL.ShiftRightBits(v, 5));
+    }
+}
+
+/// <summary>A permutation length l in every lane, with l − 1 and Kensler's mask w (the next power of two ≥ l, less one).</summary>
+/// <typeparam name="TL">The lane type.</typeparam>
+internal readonly struct LaneLength<TL>
+    where TL : struct, ILanes<TL>
+{
+    private readonly uint _length;
+    private readonly ulong _remainderMultiplier;
+
+    /// <summary>Broadcasts <paramref name="length"/> (1 … 2³⁰) and the values derived from it.</summary>
+    /// <param name="length">The permutation length.</param>
+    public LaneLength(int length)
+    {
+        uint w = (uint)length - 1;
+        w |= w >> 1;
+        w |= w >> 2;
+        w |= w >> 4;
+        w |= w >> 8;
+        w |= w >> 16;
+        _length = (uint)length;
+        _remainderMultiplier = unchecked((ulong.MaxValue / _length) + 1);
+        IsPowerOfTwo = int.IsPow2(length);
+        Length = TL.BroadcastBits((uint)length);
+        Last = TL.BroadcastBits((uint)length - 1);
+        Mask = TL.BroadcastBits(w);
+    }
+
+    /// <summary>True when l is a power of two (p mod l is p and (l − 1)).</summary>
+    public bool IsPowerOfTwo { get; }
+
+    /// <summary>l.</summary>
+    public TL Length { get; }
+
+    /// <summary>l − 1.</summary>
+    public TL Last { get; }
+
+    /// <summary>w.</summary>
+    public TL Mask { get; }
+
+    /// <summary>
+    /// <paramref name="p"/> mod l without a division (Lemire, Kaser and Kurz, "Faster remainder by direct
+    /// computation", 2019: exact for every 32-bit p and l).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public uint Remainder(uint p) => (uint)Math.BigMul(unchecked(_remainderMultiplier * p), _length, out _);
+}
+
+/// <summary>
+/// The cell formula of the jittered family, in double as the scalar samplers write it:
+/// <c>(c + ((a + j) / d₁)) / d₂</c> with the jitter <c>j = (bHi·256 + bLo) · scale</c> from a 32-bit hash split in two
+/// exact floats (its top 24 bits and its low 8). With scale 2⁻³² and bLo = 0, j is <see cref="CounterHash.ToUnit"/>;
+/// with Kensler's 1/(2³² + 512) it is his <c>randfloat</c>.
+/// </summary>
+/// <remarks>
+/// A division by a power of two is a multiplication by its reciprocal, exactly (no result here is subnormal), so
+/// those divisors (every count a sampler gets at 4, 16, 64, 256 spp) cost a multiply, not a divide; a divisor of 1
+/// costs nothing.
+/// </remarks>
+internal readonly struct CellFormula : IDoubleFormula
+{
+    /// <summary>The scale that makes the jitter <see cref="CounterHash.ToUnit"/> of the hash.</summary>
+    public const double UnitScale = LowDiscrepancy.TwoToMinus32;
+
+    private readonly double _scale, _inner, _outer;
+    private readonly bool _innerByMultiply, _outerByMultiply, _outerIsOne;
+
+    /// <summary>The formula with jitter scale <paramref name="scale"/> and divisors d₁ = <paramref name="inner"/>, d₂ = <paramref name="outer"/>.</summary>
+    /// <param name="scale">The jitter's scale.</param>
+    /// <param name="inner">d₁, a whole number ≥ 1.</param>
+    /// <param name="outer">d₂, a whole number ≥ 1.</param>
+    public CellFormula(double scale, int inner, int outer)
+    {
+        _scale = scale;
+        _innerByMultiply = int.IsPow2(inner);
+        _outerByMultiply = int.IsPow2(outer);
+        _outerIsOne = outer == 1;
+        _inner = _innerByMultiply ? 1.0 / inner : inner;
+        _outer = _outerByMultiply ? 1.0 / outer : outer;
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector128<double> Apply(Vector128<double> a, Vector128<double> bHigh, Vector128<double> c, Vector128<double> bLow)
+    {
+        Vector128<double> jitter = ((bHigh * 256.0) + bLow) * _scale;
+        Vector128<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector128.Create(_inner);
+        return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector128.Create(_outer);
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector256<double> Apply(Vector256<double> a, Vector256<double> bHigh, Vector256<double> c, Vector256<double> bLow)
+    {
+        Vector256<double> jitter = ((bHigh * 256.0) + bLow) * _scale;
+        Vector256<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector256.Create(_inner);
+        return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector256.Create(_outer);
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector512<double> Apply(Vector512<double> a, Vector512<double> bHigh, Vector512<double> c, Vector512<double> bLow)
+    {
+        Vector512<double> jitter = ((bHigh * 256.0) + bLow) * _scale;
+        Vector512<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector512.Create(_inner);
+        return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector512.Create(_outer);
+    }
+}
+
+/// <summary>
+/// A toroidal shift in double, as <see cref="HammersleySampler"/> writes it: <c>q + a·2⁻²⁴</c> wrapped into [0, 1),
+/// with <c>a</c> the top 24 bits of the shift's hash.
+/// </summary>
+/// <param name="q">The unshifted coordinate, in [0, 1).</param>
+internal readonly struct ShiftFormula(double q) : IDoubleFormula
+{
+    private readonly double _q = q;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector128<double> Apply(Vector128<double> a, Vector128<double> b, Vector128<double> c, Vector128<double> d)
+    {
+        Vector128<double> v = Vector128.Create(_q) + (a * (1.0 / 16777216.0));
+        return Vector128.ConditionalSelect(Vector128.GreaterThanOrEqual(v, Vector128<double>.One), v - Vector128<double>.One, v);
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector256<double> Apply(Vector256<double> a, Vector256<double> b, Vector256<double> c, Vector256<double> d)
+    {
+        Vector256<double> v = Vector256.Create(_q) + (a * (1.0 / 16777216.0));
+        return Vector256.ConditionalSelect(Vector256.GreaterThanOrEqual(v, Vector256<double>.One), v - Vector256<double>.One, v);
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector512<double> Apply(Vector512<double> a, Vector512<double> b, Vector512<double> c, Vector512<double> d)
+    {
+        Vector512<double> v = Vector512.Create(_q) + (a * (1.0 / 16777216.0));
+        return Vector512.ConditionalSelect(Vector512.GreaterThanOrEqual(v, Vector512<double>.One), v - Vector512<double>.One, v);
+    }
+}
+
+/// <summary>
+/// <see cref="NRooksSampler"/> in lanes: both of a pixel's permutations (column and row) walk in SIMD and the
+/// jitter is the counter hash in SIMD. Each point is the scalar sampler's float: with a power-of-two count the cell
+/// formula's double value is exact and one float rounding gives it; otherwise it runs in double.
+/// </summary>
+internal struct NRooksLanes<TL> : ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    private readonly uint _salt;
+    private readonly LaneLength<TL> _length;
+    private readonly CellFormula _cell;
+    private readonly bool _exactInFloat;
+    private readonly TL _inverseCount;
+    private readonly uint[] _scratch = new uint[TL.Count];
+    private LanePermutation<TL> _columns, _rows;
+    private TL _keys;
+
+    /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
+    public NRooksLanes(NRooksSampler sampler)
+    {
+        int count = sampler.SamplesPerPixel;
+        _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
+        _length = new LaneLength<TL>(count);
+        _cell = new CellFormula(CellFormula.UnitScale, count, 1);
+        _exactInFloat = int.IsPow2(count);
+        _inverseCount = TL.Broadcast(1f / count);
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void BeginPacket(int x0, int row)
+    {
+        _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
+        _columns.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(0xa511e9b3u)), _length, _scratch);
+        _rows.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(0x63d83595u)), _length, _scratch);
+    }
+
+    /// <inheritdoc />
+    /// <remarks>Not inlined: inside the kernel's loop it would use up the JIT's inlining budget, and the ray's own lane operations would become calls.</remarks>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    public readonly void Sample(int index, out TL sx, out TL sy)
+    {
+        TL i = TL.BroadcastBits((uint)index);
+        (TL columnBits, TL rowBits) = LanePermutation<TL>.Pair(_columns, i, _length, _rows, i, _length);
+        TL column = TL.BitsToFloat(columnBits), row = TL.BitsToFloat(rowBits);
+        TL h1 = LaneHash.SampleHash(_keys, index);
+        TL h2 = TL.Hash(h1);
+        if (_exactInFloat)
+        {
+            // (column + u)/N with N = 2ᵏ: column + u rounded once (u·2²⁴ is exact), then an exact scaling.
+            TL unit = TL.Broadcast(1f / 16777216f);
+            sx = TL.MultiplyAdd(TL.Top24(h1), unit, column) * _inverseCount;
+            sy = TL.MultiplyAdd(TL.Top24(h2), unit, row) * _inverseCount;
+        }
+        else
+        {
+            sx = TL.InDouble(_cell, column, TL.Top24(h1), default, default);
+            sy = TL.InDouble(_cell, row, TL.Top24(h2), default, default);
+        }
+    }
+}
+
+/// <summary>
+/// <see cref="MultiJitteredSampler"/> in lanes: the n column and n row permutations of each pixel get their
+/// pattern numbers once per packet and their elements walk in SIMD. Each point is the scalar sampler's float: with
+/// n a power of two the formula's double value is exact and one float rounding gives it; otherwise it runs in double.
+/// </summary>
+internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    private const uint ColumnSalt = 0x2f5a1c37u;
+    private const uint RowSalt = 0xc13fa9a9u;
+
+    private readonly uint _salt;
+    private readonly int _n;
+    private readonly LaneLength<TL> _length;
+    private readonly CellFormula _cell;
+    private readonly bool _exactInFloat;
+    private readonly TL _inverseCount;
+    private readonly uint[] _scratch = new uint[TL.Count];
+    private readonly LanePermutation<TL>[] _columns, _rows;
+    private readonly (int Column, int Row)[] _cells;
+    private TL _keys;
+
+    /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
+    public MultiJitteredLanes(MultiJitteredSampler sampler)
+    {
+        _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
+        _n = sampler.GridSize;
+        _length = new LaneLength<TL>(_n);
+        _cell = new CellFormula(CellFormula.UnitScale, _n, _n);
+        _exactInFloat = int.IsPow2(_n);
+        _inverseCount = TL.Broadcast(1f / (_n * _n));
+        _columns = new LanePermutation<TL>[_n];
+        _rows = new LanePermutation<TL>[_n];
+
+        // Sample i's coarse cell (i mod n, i div n), looked up rather than divided for in the hot loop.
+        _cells = new (int, int)[_n * _n];
+        for (int i = 0; i < _cells.Length; i++)
+        {
+            _cells[i] = (i % _n, i / _n);
+        }
+    }
+
+    /// <inheritdoc />
+    public void BeginPacket(int x0, int row)
+    {
+        _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
+        TL columnKeys = TL.Xor(_keys, TL.BroadcastBits(ColumnSalt)), rowKeys = TL.Xor(_keys, TL.BroadcastBits(RowSalt));
+        for (int k = 0; k < _n; k++)
+        {
+            _columns[k].Set(LaneHash.SampleHash(columnKeys, k), _length, _scratch);
+            _rows[k].Set(LaneHash.SampleHash(rowKeys, k), _length, _scratch);
+        }
+    }
+
+    /// <inheritdoc />
+    /// <remarks>Not inlined: inside the kernel's loop it would use up the JIT's inlining budget, and the ray's own lane operations would become calls.</remarks>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    public readonly void Sample(int index, out TL sx, out TL sy)
+    {
+        (int column, int row) = _cells[index];
+        (TL subColumnBits, TL subRowBits) = LanePermutation<TL>.Pair(
+            _columns[column], TL.BroadcastBits((uint)row), _length, _rows[row], TL.BroadcastBits((uint)column), _length);
+        TL subColumn = TL.BitsToFloat(subColumnBits), subRow = TL.BitsToFloat(subRowBits);
+        TL h1 = LaneHash.SampleHash(_keys, index);
+        TL h2 = TL.Hash(h1);
+        if (_exactInFloat)
+        {
+            // (column + (sub + u)/n)/n = (column·n + sub + u)/n² with n = 2ᵏ: one rounding of the sum, an exact scaling.
+            TL unit = TL.Broadcast(1f / 16777216f);
+            sx = TL.MultiplyAdd(TL.Top24(h1), unit, TL.Broadcast(column * _n) + subColumn) * _inverseCount;
+            sy = TL.MultiplyAdd(TL.Top24(h2), unit, TL.Broadcast(row * _n) + subRow) * _inverseCount;
+        }
+        else
+        {
+            sx = TL.InDouble(_cell, subColumn, TL.Top24(h1), TL.Broadcast(column), default);
+            sy = TL.InDouble(_cell, subRow, TL.Top24(h2), TL.Broadcast(row), default);
+        }
+    }
+}
+
+/// <summary>
+/// <see cref="CorrelatedMultiJitteredSampler"/> in lanes: Kensler's three permutations walk in SIMD, his
+/// <c>randfloat</c> hash runs in SIMD, and the cell formulas run in double (the jitter is a rounded double, so
+/// only double arithmetic gives the scalar sampler's floats).
+/// </summary>
+internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    private readonly uint _salt;
+    private readonly LaneLength<TL> _all, _columns, _rows;
+    private readonly TL _inverseColumns, _columnCount;
+    private readonly int _columnShift;
+    private readonly CellFormula _x, _y;
+    private readonly uint[] _scratch = new uint[TL.Count];
+    private LanePermutation<TL> _index, _column, _row;
+    private TL _jx, _jxMultiplier, _jy, _jyMultiplier;
+
+    /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
+    public CorrelatedMultiJitteredLanes(CorrelatedMultiJitteredSampler sampler)
+    {
+        int count = sampler.SamplesPerPixel;
+        _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
+        _all = new LaneLength<TL>(count);
+        _columns = new LaneLength<TL>(sampler.Columns);
+        _rows = new LaneLength<TL>(sampler.Rows);
+        _inverseColumns = TL.Broadcast(1f / sampler.Columns);
+        _columnCount = TL.BroadcastBits((uint)sampler.Columns);
+        _columnShift = BitOperations.Log2((uint)sampler.Columns);
+        const double Kensler = 1.0 / 4294967808.0;
+        _x = new CellFormula(Kensler, sampler.Rows, sampler.Columns);
+        _y = new CellFormula(Kensler, count, 1);
+    }
+
+    /// <inheritdoc />
+    public void BeginPacket(int x0, int row)
+    {
+        TL p = LaneHash.PixelKeys<TL>(x0, row, _salt);
+        _index.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x51633e2du)), _all, _scratch);
+        _column.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x68bc21ebu)), _columns, _scratch);
+        _row.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x02e5be93u)), _rows, _scratch);
+        _jx = TL.MultiplyBits(p, TL.BroadcastBits(0x967a889bu));
+        _jxMultiplier = TL.ShiftRightBits(_jx, 18) | TL.BroadcastBits(1);
+        _jy = TL.MultiplyBits(p, TL.BroadcastBits(0x368cc8b7u));
+        _jyMultiplier = TL.ShiftRightBits(_jy, 18) | TL.BroadcastBits(1);
+    }
+
+    /// <inheritdoc />
+    /// <remarks>Not inlined: inside the kernel's loop it would use up the JIT's inlining budget, and the ray's own lane operations would become calls.</remarks>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    public readonly void Sample(int index, out TL sx, out TL sy)
+    {
+        TL s = _index.Element(TL.BroadcastBits((uint)index), _all);
+        TL quotient, remainder;
+        if (_columns.IsPowerOfTwo)
+        {
+            quotient = TL.ShiftRightBits(s, _columnShift);
+            remainder = s & _columns.Last;
+        }
+        else
+        {
+            (quotient, remainder) = DivideByColumns(s);
+        }
+
+        (TL columnBits, TL rowBits) = LanePermutation<TL>.Pair(_column, remainder, _columns, _row, quotient, _rows);
+        TL column = TL.BitsToFloat(columnBits), row = TL.BitsToFloat(rowBits);
+        TL jx = RandomBits(s, _jx, _jxMultiplier);
+        TL jy = RandomBits(s, _jy, _jyMultiplier);
+        sx = TL.InDouble(_x, row, TL.Top24(jx), column, LowByte(jx));
+        sy = TL.InDouble(_y, TL.BitsToFloat(s), TL.Top24(jy), default, LowByte(jy));
+    }
+
+    /// <summary>s div m and s mod m: a float quotient (s &lt; 2²⁴ is exact) truncated, then corrected by one either way.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private readonly (TL Quotient, TL Remainder) DivideByColumns(TL s)
+    {
+        TL quotient = TL.TruncateToBits(TL.BitsToFloat(s) * _inverseColumns);
+        TL remainder = TL.SubtractBits(s, TL.MultiplyBits(quotient, _columnCount));
+        TL low = TL.LessThanBits(remainder, default);
+        quotient = TL.Select(low, TL.SubtractBits(quotient, TL.BroadcastBits(1)), quotient);
+        remainder = TL.Select(low, TL.AddBits(remainder, _columnCount), remainder);
+        TL high = TL.LessThanBits(TL.SubtractBits(_columnCount, TL.BroadcastBits(1)), remainder);
+        quotient = TL.Select(high, TL.AddBits(quotient, TL.BroadcastBits(1)), quotient);
+        remainder = TL.Select(high, TL.SubtractBits(remainder, _columnCount), remainder);
+        return (quotient, remainder);
+    }
+
+    /// <summary>The low 8 bits of each lane as an exact float.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL LowByte(TL bits) => TL.BitsToFloat(bits & TL.BroadcastBits(0xffu));
+
+    /// <summary>Kensler's <c>randfloat</c> hash before its scaling (<see cref="CorrelatedMultiJitteredSampler.RandFloat"/>).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL RandomBits(TL i, TL p, TL multiplier)
+    {
+        i = TL.Xor(i, p);
+        i = TL.Xor(i, TL.ShiftRightBits(i, 17));
+        i = TL.Xor(i, TL.ShiftRightBits(i, 10));
+        i = TL.MultiplyBits(i, TL.BroadcastBits(0xb36534e5u));
+        i = TL.Xor(i, TL.ShiftRightBits(i, 12));
+        i = TL.Xor(i, TL.ShiftRightBits(i, 21));
+        i = TL.MultiplyBits(i, TL.BroadcastBits(0x93fc4795u));
+        i = TL.Xor(i, TL.BroadcastBits(0xdf6e307fu));
+        i = TL.Xor(i, TL.ShiftRightBits(i, 17));
+        return TL.MultiplyBits(i, multiplier);
+    }
+}
+
+/// <summary>
+/// <see cref="HammersleySampler"/> in lanes: the per-pixel shift is the counter hash in SIMD, made once per packet;
+/// each sample adds it to the unshifted point in double and wraps, as the scalar sampler does.
+/// </summary>
+internal struct HammersleyLanes<TL> : ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    private const uint ShiftSalt = 0x68e31da4u;
+
+    private readonly uint _salt;
+    private readonly double[] _unshifted;
+    private TL _shiftX, _shiftY;
+
+    /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
+    public HammersleyLanes(HammersleySampler sampler)
+    {
+        _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
+        _unshifted = new double[2 * sampler.SamplesPerPixel];
+        for (int i = 0; i < sampler.SamplesPerPixel; i++)
+        {
+            SamplePoint point = sampler.Unshifted(i);
+            (_unshifted[2 * i], _unshifted[(2 * i) + 1]) = (point.X, point.Y);
+        }
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void BeginPacket(int x0, int row)
+    {
+        TL h1 = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(ShiftSalt)));
+        _shiftX = TL.Top24(h1);
+        _shiftY = TL.Top24(TL.Hash(h1));
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Sample(int index, out TL sx, out TL sy)
+    {
+        sx = TL.InDouble(new ShiftFormula(_unshifted[2 * index]), _shiftX, default, default, default);
+        sy = TL.InDouble(new ShiftFormula(_unshifted[(2 * index) + 1]), _shiftY, default, default, default);
+    }
+}
+
+/// <summary>
+/// <see cref="SobolSampler"/> in lanes: integer arithmetic only. Each nested uniform scramble reverses its input's
+/// bits first and its output's last; the reversals between two scrambles, and the one that ends the second Sobol'
+/// dimension, cancel, so only three reversals a sample remain. The second dimension itself is a superset XOR over
+/// the index's bits (the Pascal matrix mod 2: C(k, j) is odd exactly when j's bits are a subset of k's), five
+/// shift–mask–xor steps.
+/// </summary>
+internal struct SobolLanes<TL> : ILaneSampler<TL>
+    where TL : struct, ILanes<TL>
+{
+    private const uint IndexSalt = 0x1b873593u;
+
+    private readonly uint _salt;
+    private TL _indexSeed, _xSeed, _ySeed;
+
+    /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
+    public SobolLanes(SobolSampler sampler) => _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void BeginPacket(int x0, int row)
+    {
+        _indexSeed = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(IndexSalt)));
+        _xSeed = TL.Hash(_indexSeed);
+        _ySeed = TL.Hash(_xSeed);
+    }
+
+    /// <inheritdoc />
+    /// <remarks>Not inlined: inside the kernel's loop it would use up the JIT's inlining budget, and the ray's own lane operations would become calls.</remarks>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    public readonly void Sample(int index, out TL sx, out TL sy)
+    {
+        // i = NUS(index) = R(LK(R(index) + seed)), R the bit reversal, LK the Laine–Karras mix.
+        TL i = Reverse(LaineKarras(TL.AddBits(TL.BroadcastBits(LowDiscrepancy.ReverseBits((uint)index)), _indexSeed)));
+
+        // NUS(R(i)) = R(LK(i + seed)); NUS(D₁(i)) = R(LK(R(D₁(i)) + seed)) with R(D₁(i)) the superset XOR.
+        sx = TL.ToUnit(Reverse(LaineKarras(TL.AddBits(i, _xSeed))));
+        sy = TL.ToUnit(Reverse(LaineKarras(TL.AddBits(SupersetXor(i), _ySeed))));
+    }
+
+    /// <summary>The middle of <see cref="LowDiscrepancy.NestedUniformScramble"/>, between its two reversals (the seed already added).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL LaineKarras(TL x)
+    {
+        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0x6c50b47cu)));
+        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0xb82f1e52u)));
+        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0xc7afe638u)));
+        return TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0x8d22f6e6u)));
+    }
+
+    /// <summary>Bit j of the result is the XOR of the bits k ⊇ j of <paramref name="x"/>: <see cref="LowDiscrepancy.SobolDimension1"/> before its final reversal.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static TL SupersetXor(TL x)
+    {
+        x = TL.Xor(x, TL.ShiftRightBits(x, 1) & TL.BroadcastBits(0x55555555u));
+        x = TL.Xor(x, TL.ShiftRightBits(x, 2) & TL.BroadcastBits(0x33333333u));
+        x = TL.Xor(x, TL.ShiftRightBits(x, 4) & TL.BroadcastBits(0x0f0f0f0fu));
+        x = TL.Xor(x, TL.ShiftRightBits(x, 8) & TL.BroadcastBits(0x00ff00ffu));
+        return TL.Xor(x, TL.ShiftRightBits(x, 16));
+    }
+
+    /// <summary><see cref="LowDiscrepancy.ReverseBits"/> in every lane.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static TL Reverse(TL x) => TL.ReverseBits(x);
+}
+
+/// <summary>Where the permutation samplers' lanes are exact.</summary>
+internal static class PatternLimits
+{
+    /// <summary>
+    /// The most samples per pixel the permutation-based lane samplers take: their lanes hold sample numbers as
+    /// exact floats (below 2²⁴) and permutation lengths compared as signed integers (below 2³⁰). More go through
+    /// the buffered path.
+    /// </summary>
+    public const int MaxSamples = 1 << 20;
+}
