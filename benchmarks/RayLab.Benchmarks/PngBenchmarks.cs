@@ -9,10 +9,18 @@ namespace RayLab.Benchmarks;
 /// <summary>PNG encoding of the rendered 1920×1080 two-sphere picture: each row filter at each DEFLATE level.</summary>
 [MemoryDiagnoser]
 [SimpleJob(launchCount: 1, warmupCount: 1, iterationCount: 5)]
-public class PngBenchmarks
+public class PngBenchmarks : IDisposable
 {
     private Image _image = null!;
     private readonly MemoryStream _stream = new();
+
+    /// <summary>Frees the encoder's output stream.</summary>
+    [GlobalCleanup]
+    public void Dispose()
+    {
+        _stream.Dispose();
+        GC.SuppressFinalize(this);
+    }
 
     [Params(PngFilter.None, PngFilter.Sub, PngFilter.Up, PngFilter.Paeth, PngFilter.Adaptive)]
     public PngFilter Filter { get; set; }

@@ -1,5 +1,4 @@
 using System.CommandLine;
-using RayLab.Scenes;
 
 namespace RayLab.Cli;
 

@@ -3,7 +3,6 @@ using System.CommandLine.Help;
 using System.Globalization;
 using System.Runtime.InteropServices;
 using RayLab.Imaging;
-using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Rendering.Adaptive;
 

@@ -258,7 +258,7 @@ public class IntensityTests
 
         Assert.False(a.Equals(null));
         Assert.False(a.Equals("(1, 1, 1)"));
-        Assert.False(a.Equals((object)1.0));
+        Assert.False(a.Equals(1.0));
     }
 
     [Fact]

@@ -106,6 +106,7 @@ public abstract class Camera
     /// numbers are so large or small that the rays overflow double (their directions must square to a finite,
     /// normal double). The exception names the property to change.
     /// </exception>
+    [System.Diagnostics.CodeAnalysis.SuppressMessage("Usage", "CA2208:Instantiate argument exceptions correctly", Justification = "A combination of the camera's properties is wrong: the exception names the property to change, not the method's parameter.")]
     public ImagePlane GetImagePlane(int width, int height)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
@@ -167,6 +168,7 @@ public abstract class Camera
 
     // Every ray must be usable: origin finite and |d|² a finite, normal double (a sphere test squares d). |d|² is
     // convex over the window, so its corners bound it from above; from below, d·w = −s bounds it by s².
+    [System.Diagnostics.CodeAnalysis.SuppressMessage("Usage", "CA2208:Instantiate argument exceptions correctly", Justification = "The exception names the camera property to change.")]
     private void CheckRays(ImagePlane plane)
     {
         string source = Window is null ? WindowSource : nameof(Window);

@@ -31,6 +31,7 @@ public sealed class OrthoCamera : Camera
 
     /// <summary>The explicit window, or the centred one <see cref="ViewHeight"/> high with square pixels.</summary>
     /// <param name="aspectRatio">Image width / height.</param>
+    [System.Diagnostics.CodeAnalysis.SuppressMessage("Usage", "CA2208:Instantiate argument exceptions correctly", Justification = "The exception names the camera property to change.")]
     protected override Window GetWindow(double aspectRatio)
     {
         if (Window is { } window)

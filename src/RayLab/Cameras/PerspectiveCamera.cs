@@ -34,6 +34,7 @@ public sealed class PerspectiveCamera : Camera
     /// <c>(u1 − u0)/(v1 − v0) = W/H</c>.
     /// </summary>
     /// <param name="aspectRatio">Image width / height.</param>
+    [System.Diagnostics.CodeAnalysis.SuppressMessage("Usage", "CA2208:Instantiate argument exceptions correctly", Justification = "The exception names the camera property to change.")]
     protected override Window GetWindow(double aspectRatio)
     {
         if (Window is { } window)

@@ -39,6 +39,7 @@ public sealed class Image
     /// A size is less than 1 (the exception names <c>width</c> or <c>height</c>), or W·H·3 exceeds
     /// <see cref="MaxBytes"/> (it names <c>size</c>).
     /// </exception>
+    [System.Diagnostics.CodeAnalysis.SuppressMessage("Usage", "CA2208:Instantiate argument exceptions correctly", Justification = "Width and height are each valid; their product, the image's size, is too large.")]
     public static void CheckSize(int width, int height)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);

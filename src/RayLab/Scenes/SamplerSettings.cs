@@ -1,7 +1,6 @@
 using RayLab.Rendering;
 using RayLab.Rendering.Adaptive;
 using RayLab.Sampling;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Scenes;
 

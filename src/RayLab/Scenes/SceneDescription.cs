@@ -2,7 +2,6 @@ using RayLab.Cameras;
 using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Rendering.Exact;
-using RayLab.Sampling;
 
 namespace RayLab.Scenes;
 

@@ -1,7 +1,6 @@
 using System.Text.Json;
 using RayLab.Cli;
 using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Scenes;
 using RayLab.Tests.Imaging;
 using RayLab.Rendering.Exact;

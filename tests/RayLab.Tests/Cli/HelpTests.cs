@@ -1,6 +1,5 @@
 using System.Globalization;
 using RayLab.Cli;
-using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Rendering.Adaptive;
 

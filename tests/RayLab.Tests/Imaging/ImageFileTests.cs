@@ -364,10 +364,10 @@ public sealed class ImageFileTests : IDisposable
     {
         var image = new Image(1, 1);
 
-        Assert.Throws<ArgumentNullException>(() => image.Save((string)null!));
+        Assert.Throws<ArgumentNullException>(() => image.Save(null!));
         Assert.Throws<ArgumentException>(() => image.Save(""));
         Assert.Throws<ArgumentException>(() => image.Save("   "));
-        Assert.Throws<ArgumentNullException>(() => image.Save((Stream)null!, ImageFormat.Png));
+        Assert.Throws<ArgumentNullException>(() => image.Save(null!, ImageFormat.Png));
         Assert.Empty(_dir.Entries());
     }
 

@@ -70,7 +70,7 @@ public class AccurateHitTests
             for (int x = 0; x < plane.Width; x++)
             {
                 Ray ray = plane.GetPixelRay(x, row, 0.5, 0.5);
-                if (hard.Sphere.TryIntersectAccurate(ray, plane.TMin, plane.TMax, out double t, out Double3 p))
+                if (hard.Sphere.TryIntersectAccurate(ray, plane.TMin, plane.TMax, out _, out Double3 p))
                 {
                     worstAccurate = Math.Max(worstAccurate, UlpsOff(p, hard.Sphere));
                     Assert.True(hard.Sphere.TryIntersect(ray, plane.TMin, plane.TMax, out double tPlain));

@@ -188,8 +188,8 @@ public class HardCaseTests
     public void ARadiusZeroSphereIsNeverHitEvenThroughItsCentre()
     {
         var point = new Sphere(new Double3(1, 2, 3), 0, Intensity.White);
-        Assert.False(point.TryIntersect(new Ray(Double3.Zero, new Double3(1, 2, 3)), 0, 100, out double t));
-        Assert.False(point.TryIntersect(new Ray(new Double3(1, 2, 3), new Double3(0, 0, 1)), 0, 100, out t));
+        Assert.False(point.TryIntersect(new Ray(Double3.Zero, new Double3(1, 2, 3)), 0, 100, out _));
+        Assert.False(point.TryIntersect(new Ray(new Double3(1, 2, 3), new Double3(0, 0, 1)), 0, 100, out double t));
         Assert.False(double.IsNaN(t));
     }
 

@@ -109,7 +109,7 @@ public class LanesTests
             TL.BitsToFloat(TL.Load(a)).Store(result);
             for (int lane = 0; lane < n; lane++)
             {
-                Assert.Equal((float)(int)Bits(a[lane]), result[lane]);
+                Assert.Equal((int)Bits(a[lane]), result[lane]);
             }
 
             float[] values = Enumerable.Range(0, n).Select(lane => ((lane + shift) * 1234.567f) - 9000f).ToArray();
@@ -141,7 +141,7 @@ public class LanesTests
                 for (int lane = 0; lane < n; lane++)
                 {
                     double jitter = hashes[lane] * scale;
-                    float expected = (float)((c[lane] + ((a[lane] + jitter) / (double)inner)) / outer);
+                    float expected = (float)((c[lane] + ((a[lane] + jitter) / inner)) / outer);
                     Assert.Equal(BitConverter.SingleToInt32Bits(expected), BitConverter.SingleToInt32Bits(result[lane]));
                     double wrapped = ((double)shift / 17) + CounterHash.ToUnit(hashes[lane]);
                     float expectedShift = (float)(wrapped >= 1 ? wrapped - 1 : wrapped);
@@ -210,8 +210,8 @@ public class LanesTests
                 Assert.Equal(key, BitConverter.SingleToUInt32Bits(bits[lane]));
                 uint expected = CounterHash.Hash(key);
                 Assert.Equal(expected, BitConverter.SingleToUInt32Bits(hashed[lane]));
-                Assert.Equal((float)(expected >> 8), top[lane]);
-                Assert.Equal(CounterHash.ToUnit(expected), (double)unit[lane]);
+                Assert.Equal(expected >> 8, top[lane]);
+                Assert.Equal(CounterHash.ToUnit(expected), unit[lane]);
             }
         }
     }

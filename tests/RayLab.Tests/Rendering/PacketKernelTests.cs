@@ -200,6 +200,6 @@ public class PacketKernelTests
     public void AskingForScalarAlwaysGetsScalar()
     {
         RenderStatistics stats = Render(RenderKernel.Scalar, TwoSpheres(), Perspective, new JitteredSampler(4, 1)).Stats;
-        Assert.Equal((RenderKernel.Scalar, 0L, (string?)null), (stats.Kernel, stats.RetracedSamples, stats.ScalarReason));
+        Assert.Equal((RenderKernel.Scalar, 0L, null), (stats.Kernel, stats.RetracedSamples, stats.ScalarReason));
     }
 }

@@ -1,4 +1,3 @@
-using RayLab.Rendering;
 using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering;

@@ -67,7 +67,7 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
         new(Sse41.IsSupported ? Sse41.BlendVariable(whenFalse.V, whenTrue.V, mask.V) : Vector128.ConditionalSelect(mask.V, whenTrue.V, whenFalse.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static uint MaskBits(Lanes128 mask) => (uint)mask.V.ExtractMostSignificantBits();
+    public static uint MaskBits(Lanes128 mask) => mask.V.ExtractMostSignificantBits();
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Load(ReadOnlySpan<float> source) => new(Vector128.Create(source));
@@ -154,7 +154,7 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
             // The bytes of each lane in reverse order, then each byte's bits reversed by its two nibbles' lookups.
             Vector128<byte> swapped = Ssse3.Shuffle(bits.V.AsByte(), Vector128.Create((byte)3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
             Vector128<byte> nibble = Vector128.Create((byte)0x0f);
-            Vector128<byte> low = Ssse3.Shuffle(Vector128.Create((byte)0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0), swapped & nibble);
+            Vector128<byte> low = Ssse3.Shuffle(Vector128.Create(0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0), swapped & nibble);
             Vector128<byte> high = Ssse3.Shuffle(Vector128.Create((byte)0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf), (swapped.AsUInt16() >>> 4).AsByte() & nibble);
             return new((low | high).AsSingle());
         }

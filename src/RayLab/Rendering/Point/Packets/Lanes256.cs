@@ -67,7 +67,7 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
         new(Avx.IsSupported ? Avx.BlendVariable(whenFalse.V, whenTrue.V, mask.V) : Vector256.ConditionalSelect(mask.V, whenTrue.V, whenFalse.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static uint MaskBits(Lanes256 mask) => (uint)mask.V.ExtractMostSignificantBits();
+    public static uint MaskBits(Lanes256 mask) => mask.V.ExtractMostSignificantBits();
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 Load(ReadOnlySpan<float> source) => new(Vector256.Create(source));
@@ -154,7 +154,7 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
             // The bytes of each lane in reverse order, then each byte's bits reversed by its two nibbles' lookups.
             Vector256<byte> swapped = Avx2.Shuffle(bits.V.AsByte(), Vector256.Create((byte)3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12, 3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
             Vector256<byte> nibble = Vector256.Create((byte)0x0f);
-            Vector256<byte> low = Avx2.Shuffle(Vector256.Create((byte)0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0, 0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0), swapped & nibble);
+            Vector256<byte> low = Avx2.Shuffle(Vector256.Create(0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0, 0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0), swapped & nibble);
             Vector256<byte> high = Avx2.Shuffle(Vector256.Create((byte)0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf, 0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf), (swapped.AsUInt16() >>> 4).AsByte() & nibble);
             return new((low | high).AsSingle());
         }
