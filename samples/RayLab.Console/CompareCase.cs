@@ -8,7 +8,8 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// One setting <c>raylab compare</c> renders, as a <see cref="RenderMethod"/>: a point sampler at one budget
-/// (<see cref="Sampled"/>), or one adaptive setting (<see cref="Adaptive"/>, the lab's rule or the guarded one).
+/// (<see cref="Sampled"/>, a sampler of your own too), one adaptive setting (<see cref="Adaptive"/>, the lab's rule or the guarded one), or a method of
+/// your own (<see cref="Custom"/>).
 /// </summary>
 /// <param name="Series">Its line on the chart: the sampler's name, <c>adaptive c=0.1</c> for each contrast, or <c>adaptive guard c=0.01</c> for the guarded sampler.</param>
 /// <param name="Setting">What varies along the line: <c>16 spp</c>, or <c>depth 0–3</c>.</param>
@@ -36,6 +37,23 @@ public sealed record CompareCase(string Series, string Setting, int? Budget, Ren
         string guard = sampler.Guard ? " guard" : "";
         return new(FormattableString.Invariant($"adaptive{guard} c={sampler.Contrast:G6}"), $"depth {sampler.MinDepth}–{sampler.MaxDepth}", null,
             RenderMethod.Adaptive(sampler), FormattableString.Invariant($"adaptive{guard.Replace(' ', '-')}-c{sampler.Contrast:G6}-d{sampler.MaxDepth}"), sampler.MaxDepth, sampler.Contrast);
+    }
+
+    /// <summary>
+    /// A method of your own (a <see cref="RenderMethod.Custom{TScratch}"/> pixel method, or any other method) as one
+    /// point of its own line on the chart. A point sampler of your own goes in with <see cref="Sampled"/>.
+    /// </summary>
+    /// <param name="series">Its line on the chart, e.g. <c>mitchell</c>; settings with the same series join one line.</param>
+    /// <param name="setting">What distinguishes this point on the line, e.g. <c>4 → 16</c>.</param>
+    /// <param name="method">How the setting renders.</param>
+    /// <exception cref="ArgumentException"><paramref name="series"/> or <paramref name="setting"/> is empty.</exception>
+    public static CompareCase Custom(string series, string setting, RenderMethod method)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(series);
+        ArgumentException.ThrowIfNullOrWhiteSpace(setting);
+        ArgumentNullException.ThrowIfNull(method);
+        string stem = string.Concat($"{series}-{setting}".Select(ch => char.IsAsciiLetterOrDigit(ch) || ch is '.' or '-' ? ch : '-'));
+        return new(series, setting, null, method, stem);
     }
 
     /// <summary>The sampler's name (<c>jittered</c>, <c>adaptive</c>, …).</summary>

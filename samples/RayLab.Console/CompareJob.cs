@@ -153,6 +153,12 @@ public static class CompareJob
             }
         }
 
+        cases.AddRange(r.Methods ?? []);
+        if (cases.GroupBy(c => c.FileStem).FirstOrDefault(g => g.Count() > 1) is { } twice)
+        {
+            throw new UsageException($"two settings would both write the image {twice.Key}.png; give your methods distinct names");
+        }
+
         return (scene, [.. cases], notes);
     }
 

@@ -11,10 +11,13 @@ namespace RayLab.Cameras;
 /// The frame is the lab's: <c>w = −g/|g|</c> with gaze <c>g = Target − Position</c>,
 /// <c>u = (up × w)/|up × w|</c>, <c>v = w × u</c>. The lab prints a minus sign in front of u; with it the
 /// picture comes out mirrored, so RayLab leaves it out: camera right is image right, camera up is image up.
-/// A camera is immutable; <see cref="GetImagePlane"/> checks the combination of its properties and
-/// precomputes everything a renderer needs.
+/// A camera is an immutable record: move it between two renders with a <c>with</c> expression
+/// (<c>camera with { Position = new Double3(0, 2, 6) }</c>), which checks each property it sets as the
+/// initialiser does and leaves the original as it was. Each render takes its own snapshot of the view
+/// (<see cref="GetImagePlane"/> checks the combination of the properties and precomputes everything a renderer
+/// needs), so no render sees a camera change under it.
 /// </remarks>
-public abstract class Camera
+public abstract record Camera
 {
     private readonly Double3 _position = Double3.Zero;
     private readonly Double3 _target = new(0, 0, 1);

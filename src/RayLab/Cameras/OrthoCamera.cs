@@ -12,7 +12,7 @@ namespace RayLab.Cameras;
 /// The lab's own loop starts every ray at one point, which is a perspective projection; here each ray starts
 /// at its own point on the plane. The lab's pixel size 2/resolution uses the right resolution for each axis.
 /// </remarks>
-public sealed class OrthoCamera : Camera
+public sealed record OrthoCamera : Camera
 {
     private readonly double _height = 2;
 

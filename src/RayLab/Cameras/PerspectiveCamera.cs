@@ -8,7 +8,7 @@ namespace RayLab.Cameras;
 /// pixels, centred), unless <see cref="Camera.Window"/> sets it explicitly (an off-axis view) on the plane at
 /// <see cref="Distance"/>.
 /// </summary>
-public sealed class PerspectiveCamera : Camera
+public sealed record PerspectiveCamera : Camera
 {
     private readonly double _distance = 1;
 

@@ -53,12 +53,12 @@ public sealed class Renderer
     /// </summary>
     /// <param name="scene">The scene.</param>
     /// <param name="camera">The camera.</param>
-    /// <param name="method">Point sampling, adaptive or exact.</param>
+    /// <param name="method">Point sampling, adaptive, a pixel method of your own, or exact.</param>
     /// <param name="image">The image to fill; its size sets the camera's window.</param>
     /// <param name="raysPerPixel">
     /// Optional, W·H long, row 0 first: receives the rays charged to each pixel (a point sampler's samples per
     /// pixel; for adaptive, its centre and inner points, each pixel corner counted ¼ and each point on a pixel
-    /// edge ½, since they are shared; 0 for exact).
+    /// edge ½, since they are shared; for a pixel method, the points it traced in that pixel; 0 for exact).
     /// </param>
     /// <returns>Rays traced, render time and the kernel that ran.</returns>
     /// <exception cref="ArgumentException">The camera's settings do not form a valid view (see <see cref="Camera.GetImagePlane"/>), or <paramref name="raysPerPixel"/> has the wrong length.</exception>

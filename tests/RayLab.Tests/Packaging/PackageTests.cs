@@ -8,7 +8,8 @@ namespace RayLab.Tests.Packaging;
 /// <summary>
 /// What a new user does, end to end, with child <c>dotnet</c> processes: pack the library (<c>RayLab</c>) and the
 /// tool (<c>RayLab.Tool</c>) into a folder feed; build and run a fresh console app whose Program.cs is the README's
-/// "The library in ten lines" example, referencing the package; build and run the README's test project, a copy of
+/// "The library in ten lines" example, referencing the package; build and run the guide's own-method sample
+/// (samples/RayLab.OwnMethod) outside the repository against the package; build and run the README's test project, a copy of
 /// tests/RayLab.Tests/Examples, against the package; install the tool from the feed and run it.
 /// The children get an empty NUGET_PACKAGES folder, so no cached copy of an older RayLab package can stand in.
 /// </summary>
@@ -81,6 +82,25 @@ public sealed partial class PackageTests : IDisposable
 
         await RunAsync(app, packages, "dotnet", "run", "-c", "Release");
         AssertPng(Path.Combine(app, "two-spheres.png"), 800, 600);
+
+        // 2b. The README's guide "Your own antialiasing method": the sources of samples/RayLab.OwnMethod (a point
+        // sampler and a pixel method of the student's own) beside the same project file and the lab's scene,
+        // built against the package alone; it renders each method beside jittered into out/.
+        string own = Directory.CreateDirectory(Path.Combine(_dir, "own")).FullName;
+        foreach (string file in Directory.GetFiles(Path.Combine(repo, "samples", "RayLab.OwnMethod"), "*.cs"))
+        {
+            File.Copy(file, Path.Combine(own, Path.GetFileName(file)));
+        }
+
+        File.WriteAllText(Path.Combine(own, "own.csproj"), File.ReadAllText(Path.Combine(app, "app.csproj")).Replace(
+            "</Project>",
+            "  <ItemGroup>\n    <None Include=\"scenes/two-spheres.json\" CopyToOutputDirectory=\"PreserveNewest\" />\n  </ItemGroup>\n</Project>"));
+        Directory.CreateDirectory(Path.Combine(own, "scenes"));
+        File.Copy(Path.Combine(repo, "samples", "scenes", "two-spheres.json"), Path.Combine(own, "scenes", "two-spheres.json"));
+        File.Copy(Path.Combine(app, "nuget.config"), Path.Combine(own, "nuget.config"));
+        await RunAsync(own, packages, "dotnet", "run", "-c", "Release");
+        AssertPng(Path.Combine(own, "out", "rotated-grid-16.png"), 800, 600);
+        AssertPng(Path.Combine(own, "out", "mitchell.png"), 800, 600);
 
         // 3. The README's own test project (quick start, part 3): the Examples folder copied beside its project file,
         // so the examples a student starts from build against the package alone and pass.
