@@ -30,7 +30,9 @@ public sealed class Renderer
     /// SIMD packet the hardware runs natively; a packet width asked for explicitly runs even where the hardware
     /// lacks it (emulated, slowly), which is how tests compare the widths on any machine. Every packet width gives
     /// the same bytes; the scalar double path agrees with them except for samples within float resolution of a
-    /// silhouette (see the README's performance section). Adaptive and exact renders run their own loops.
+    /// silhouette (see the README's performance section). The adaptive renderer traces its pixel corners with the
+    /// same choice, and gives the same bytes with every kernel; its refinement points go one at a time in double.
+    /// The exact renderer runs its own loop.
     /// </summary>
     public RenderKernel Kernel { get; init; } = RenderKernel.Auto;
 
