@@ -1,4 +1,5 @@
 using System.CommandLine;
+using RayLab.Comparison;
 
 namespace RayLab.Cli;
 
@@ -22,7 +23,7 @@ public static class CompareCommand
         var output = new Option<string>("--out") { Description = "The folder for the report (created, with its parents, if missing).", Required = true, HelpName = "DIR" };
         var budgets = new Option<string>("--budgets") { Description = "Samples per pixel for the point samplers, comma-separated (grid samplers use the nearest square below).", DefaultValueFactory = _ => CompareRequest.DefaultBudgets };
         var repeats = new Option<int>("--repeats") { Description = "Renders per setting; the time is their median.", DefaultValueFactory = _ => 3, HelpName = "R" };
-        var samplers = new Option<string?>("--samplers") { Description = "The samplers to compare, comma-separated (default: all).", HelpName = string.Join(',', CompareJob.Compared) };
+        var samplers = new Option<string?>("--samplers") { Description = "The samplers to compare, comma-separated (default: all).", HelpName = string.Join(',', ComparePlan.Compared) };
         var maxDepths = new Option<string>("--max-depths") { Description = "Adaptive: the maximum depths, comma-separated.", DefaultValueFactory = _ => CompareRequest.DefaultMaxDepths };
         var contrasts = new Option<string>("--contrasts") { Description = "Adaptive: the contrasts, comma-separated (one chart line each).", DefaultValueFactory = _ => CompareRequest.DefaultContrasts };
         var compare = new Command("compare", "Render a scene with every sampler over a range of budgets, measure each against the exact image, and write a report (table, charts, images).")

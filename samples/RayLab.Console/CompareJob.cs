@@ -1,7 +1,6 @@
 using System.Globalization;
-using RayLab.Imaging;
 using RayLab.Rendering;
-using RayLab.Sampling;
+using RayLab.Comparison;
 using RayLab.Scenes;
 using RayLab.Rendering.Adaptive;
 
@@ -14,18 +13,6 @@ namespace RayLab.Cli;
 /// </summary>
 public static class CompareJob
 {
-    /// <summary>
-    /// The least total render time a setting's time is taken from: a setting whose <c>--repeats</c> renders add up
-    /// to less is rendered again until they reach it (or <see cref="MaximumRenders"/>).
-    /// </summary>
-    public static readonly TimeSpan MinimumMeasured = TimeSpan.FromMilliseconds(250);
-
-    /// <summary>The most renders of one setting taken to reach <see cref="MinimumMeasured"/>.</summary>
-    public const int MaximumRenders = 64;
-
-    /// <summary>The samplers a comparison renders: every point sampler and adaptive (the exact one is the reference).</summary>
-    public static IReadOnlyList<string> Compared { get; } = [.. Samplers.Names, "adaptive"];
-
     /// <summary>Runs the comparison; prints the table, or one error line and returns non-zero.</summary>
     /// <param name="request">What to compare.</param>
     /// <param name="stdout">Where the table goes.</param>
@@ -47,18 +34,17 @@ public static class CompareJob
             created = MissingFolders(request.OutputFolder);
             Directory.CreateDirectory(request.OutputFolder);
             staging = Path.Combine(request.OutputFolder, $".raylab-compare-{Guid.NewGuid():N}.tmp");
-            Directory.CreateDirectory(Path.Combine(staging, "images"));
-            Directory.CreateDirectory(Path.Combine(staging, "errors"));
+            Directory.CreateDirectory(staging);
 
-            (RenderStatistics exact, CompareResult[] results) = Measure(request, stdout, scene, cases, staging, cancellation);
-            var report = new CompareReport(Heading(request, scene, exact), Command(request), results, notes);
+            CompareMeasurement measured = Measure(request, stdout, scene, cases, staging, cancellation);
+            var report = new CompareReport(Heading(request, scene, measured.Exact), Command(request), measured.Results, notes);
             report.WriteTo(staging);
             cancellation.ThrowIfCancellationRequested(); // the last chance to leave the folder untouched
             Publish(staging, request.OutputFolder);
             done = true;
 
             stdout.Write(report.Table());
-            stdout.WriteLine($"wrote {Path.Combine(request.OutputFolder, "index.html")} ({results.Length} settings; results.md, results.csv, charts, images)");
+            stdout.WriteLine($"wrote {Path.Combine(request.OutputFolder, "index.html")} ({measured.Results.Count} settings; results.md, results.csv, charts, images)");
             stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"total time {clock.Elapsed.TotalSeconds:F1} s"));
             return 0;
         }
@@ -94,8 +80,8 @@ public static class CompareJob
             s => (int.TryParse(s, Digits, inv, out int d) && d <= AdaptiveSampler.MaxSupportedDepth, d));
         double[] contrasts = ParseList(r.Contrasts, "--contrasts", "a number ≥ 0",
             s => (double.TryParse(s, NumberStyles.Float, inv, out double c) && c >= 0 && double.IsFinite(c), c));
-        string[] samplers = ParseList(r.Samplers ?? string.Join(',', Compared), "--samplers",
-            $"one of {string.Join(", ", Compared)}", s => (Compared.Contains(s, StringComparer.Ordinal), s));
+        string[] samplers = ParseList(r.Samplers ?? string.Join(',', ComparePlan.Compared), "--samplers",
+            $"one of {string.Join(", ", ComparePlan.Compared)}", s => (ComparePlan.Compared.Contains(s, StringComparer.Ordinal), s));
         if (r.Repeats < 1)
         {
             throw new UsageException($"--repeats: must be at least 1, got {r.Repeats}");
@@ -110,108 +96,27 @@ public static class CompareJob
         PreparedScene scene = Prepare(r);
         uint seed = r.Seed ?? scene.Description.Sampler.Seed;
 
-        var cases = new List<CompareCase>();
         var notes = new List<string>();
-        foreach (string name in samplers.Where(s => s != "adaptive"))
+        List<CompareCase> cases = [.. ComparePlan.BuiltIn(samplers, budgets, depths, contrasts, seed, notes), .. r.Methods ?? []];
+        if (ComparePlan.SharedFileStem(cases) is { } stem)
         {
-            bool grid = Samplers.Create(name, 1, seed) is GridSampler;
-            var seen = new Dictionary<int, int>();
-            foreach (int budget in budgets)
-            {
-                int spp = grid ? (int)Math.Pow(Math.Floor(Math.Sqrt(budget)), 2) : budget;
-                if (seen.TryGetValue(spp, out int earlier))
-                {
-                    notes.Add($"{name}: budget {budget} would be {spp} samples (an n×n grid), as budget {earlier} is; left out.");
-                    continue;
-                }
-
-                seen[spp] = budget;
-                if (spp != budget)
-                {
-                    notes.Add($"{name}: budget {budget} runs as {spp} samples (an n×n grid needs a perfect square).");
-                }
-
-                cases.Add(CompareCase.Sampled(Samplers.Create(name, spp, seed), budget));
-            }
-        }
-
-        if (samplers.Contains("adaptive"))
-        {
-            foreach (double contrast in contrasts)
-            {
-                foreach (int depth in depths)
-                {
-                    cases.Add(CompareCase.Adaptive(new AdaptiveSampler(0, depth, contrast)));
-                }
-            }
-
-            // The guarded sampler beside the lab's rule, at the smallest contrast asked for.
-            double finest = contrasts.Min();
-            foreach (int depth in depths)
-            {
-                cases.Add(CompareCase.Adaptive(new AdaptiveSampler(0, depth, finest, guard: true)));
-            }
-        }
-
-        cases.AddRange(r.Methods ?? []);
-        if (cases.GroupBy(c => c.FileStem).FirstOrDefault(g => g.Count() > 1) is { } twice)
-        {
-            throw new UsageException($"two settings would both write the image {twice.Key}.png; give your methods distinct names");
+            throw new UsageException($"two settings would both write the image {stem}.png; give your methods distinct names");
         }
 
         return (scene, [.. cases], notes);
     }
 
-    private static (RenderStatistics Exact, CompareResult[] Results) Measure(
+    private static CompareMeasurement Measure(
         CompareRequest r, TextWriter stdout, PreparedScene scene, CompareCase[] cases, string staging, CancellationToken cancellation)
     {
-        int width = scene.Description.Width, height = scene.Description.Height;
-        Image exact = scene.CreateImage();
-        RenderStatistics exactStats = default;
-        var results = new CompareResult[cases.Length];
+        CompareMeasurement measured = null!;
         CompareProgress.Run(stdout, 1 + (cases.Length * r.Repeats), progress =>
         {
-            // The scene was prepared with the exact method: it renders the reference.
             var renderer = new Renderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows, CancellationToken = cancellation };
-            exactStats = progress.Render("exact image", () => scene.Render(renderer, exact));
-            exact.Save(Path.Combine(staging, "images", "exact.png"));
-
-            Image image = scene.CreateImage();
-            for (int i = 0; i < cases.Length; i++)
-            {
-                CompareCase c = cases[i];
-                var times = new List<TimeSpan>(r.Repeats);
-                RenderStatistics stats = default;
-                for (int k = 0; k < r.Repeats; k++)
-                {
-                    stats = progress.Render($"{c.Series}, {c.Setting} ({k + 1}/{r.Repeats})", () => c.Render(renderer, scene.Scene, scene.Camera, image));
-                    times.Add(stats.RenderTime);
-                }
-
-                // A render of a few milliseconds is timer and scheduler noise: render again (outside the progress
-                // count) until the renders add up to a time worth measuring; the report says which were.
-                TimeSpan measured = times.Aggregate(TimeSpan.Zero, (sum, t) => sum + t);
-                while (measured < MinimumMeasured && times.Count < MaximumRenders)
-                {
-                    TimeSpan again = c.Render(renderer, scene.Scene, scene.Camera, image).RenderTime;
-                    times.Add(again);
-                    measured += again;
-                }
-
-                ImageError error = ImageError.Measure(image, exact);
-                image.Save(Path.Combine(staging, "images", c.FileStem + ".png"));
-                HeatMap.Render(ImageError.PerPixel(image, exact), width, height, "levels").Save(Path.Combine(staging, "errors", c.FileStem + ".png"));
-                results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median([.. times]), error, stats.Kernel) { Renders = times.Count, Retimed = times.Count > r.Repeats };
-            }
+            measured = CompareRunner.Measure(scene.Scene, scene.Camera, scene.Description.Width, scene.Description.Height, cases, staging,
+                new CompareSettings(r.Repeats, renderer, progress), cancellation);
         });
-        return (exactStats, results);
-    }
-
-    private static TimeSpan Median(TimeSpan[] times)
-    {
-        Array.Sort(times);
-        int m = times.Length / 2;
-        return times.Length % 2 == 1 ? times[m] : (times[m - 1] + times[m]) / 2;
+        return measured;
     }
 
     /// <summary>Splits a comma-separated option; every item must parse and appear once.</summary>

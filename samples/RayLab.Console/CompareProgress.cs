@@ -1,3 +1,4 @@
+using RayLab.Comparison;
 using RayLab.Rendering;
 using Spectre.Console;
 
@@ -8,7 +9,7 @@ namespace RayLab.Cli;
 /// terminal, one plain line per render when the console's output is redirected, and nothing when the app runs
 /// with other writers (tests call <see cref="Program.Run"/> with string writers, which get only the results).
 /// </summary>
-public abstract class CompareProgress
+public abstract class CompareProgress : ICompareProgress
 {
     /// <summary>Counts finished rows of the current render; give it to the renderer.</summary>
     public RenderProgress Rows { get; } = new();

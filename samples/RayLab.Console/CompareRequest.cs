@@ -1,3 +1,5 @@
+using RayLab.Comparison;
+
 namespace RayLab.Cli;
 
 /// <summary>The parsed <c>raylab compare</c> command line; lists are still text, checked by <see cref="CompareJob"/>.</summary>

@@ -4,7 +4,7 @@ namespace RayLab.OwnMethod;
 
 /// <summary>
 /// Your own antialiasing method: a rotated-grid point sampler and Mitchell's adaptive contrast test, each rendered
-/// on the lab's two-sphere scene and measured against the exact reference beside plain jittered sampling.
+/// on the lab's two-sphere scene and measured against the exact reference beside plain jittered sampling; then the speed-against-error report with both.
 /// </summary>
 internal static class Program
 {
@@ -17,5 +17,8 @@ internal static class Program
             Console.WriteLine(result);
             result.Image.Save(Path.Combine("out", result.Name.Replace(' ', '-') + ".png"));
         }
+
+        SpeedAgainstError.Write(scene, Path.Combine("out", "report"), 200, 150);
+        Console.WriteLine($"wrote {Path.Combine("out", "report", "index.html")}");
     }
 }

@@ -1,4 +1,5 @@
 using RayLab.Cli;
+using RayLab.Comparison;
 using RayLab.OwnMethod;
 using RayLab.Rendering;
 

@@ -10,7 +10,7 @@ namespace RayLab.Tests.OwnMethod;
 public class OwnMethodTests
 {
     private static readonly Lazy<IReadOnlyList<MethodResult>> Results = new(() =>
-        Comparison.Run(SceneFile.Load(Path.Combine(AppContext.BaseDirectory, "scenes", "two-spheres.json"))));
+        RayLab.OwnMethod.Comparison.Run(SceneFile.Load(Path.Combine(AppContext.BaseDirectory, "scenes", "two-spheres.json"))));
 
     private static MethodResult Result(string name) => Results.Value.Single(r => r.Name == name);
 

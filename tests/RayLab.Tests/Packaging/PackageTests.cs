@@ -85,7 +85,7 @@ public sealed partial class PackageTests : IDisposable
 
         // 2b. The README's guide "Your own antialiasing method": the sources of samples/RayLab.OwnMethod (a point
         // sampler and a pixel method of the student's own) beside the same project file and the lab's scene,
-        // built against the package alone; it renders each method beside jittered into out/.
+        // built against the package alone; it renders each method beside jittered into out/ and writes the compare report into out/report.
         string own = Directory.CreateDirectory(Path.Combine(_dir, "own")).FullName;
         foreach (string file in Directory.GetFiles(Path.Combine(repo, "samples", "RayLab.OwnMethod"), "*.cs"))
         {
@@ -101,6 +101,12 @@ public sealed partial class PackageTests : IDisposable
         await RunAsync(own, packages, "dotnet", "run", "-c", "Release");
         AssertPng(Path.Combine(own, "out", "rotated-grid-16.png"), 800, 600);
         AssertPng(Path.Combine(own, "out", "mitchell.png"), 800, 600);
+        // ... and writes the speed-against-error report with both methods through the library's compare API.
+        string report = Path.Combine(own, "out", "report");
+        Assert.True(File.Exists(Path.Combine(report, "index.html")), "the own-method sample wrote no index.html");
+        string[] series = [.. File.ReadAllLines(Path.Combine(report, "results.csv")).Skip(1).Select(line => line.Split(',')[0]).Distinct()];
+        Assert.Equal(["jittered", "rotated-grid", "mitchell"], series);
+        AssertPng(Path.Combine(report, "images", "mitchell-4---16.png"), 200, 150);
 
         // 3. The README's own test project (quick start, part 3): the Examples folder copied beside its project file,
         // so the examples a student starts from build against the package alone and pass.

@@ -2,7 +2,7 @@ using System.Globalization;
 using System.Security;
 using System.Text;
 
-namespace RayLab.Cli;
+namespace RayLab.Comparison;
 
 /// <summary>
 /// A line chart with logarithmic axes, written as SVG by hand (no charting library restores here): labelled

@@ -1,8 +1,8 @@
 using System.Globalization;
 using System.Xml.Linq;
-using RayLab.Cli;
+using RayLab.Comparison;
 
-namespace RayLab.Tests.Cli;
+namespace RayLab.Tests.Comparison;
 
 public class LogLogChartTests
 {

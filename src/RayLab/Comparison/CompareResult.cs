@@ -1,9 +1,9 @@
 using RayLab.Imaging;
 using RayLab.Rendering;
 
-namespace RayLab.Cli;
+namespace RayLab.Comparison;
 
-/// <summary>What <c>raylab compare</c> measured for one setting.</summary>
+/// <summary>What a comparison measured for one setting.</summary>
 /// <param name="Case">The setting.</param>
 /// <param name="Rays">Primary rays traced by one render.</param>
 /// <param name="RaysPerPixel">Rays divided by W·H.</param>
@@ -12,9 +12,9 @@ namespace RayLab.Cli;
 /// <param name="Kernel">The render loop that ran (packet or scalar).</param>
 public sealed record CompareResult(CompareCase Case, long Rays, double RaysPerPixel, TimeSpan Time, ImageError Error, RenderKernel Kernel)
 {
-    /// <summary>How many renders <see cref="Time"/> is the median of: the <c>--repeats</c>, or more where they were too quick to time.</summary>
+    /// <summary>How many renders <see cref="Time"/> is the median of: the repeats asked for, or more where they were too quick to time.</summary>
     public int Renders { get; init; } = 1;
 
-    /// <summary>True when the setting was rendered again past <c>--repeats</c> because its renders were too quick to time.</summary>
+    /// <summary>True when the setting was rendered again past the repeats asked for because its renders were too quick to time.</summary>
     public bool Retimed { get; init; }
 }

@@ -4,10 +4,10 @@ using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Rendering.Adaptive;
 
-namespace RayLab.Cli;
+namespace RayLab.Comparison;
 
 /// <summary>
-/// One setting <c>raylab compare</c> renders, as a <see cref="RenderMethod"/>: a point sampler at one budget
+/// One setting a comparison renders, as a <see cref="RenderMethod"/>: a point sampler at one budget
 /// (<see cref="Sampled"/>, a sampler of your own too), one adaptive setting (<see cref="Adaptive"/>, the lab's rule or the guarded one), or a method of
 /// your own (<see cref="Custom"/>).
 /// </summary>

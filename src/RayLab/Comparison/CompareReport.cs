@@ -2,15 +2,15 @@ using System.Globalization;
 using System.Net;
 using System.Text;
 
-namespace RayLab.Cli;
+namespace RayLab.Comparison;
 
 /// <summary>
-/// The report of <c>raylab compare</c>: the table (Markdown and CSV), each sampler's fitted convergence slope,
+/// The speed-against-error report (<c>raylab compare</c>, <see cref="CompareRunner.Run"/>): the table (Markdown and CSV), each sampler's fitted convergence slope,
 /// the time each needs to reach "maximum error ≤ 1 level" and a common RMSE, two log-log charts and an
 /// <c>index.html</c> that links them with every image.
 /// </summary>
 /// <param name="heading">One line saying what was compared (scene, size, camera, seed, threads, repeats).</param>
-/// <param name="command">The command line that reproduces the run.</param>
+/// <param name="command">The command line that reproduces the run, or empty when there is none (a run through <see cref="CompareRunner"/>).</param>
 /// <param name="results">The measurements, in the order the settings were rendered.</param>
 /// <param name="notes">Remarks on the plan (budgets a grid sampler ran at a different count).</param>
 public sealed class CompareReport(string heading, string command, IReadOnlyList<CompareResult> results, IReadOnlyList<string> notes)
@@ -75,9 +75,9 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         int retimed = results.Count(r => r.Retimed);
         if (retimed > 0)
         {
-            double minimum = CompareJob.MinimumMeasured.TotalMilliseconds;
+            double minimum = CompareRunner.MinimumMeasured.TotalMilliseconds;
             int most = results.Max(r => r.Renders);
-            md.Append(Invariant($"\nEach time is the median of its setting's renders. {retimed} of {results.Count} settings rendered in less than {minimum:F0} ms in all over the repeats were rendered again until they reached it (at most {CompareJob.MaximumRenders} renders; up to {most} here): a time of a few milliseconds is timer noise.\n"));
+            md.Append(Invariant($"\nEach time is the median of its setting's renders. {retimed} of {results.Count} settings rendered in less than {minimum:F0} ms in all over the repeats were rendered again until they reached it (at most {CompareRunner.MaximumRenders} renders; up to {most} here): a time of a few milliseconds is timer noise.\n"));
         }
 
         md.Append("\n## Convergence slopes\n\n")
@@ -131,7 +131,11 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
             ReachTable(md, point, "the lowest RMSE every point sampler reaches");
         }
 
-        md.Append($"\nMade by:\n\n```\n{command}\n```\n");
+        if (command.Length > 0)
+        {
+            md.Append($"\nMade by:\n\n```\n{command}\n```\n");
+        }
+
         return md.ToString();
     }
 
@@ -254,7 +258,13 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
                 .Append($"<td><a href=\"images/{stem}.png\">image</a></td><td><a href=\"errors/{stem}.png\">error</a></td></tr>\n");
         }
 
-        html.Append($"</table>\n<p>Made by <code>{E(command)}</code></p>\n</body>\n</html>\n");
+        html.Append("</table>\n");
+        if (command.Length > 0)
+        {
+            html.Append($"<p>Made by <code>{E(command)}</code></p>\n");
+        }
+
+        html.Append("</body>\n</html>\n");
         return html.ToString();
     }
 

@@ -1,10 +1,10 @@
-using RayLab.Cli;
+using RayLab.Comparison;
 using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Rendering.Adaptive;
 
-namespace RayLab.Tests.Cli;
+namespace RayLab.Tests.Comparison;
 
 /// <summary>The report's arithmetic on results whose answers are known: slopes, costs to reach an RMSE, the winner.</summary>
 public class CompareReportTests

@@ -1,0 +1,153 @@
+using System.Globalization;
+using RayLab.Cameras;
+using RayLab.Imaging;
+using RayLab.Rendering;
+
+namespace RayLab.Comparison;
+
+/// <summary>
+/// Speed against error: renders a scene with each setting (built-in samplers or methods of your own), measures each
+/// image against the exact image, and writes the report: <c>results.csv</c>, <c>results.md</c>, two log-log charts,
+/// every image and error image, and <c>index.html</c>.
+/// </summary>
+public static class CompareRunner
+{
+    /// <summary>
+    /// The least total render time a setting's time is taken from: a setting whose repeats add up to less is rendered
+    /// again until they reach it (or <see cref="MaximumRenders"/>).
+    /// </summary>
+    public static readonly TimeSpan MinimumMeasured = TimeSpan.FromMilliseconds(250);
+
+    /// <summary>The most renders of one setting taken to reach <see cref="MinimumMeasured"/>.</summary>
+    public const int MaximumRenders = 64;
+
+    /// <summary>
+    /// Compares <paramref name="cases"/> on the scene and writes the whole report into <paramref name="folder"/>
+    /// (created if missing; files already there with the report's names are replaced).
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="width">Image width in pixels, ≥ 1.</param>
+    /// <param name="height">Image height in pixels, ≥ 1.</param>
+    /// <param name="cases">The settings, e.g. <see cref="CompareCase.Sampled"/> and <see cref="CompareCase.Custom"/>; at least one, no two with one <see cref="CompareCase.FileStem"/>.</param>
+    /// <param name="folder">The report's folder.</param>
+    /// <param name="settings">Repeats, renderer and progress; null for the defaults.</param>
+    /// <param name="cancellation">Stops between renders (give the renderer the same token to stop within one).</param>
+    /// <returns>The report that was written.</returns>
+    /// <exception cref="OperationCanceledException"><paramref name="cancellation"/> was cancelled; the folder may hold part of the report.</exception>
+    public static CompareReport Run(
+        Scene scene, Camera camera, int width, int height, IReadOnlyList<CompareCase> cases, string folder,
+        CompareSettings? settings = null, CancellationToken cancellation = default)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(folder);
+        settings ??= new CompareSettings();
+        Directory.CreateDirectory(folder);
+        CompareMeasurement measured = Measure(scene, camera, width, height, cases, folder, settings, cancellation);
+        string threads = settings.Renderer is { MaxDegreeOfParallelism: > 0 and var t } ? $"{t} threads" : $"all {Environment.ProcessorCount} cores";
+        string heading = string.Create(CultureInfo.InvariantCulture,
+            $"{width}×{height}, {camera.Name} camera, {threads}, time = median of {settings.Repeats} render{(settings.Repeats == 1 ? "" : "s")}; "
+            + $"exact image (ExactRenderer) in {measured.Exact.RenderTime.TotalMilliseconds:F0} ms");
+        var report = new CompareReport(heading, "", measured.Results, []);
+        report.WriteTo(folder);
+        return report;
+    }
+
+    /// <summary>
+    /// Renders the exact image and each setting, times each setting (the median of its renders), measures it against
+    /// the exact image, and saves <c>images/exact.png</c>, <c>images/STEM.png</c> and the error heat map
+    /// <c>errors/STEM.png</c> into <paramref name="folder"/>; the tables and charts are <see cref="CompareReport.WriteTo"/>'s.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="width">Image width in pixels, ≥ 1.</param>
+    /// <param name="height">Image height in pixels, ≥ 1.</param>
+    /// <param name="cases">The settings; at least one, no two with one <see cref="CompareCase.FileStem"/>.</param>
+    /// <param name="folder">An existing folder.</param>
+    /// <param name="settings">Repeats, renderer and progress.</param>
+    /// <param name="cancellation">Stops between renders.</param>
+    /// <returns>The exact render and a result per setting.</returns>
+    public static CompareMeasurement Measure(
+        Scene scene, Camera camera, int width, int height, IReadOnlyList<CompareCase> cases, string folder,
+        CompareSettings settings, CancellationToken cancellation = default)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(camera);
+        ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
+        ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
+        ArgumentNullException.ThrowIfNull(cases);
+        ArgumentException.ThrowIfNullOrWhiteSpace(folder);
+        ArgumentNullException.ThrowIfNull(settings);
+        if (cases.Count == 0)
+        {
+            throw new ArgumentException("give at least one setting to compare", nameof(cases));
+        }
+
+        if (ComparePlan.SharedFileStem(cases) is { } stem)
+        {
+            throw new ArgumentException($"two settings would both write the image {stem}.png; give your methods distinct names", nameof(cases));
+        }
+
+        if (settings.Repeats < 1)
+        {
+            throw new ArgumentException($"Repeats must be at least 1, got {settings.Repeats}", nameof(settings));
+        }
+
+        Renderer renderer = settings.Renderer ?? new Renderer { CancellationToken = cancellation };
+        ICompareProgress progress = settings.Progress ?? new Unobserved();
+        string images = Directory.CreateDirectory(Path.Combine(folder, "images")).FullName;
+        string errors = Directory.CreateDirectory(Path.Combine(folder, "errors")).FullName;
+
+        var exact = new Image(width, height);
+        RenderStatistics exactStats = progress.Render("exact image", () => renderer.Render(scene, camera, RenderMethod.Exact, exact));
+        exact.Save(Path.Combine(images, "exact.png"));
+
+        var image = new Image(width, height);
+        var results = new CompareResult[cases.Count];
+        for (int i = 0; i < cases.Count; i++)
+        {
+            CompareCase c = cases[i] ?? throw new ArgumentException($"cases[{i}] is null", nameof(cases));
+            var times = new List<TimeSpan>(settings.Repeats);
+            RenderStatistics stats = default;
+            for (int k = 0; k < settings.Repeats; k++)
+            {
+                cancellation.ThrowIfCancellationRequested();
+                stats = progress.Render($"{c.Series}, {c.Setting} ({k + 1}/{settings.Repeats})", () => c.Render(renderer, scene, camera, image));
+                times.Add(stats.RenderTime);
+            }
+
+            // A render of a few milliseconds is timer and scheduler noise: render again (outside the progress
+            // count) until the renders add up to a time worth measuring; the report says which were.
+            TimeSpan measured = times.Aggregate(TimeSpan.Zero, (sum, t) => sum + t);
+            while (measured < MinimumMeasured && times.Count < MaximumRenders)
+            {
+                cancellation.ThrowIfCancellationRequested();
+                TimeSpan again = c.Render(renderer, scene, camera, image).RenderTime;
+                times.Add(again);
+                measured += again;
+            }
+
+            ImageError error = ImageError.Measure(image, exact);
+            image.Save(Path.Combine(images, c.FileStem + ".png"));
+            HeatMap.Render(ImageError.PerPixel(image, exact), width, height, "levels").Save(Path.Combine(errors, c.FileStem + ".png"));
+            results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median([.. times]), error, stats.Kernel)
+            {
+                Renders = times.Count,
+                Retimed = times.Count > settings.Repeats,
+            };
+        }
+
+        return new CompareMeasurement(exactStats, results);
+    }
+
+    private static TimeSpan Median(TimeSpan[] times)
+    {
+        Array.Sort(times);
+        int m = times.Length / 2;
+        return times.Length % 2 == 1 ? times[m] : (times[m - 1] + times[m]) / 2;
+    }
+
+    private sealed class Unobserved : ICompareProgress
+    {
+        public RenderStatistics Render(string label, Func<RenderStatistics> render) => render();
+    }
+}
