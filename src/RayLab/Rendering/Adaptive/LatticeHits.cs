@@ -135,14 +135,7 @@ internal sealed class LatticeHits
                 TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
                 TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
                 TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
-
-                TL half = TL.MultiplyAdd(fx, dx, TL.MultiplyAdd(fy, dy, fz * dz));
-                TL along = half * rdd;
-                TL px = TL.NegatedMultiplyAdd(dx, along, fx);
-                TL py = TL.NegatedMultiplyAdd(dy, along, fy);
-                TL pz = TL.NegatedMultiplyAdd(dz, along, fz);
-                TL disc = TL.Broadcast(sphere.RadiusSquared) - TL.MultiplyAdd(px, px, TL.MultiplyAdd(py, py, pz * pz));
-                TL negatedT = (half + TL.Sqrt(disc * dd)) * rdd;
+                TL negatedT = LaneSphere.NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(sphere.RadiusSquared), out TL disc);
                 TL hit = TL.LessThan(nearest, negatedT);
                 closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
                 if (checkOrder)

@@ -114,14 +114,7 @@ internal static class PacketKernel
                 TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
                 TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
                 TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
-
-                TL half = TL.MultiplyAdd(fx, dx, TL.MultiplyAdd(fy, dy, fz * dz));   // (o − C)·d
-                TL along = half * rdd;
-                TL px = TL.NegatedMultiplyAdd(dx, along, fx);                       // (o − C) minus its projection on d
-                TL py = TL.NegatedMultiplyAdd(dy, along, fy);
-                TL pz = TL.NegatedMultiplyAdd(dz, along, fz);
-                TL disc = TL.Broadcast(sphere.RadiusSquared) - TL.MultiplyAdd(px, px, TL.MultiplyAdd(py, py, pz * pz));
-                TL negatedT = (half + TL.Sqrt(disc * dd)) * rdd;                    // −(near root); NaN when Δ < 0
+                TL negatedT = LaneSphere.NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(sphere.RadiusSquared), out TL disc);
                 TL hit = TL.LessThan(nearest, negatedT);                             // t < best (false for NaN)
                 closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
                 if (checkOrder)
