@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
+using System.Runtime.CompilerServices;
 using System.Text.Json;
 using RayLab.Imaging;
 using RayLab.Rendering;
@@ -118,14 +119,20 @@ public static class RenderJob
         {
             MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress, CancellationToken = cancellation,
         };
-        // A smaller render of the same scene first, so that renderMs is the render and not the JIT compiling it
-        // (the native anchors are compiled ahead of time too); its time is reported as warmupMs. It is the same
-        // picture scaled down, so it meets the same edges and compiles the paths the render takes there. The
-        // image's memory is committed before the clock too, as the anchors' zero-filled buffer is.
-        var warmupClock = Stopwatch.StartNew();
-        prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
+        // Under the JIT, a smaller render of the same scene first, so that renderMs is the render and not the JIT
+        // compiling it (the native anchors are compiled ahead of time too); its time is reported as warmupMs. It is
+        // the same picture scaled down, so it meets the same edges and compiles the paths the render takes there.
+        // The native build (Native AOT) has nothing to compile, so it skips the warm-up and reports no warmupMs.
+        // Either way the image's memory is committed before the clock, as the anchors' zero-filled buffer is.
+        double? warmupMs = null;
+        if (RuntimeFeature.IsDynamicCodeCompiled)
+        {
+            var warmupClock = Stopwatch.StartNew();
+            prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
+            warmupMs = warmupClock.Elapsed.TotalMilliseconds;
+        }
+
         image.PixelBytes.Clear();
-        double warmupMs = warmupClock.Elapsed.TotalMilliseconds;
         RenderStatistics stats;
         using (ProgressDisplay.ForTerminal(stdout, progress, Path.GetFileName(request.OutputPath)))
         {
@@ -279,36 +286,35 @@ public static class RenderJob
     /// <summary>The most samples the warm-up render takes: about 1/16 of the 1080p, 16 spp benchmark.</summary>
     public const double WarmupSamples = 1 << 21;
 
-    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double encodeMs, double warmupMs)
+    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double encodeMs, double? warmupMs)
     {
         SamplerSettings sampler = prepared.Description.Sampler;
-        var json = new
+        var json = new RenderStatsFile
         {
-            scene = request.ScenePath,
-            output = request.OutputPath,
-            width = prepared.Description.Width,
-            height = prepared.Description.Height,
-            camera = prepared.Camera.Name,
-            sampler = prepared.SamplerName,
-            samplesPerPixel = prepared.SamplesPerPixel,
-            seed = sampler.IsAdaptive || sampler.IsExact ? 0 : sampler.Seed,
-            minDepth = sampler.IsAdaptive ? sampler.MinDepth : (int?)null,
-            maxDepth = sampler.IsAdaptive ? sampler.MaxDepth : (int?)null,
-            contrast = sampler.IsAdaptive ? sampler.Contrast : (double?)null,
-            quincunx = sampler.IsAdaptive ? sampler.Quincunx : (bool?)null,
-            guard = sampler.IsAdaptive ? sampler.Guard : (bool?)null,
-            raysPerPixel = stats.PrimaryRays / ((double)prepared.Description.Width * prepared.Description.Height),
-            threads = request.Threads ?? Environment.ProcessorCount,
-            rays = stats.PrimaryRays,
-            renderMs = stats.RenderTime.TotalMilliseconds,
-            warmupMs,
-            encodeMs,
-            kernel = stats.Kernel.ToString().ToLowerInvariant(),
-            retracedSamples = stats.RetracedSamples,
-            scalarReason = stats.ScalarReason,
+            Scene = request.ScenePath,
+            Output = request.OutputPath,
+            Width = prepared.Description.Width,
+            Height = prepared.Description.Height,
+            Camera = prepared.Camera.Name,
+            Sampler = prepared.SamplerName,
+            SamplesPerPixel = prepared.SamplesPerPixel,
+            Seed = sampler.IsAdaptive || sampler.IsExact ? 0 : sampler.Seed,
+            MinDepth = sampler.IsAdaptive ? sampler.MinDepth : null,
+            MaxDepth = sampler.IsAdaptive ? sampler.MaxDepth : null,
+            Contrast = sampler.IsAdaptive ? sampler.Contrast : null,
+            Quincunx = sampler.IsAdaptive ? sampler.Quincunx : null,
+            Guard = sampler.IsAdaptive ? sampler.Guard : null,
+            RaysPerPixel = stats.PrimaryRays / ((double)prepared.Description.Width * prepared.Description.Height),
+            Threads = request.Threads ?? Environment.ProcessorCount,
+            Rays = stats.PrimaryRays,
+            RenderMs = stats.RenderTime.TotalMilliseconds,
+            WarmupMs = warmupMs,
+            EncodeMs = encodeMs,
+            Kernel = stats.Kernel.ToString().ToLowerInvariant(),
+            RetracedSamples = stats.RetracedSamples,
+            ScalarReason = stats.ScalarReason,
         };
-        AtomicFile.WriteAllText(request.StatsPath!, JsonSerializer.Serialize(json, StatsJson) + Environment.NewLine);
+        AtomicFile.WriteAllText(request.StatsPath!, JsonSerializer.Serialize(json, RenderStatsJson.Default.RenderStatsFile) + Environment.NewLine);
     }
 
-    private static readonly JsonSerializerOptions StatsJson = new() { WriteIndented = true, DefaultIgnoreCondition = System.Text.Json.Serialization.JsonIgnoreCondition.WhenWritingNull };
 }
