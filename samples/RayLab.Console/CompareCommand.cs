@@ -15,7 +15,7 @@ public static class CompareCommand
     /// <param name="cancellation">Cancels the comparison (Ctrl+C).</param>
     public static Command Create(TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
-        var scene = new Argument<string>("scene") { Description = "The scene file (its camera and size; its sampler is ignored)." };
+        var scene = new Argument<string>("scene") { Description = "The scene file, or the name of a scene raylab carries (its camera and size; its sampler is ignored)." };
         var seed = new Option<uint?>("--seed") { Description = "The samplers' seed, 0 to 4294967295 (default: the scene's).", HelpName = "S" };
         var threads = new Option<int?>("--threads") { Description = "Render threads, ≥ 1 (default: all cores).", HelpName = "T" };
         var width = new Option<int?>("--width") { Description = "Override the image width, ≥ 1.", HelpName = "W" };

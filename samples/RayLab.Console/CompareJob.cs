@@ -178,7 +178,7 @@ public static class CompareJob
     {
         // The scene's own sampler is not used; preparing it as "exact" checks that the exact reference can draw
         // the scene (a sphere behind the eye is an error naming spheres[i]) before anything is rendered.
-        SceneDescription d = SceneFile.Load(r.ScenePath);
+        SceneDescription d = SceneFile.Load(CarriedScenes.Resolve(r.ScenePath));
         return new SceneOverrides(r.Width, r.Height).Prepare(d with { Sampler = d.Sampler with { Type = "exact" } });
     }
 

@@ -69,7 +69,7 @@ public static class Program
         // Options override the scene file, so each says what it falls back to: the scene's field, and the value
         // a scene file that omits the field gets (SamplerSettings' defaults, as SceneFile reads them).
         SamplerSettings d = SamplerSettings.Default;
-        var scene = new Argument<string>("scene") { Description = "The scene file: JSON with image, camera, spheres, … (see the README's \"Scene files\")." };
+        var scene = new Argument<string>("scene") { Description = "The scene file: JSON with image, camera, spheres, … (see the README's \"Scene files\"), or the name of a scene raylab carries (see 'raylab scenes')." };
         var output = new Option<string>("--output", "-o") { Description = "The image to write, .png or .bmp (the format follows the extension).", HelpName = "OUT.png", Required = true };
         var camera = new Option<string?>("--camera") { Description = $"{Choices(CameraSettings.Types)}. Default: the scene's camera.type.", HelpName = "TYPE" };
         var sampler = new Option<string?>("--sampler") { Description = $"{Choices(SamplerSettings.Types)}. Default: the scene's sampler.type; {d.Type} if omitted.", HelpName = "NAME" };
@@ -115,13 +115,15 @@ public static class Program
             cancellation));
 
         var compare = CompareCommand.Create(stdout, stderr, cancellation);
+        var scenes = new Command("scenes", "List the scenes raylab carries; render one by name from any folder: raylab render two-spheres -o out.png.");
+        scenes.SetAction(_ => CarriedScenes.List(stdout, stderr));
 
         var root = new RootCommand(
             "RayLab: the photorealistic-rendering lab's ray tracer. With no command, renders the two-sphere scene "
             + "with the orthographic and the perspective camera, adaptive antialiasing, into out/ (with heat maps). "
             + "'raylab render --help' lists the options of a render.")
         {
-            render, compare,
+            render, compare, scenes,
         };
         root.HelpName = "raylab"; // not the host's name (dotnet, testhost) in the usage lines
         root.SetAction(_ => RenderJob.RunDefault(stdout, stderr, cancellation));

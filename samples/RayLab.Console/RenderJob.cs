@@ -106,7 +106,7 @@ public static class RenderJob
             throw new UsageException($"--threads: must be at least 1, got {request.Threads}");
         }
 
-        PreparedScene prepared = request.Overrides.Prepare(SceneFile.Load(request.ScenePath));
+        PreparedScene prepared = request.Overrides.Prepare(SceneFile.Load(CarriedScenes.Resolve(request.ScenePath)));
         foreach (string notice in NoticesFor(request, prepared.Description.Sampler))
         {
             stderr.WriteLine($"raylab: note: {notice}");
