@@ -133,10 +133,14 @@ public class LaneSamplerBenchmarks
         for (int x0 = 0; x0 < BenchScene.Width; x0 += Lanes256.Count)
         {
             lanes.BeginPacket(x0, 540);
-            for (int i = 0; i < 16; i++)
+            for (int start = 0, end; start < 16; start = end)
             {
-                lanes.Sample(i, out Lanes256 sx, out Lanes256 sy);
-                sum += sx + sy;
+                end = lanes.Prepare(start, 16);
+                for (int i = start; i < end; i++)
+                {
+                    lanes.Sample(i, out Lanes256 sx, out Lanes256 sy);
+                    sum += sx + sy;
+                }
             }
         }
 

@@ -185,7 +185,7 @@ public static class CompareJob
     private static string Heading(CompareRequest r, PreparedScene scene, RenderStatistics exact) => string.Create(CultureInfo.InvariantCulture,
         $"{Path.GetFileName(r.ScenePath)}, {scene.Description.Width}×{scene.Description.Height}, {scene.Camera.Name} camera, "
         + $"seed {r.Seed ?? scene.Description.Sampler.Seed}, {(r.Threads is { } t ? $"{t} threads" : $"all {Environment.ProcessorCount} cores")}, "
-        + $"time = median of {r.Repeats} render{(r.Repeats == 1 ? "" : "s")}; "
+        + $"{CompareRunner.TimeRule(r.Repeats)}; "
         + $"exact image (ExactRenderer) in {exact.RenderTime.TotalMilliseconds:F0} ms");
 
     /// <summary>The command line that reproduces the run, every list spelled out.</summary>

@@ -49,6 +49,12 @@ public abstract class CompareProgress : ICompareProgress
     /// <returns>The render's statistics.</returns>
     public abstract RenderStatistics Render(string label, Func<RenderStatistics> render);
 
+    /// <summary>Moves the count of renders past <paramref name="renders"/> planned repeats that were not needed.</summary>
+    /// <param name="renders">How many.</param>
+    public virtual void Skipped(int renders)
+    {
+    }
+
     private sealed class Silent : CompareProgress
     {
         public override RenderStatistics Render(string label, Func<RenderStatistics> render) => render();
@@ -57,6 +63,8 @@ public abstract class CompareProgress : ICompareProgress
     private sealed class PlainLines(TextWriter writer, int renders) : CompareProgress
     {
         private int _done;
+
+        public override void Skipped(int renders) => _done += renders;
 
         public override RenderStatistics Render(string label, Func<RenderStatistics> render)
         {
@@ -87,5 +95,7 @@ public abstract class CompareProgress : ICompareProgress
             _all.Increment(1);
             return stats;
         }
+
+        public override void Skipped(int renders) => _all.Increment(renders);
     }
 }

@@ -72,6 +72,12 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
             md.Append($"- {note}\n");
         }
 
+        int once = results.Count(r => r.TimedOnce);
+        if (once > 0)
+        {
+            md.Append(Invariant($"\n{once} of {results.Count} settings took {CompareRunner.LongRender.TotalSeconds:0.#} s or more in their first render, which is their time (no repeats: at that length timer noise is below a part in a thousand; load on the machine is not, as it is not for the medians).\n"));
+        }
+
         int retimed = results.Count(r => r.Retimed);
         if (retimed > 0)
         {

@@ -12,9 +12,12 @@ namespace RayLab.Comparison;
 /// <param name="Kernel">The render loop that ran (packet or scalar).</param>
 public sealed record CompareResult(CompareCase Case, long Rays, double RaysPerPixel, TimeSpan Time, ImageError Error, RenderKernel Kernel)
 {
-    /// <summary>How many renders <see cref="Time"/> is the median of: the repeats asked for, or more where they were too quick to time.</summary>
+    /// <summary>How many renders <see cref="Time"/> is the median of: the repeats asked for, one where the first took <see cref="CompareRunner.LongRender"/> or more, or more where they were too quick to time.</summary>
     public int Renders { get; init; } = 1;
 
     /// <summary>True when the setting was rendered again past the repeats asked for because its renders were too quick to time.</summary>
     public bool Retimed { get; init; }
+
+    /// <summary>True when the setting's first render took <see cref="CompareRunner.LongRender"/> or more and was its only one (fewer than the repeats asked for).</summary>
+    public bool TimedOnce { get; init; }
 }

@@ -22,6 +22,13 @@ public static class CompareRunner
     public const int MaximumRenders = 64;
 
     /// <summary>
+    /// A render at least this long is its setting's time on its own: the repeats are for renders short enough for
+    /// timer and scheduler noise to matter; a second-long render is not repeated (at 1920×1080 the 256 and 1024 spp
+    /// renders, most of a comparison's time).
+    /// </summary>
+    public static readonly TimeSpan LongRender = TimeSpan.FromSeconds(1);
+
+    /// <summary>
     /// Compares <paramref name="cases"/> on the scene and writes the whole report into <paramref name="folder"/>
     /// (created if missing; files already there with the report's names are replaced).
     /// </summary>
@@ -45,7 +52,7 @@ public static class CompareRunner
         CompareMeasurement measured = Measure(scene, camera, width, height, cases, folder, settings, cancellation);
         string threads = settings.Renderer is { MaxDegreeOfParallelism: > 0 and var t } ? $"{t} threads" : $"all {Environment.ProcessorCount} cores";
         string heading = string.Create(CultureInfo.InvariantCulture,
-            $"{width}×{height}, {camera.Name} camera, {threads}, time = median of {settings.Repeats} render{(settings.Repeats == 1 ? "" : "s")}; "
+            $"{width}×{height}, {camera.Name} camera, {threads}, {TimeRule(settings.Repeats)}; "
             + $"exact image (ExactRenderer) in {measured.Exact.RenderTime.TotalMilliseconds:F0} ms");
         var report = new CompareReport(heading, "", measured.Results, []);
         report.WriteTo(folder);
@@ -113,6 +120,11 @@ public static class CompareRunner
                 cancellation.ThrowIfCancellationRequested();
                 stats = progress.Render($"{c.Series}, {c.Setting} ({k + 1}/{settings.Repeats})", () => c.Render(renderer, scene, camera, image));
                 times.Add(stats.RenderTime);
+                if (k == 0 && settings.Repeats > 1 && stats.RenderTime >= LongRender)
+                {
+                    progress.Skipped(settings.Repeats - 1);
+                    break;
+                }
             }
 
             // A render of a few milliseconds is timer and scheduler noise: render again (outside the progress
@@ -133,11 +145,18 @@ public static class CompareRunner
             {
                 Renders = times.Count,
                 Retimed = times.Count > settings.Repeats,
+                TimedOnce = times.Count < settings.Repeats,
             };
         }
 
         return new CompareMeasurement(exactStats, results);
     }
+
+    /// <summary>How the report's times were taken, for its heading: <c>time = median of 3 renders (1 for a render of 1 s or more)</c>.</summary>
+    /// <param name="repeats">The repeats asked for.</param>
+    public static string TimeRule(int repeats) => repeats == 1
+        ? "time = one render"
+        : string.Create(CultureInfo.InvariantCulture, $"time = median of {repeats} renders (1 for a render of {LongRender.TotalSeconds:0.#} s or more)");
 
     private static TimeSpan Median(TimeSpan[] times)
     {

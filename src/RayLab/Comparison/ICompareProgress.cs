@@ -10,4 +10,13 @@ public interface ICompareProgress
     /// <param name="render">The render; call it once and return what it returns.</param>
     /// <returns>The render's statistics.</returns>
     RenderStatistics Render(string label, Func<RenderStatistics> render);
+
+    /// <summary>
+    /// Tells that <paramref name="renders"/> of the repeats planned for a setting were not needed (its first render
+    /// was long enough to be its time, <see cref="CompareRunner.LongRender"/>), so a count of renders can move on.
+    /// </summary>
+    /// <param name="renders">How many planned renders were left out.</param>
+    void Skipped(int renders)
+    {
+    }
 }

@@ -97,6 +97,18 @@ public class CompareReportTests
         Assert.DoesNotContain("rendered again", new CompareReport("h", "c", [results[1]], []).Markdown(), StringComparison.Ordinal);
     }
 
+    [Fact]
+    public void TheMarkdownSaysWhichTimesAreOneLongRender()
+    {
+        CompareResult[] results = [Result("random", 1024, 0.1, 4000) with { TimedOnce = true }, Result("random", 4, 2, 300) with { Renders = 3 }];
+
+        string md = new CompareReport("heading", "raylab compare x --out y", results, []).Markdown();
+
+        Assert.Contains("1 of 2 settings took 1 s or more in their first render, which is their time", md, StringComparison.Ordinal);
+        Assert.DoesNotContain("first render", new CompareReport("h", "c", [results[1]], []).Markdown(), StringComparison.Ordinal);
+        Assert.Equal("time = median of 3 renders (1 for a render of 1 s or more)", CompareRunner.TimeRule(3));
+    }
+
     private static CompareResult Result(string sampler, int spp, double rmse, double ms, int max = 9) => new(
         CompareCase.Sampled(Samplers.Create(sampler, spp, 1), spp),
         spp * 100L, spp, TimeSpan.FromMilliseconds(ms), new ImageError(rmse, rmse, max, 0.01), RenderKernel.Scalar);

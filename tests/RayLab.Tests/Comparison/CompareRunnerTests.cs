@@ -1,6 +1,7 @@
 using RayLab.Comparison;
 using RayLab.OwnMethod;
 using RayLab.Rendering;
+using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -44,6 +45,60 @@ public sealed class CompareRunnerTests : IDisposable
         Assert.Equal(["jittered", "rotated-grid", "mitchell"], rows.Select(r => r.Split(',')[0]));
         Assert.Contains("32×24", File.ReadAllText(Path.Combine(folder, "results.md")), StringComparison.Ordinal);
         Assert.DoesNotContain("Made by", File.ReadAllText(Path.Combine(folder, "index.html")), StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void ARenderOfASecondOrMoreIsTimedOnceAndAQuickOneIsRepeated()
+    {
+        PreparedScene lab = Lab(2, 1);
+        var slow = new SlowMethod(CompareRunner.LongRender);
+        CompareCase[] cases = [CompareCase.Custom("slow", "a pause per render", RenderMethod.Custom(slow)), CompareCase.Sampled(new JitteredSampler(1, seed: 1), 1)];
+        var progress = new CountingProgress();
+
+        CompareMeasurement measured = CompareRunner.Measure(lab.Scene, lab.Camera, 2, 1, cases, _dir, new CompareSettings(Repeats: 3, Progress: progress),
+            TestContext.Current.CancellationToken);
+
+        Assert.Equal(1, slow.Renders);
+        Assert.True(measured.Results[0].TimedOnce);
+        Assert.Equal(1, measured.Results[0].Renders);
+        Assert.False(measured.Results[1].TimedOnce);
+        Assert.True(measured.Results[1].Renders >= 3, $"the quick setting was rendered {measured.Results[1].Renders} times");
+        Assert.Equal(1 + (2 * 3), progress.Counted);
+    }
+
+    /// <summary>A method whose every render pauses (on its first pixel) for at least the given time.</summary>
+    private sealed class SlowMethod(TimeSpan pause) : IPixelMethod<int>
+    {
+        public int Renders { get; private set; }
+
+        public string Name => "slow";
+
+        public int CreateScratch() => 0;
+
+        public Intensity RenderPixel(PixelTracer pixel, ref int scratch)
+        {
+            if (pixel.X == 0 && pixel.Row == 0)
+            {
+                Renders++;
+                Thread.Sleep(pause + TimeSpan.FromMilliseconds(20));
+            }
+
+            return pixel.Trace(0.5, 0.5);
+        }
+    }
+
+    /// <summary>Counts renders as a progress bar would: each render and each planned repeat left out.</summary>
+    private sealed class CountingProgress : ICompareProgress
+    {
+        public int Counted { get; private set; }
+
+        public RenderStatistics Render(string label, Func<RenderStatistics> render)
+        {
+            Counted++;
+            return render();
+        }
+
+        public void Skipped(int renders) => Counted += renders;
     }
 
     [Fact]

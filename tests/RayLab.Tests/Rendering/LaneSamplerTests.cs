@@ -114,8 +114,14 @@ public class LaneSamplerTests
         foreach ((int x0, int row) in Packets(n))
         {
             lanes.BeginPacket(x0, row);
-            for (int index = 0; index < sampler.SamplesPerPixel; index++)
+            for (int index = 0, ready = 0; index < sampler.SamplesPerPixel; index++)
             {
+                if (index == ready)
+                {
+                    ready = lanes.Prepare(index, sampler.SamplesPerPixel);
+                    Assert.InRange(ready, index + 1, sampler.SamplesPerPixel);
+                }
+
                 lanes.Sample(index, out TL sx, out TL sy);
                 sx.Store(xs);
                 sy.Store(ys);

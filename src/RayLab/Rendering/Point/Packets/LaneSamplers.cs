@@ -15,7 +15,15 @@ internal interface ILaneSampler<TL>
     /// <summary>Moves to the packet whose first pixel is (<paramref name="x0"/>, <paramref name="row"/>).</summary>
     void BeginPacket(int x0, int row);
 
-    /// <summary>Sample <paramref name="index"/> of every lane's pixel, as offsets in [0, 1)² inside the pixel.</summary>
+    /// <summary>
+    /// Makes samples <paramref name="start"/> … (at most) <paramref name="end"/> − 1 of the packet ready for
+    /// <see cref="Sample"/> and returns the index after the last one made ready (more than <paramref name="start"/>).
+    /// The kernel asks from 0 (after <see cref="BeginPacket"/>) and then from each returned index until it reaches
+    /// the sample count; a sampler that makes its points one at a time returns <paramref name="end"/>.
+    /// </summary>
+    int Prepare(int start, int end);
+
+    /// <summary>Sample <paramref name="index"/> of every lane's pixel, as offsets in [0, 1)² inside the pixel; <paramref name="index"/> must be in the range <see cref="Prepare"/> made ready last.</summary>
     void Sample(int index, out TL sx, out TL sy);
 }
 
@@ -52,6 +60,9 @@ internal struct JitteredLanes<TL>(JitteredSampler sampler) : ILaneSampler<TL>
     public void BeginPacket(int x0, int row) => _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly int Prepare(int start, int end) => end;
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
         TL h1 = LaneHash.SampleHash(_keys, index);
@@ -85,6 +96,9 @@ internal struct RandomLanes<TL>(RandomSampler sampler) : ILaneSampler<TL>
     public void BeginPacket(int x0, int row) => _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly int Prepare(int start, int end) => end;
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
         TL h1 = LaneHash.SampleHash(_keys, index);
@@ -103,6 +117,9 @@ internal readonly struct RegularLanes<TL>(RegularSampler sampler) : ILaneSampler
     public void BeginPacket(int x0, int row)
     {
     }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public int Prepare(int start, int end) => end;
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void Sample(int index, out TL sx, out TL sy)
@@ -153,6 +170,9 @@ internal readonly struct BufferedLanes<TL>(IPixelSampler sampler) : ILaneSampler
             }
         }
     }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public int Prepare(int start, int end) => end;
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void Sample(int index, out TL sx, out TL sy)

@@ -95,61 +95,65 @@ internal static class PacketKernel
         (TL backgroundRed, TL backgroundGreen, TL backgroundBlue) = (TL.Broadcast(background.X), TL.Broadcast(background.Y), TL.Broadcast(background.Z));
         TL accumulatedRed = default, accumulatedGreen = default, accumulatedBlue = default;
         uint retraced = 0;
-        for (int index = 0; index < samplesPerPixel; index++)
+        for (int start = 0, end; start < samplesPerPixel; start = end)
         {
-            sampler.Sample(index, out TL sx, out TL sy);
-            TL alpha = WindowMapping.Alpha(sx, invWidth, left);
-            TL beta = WindowMapping.Beta(sy, invHeight, rowTop);
-            TP.GetRays(window, alpha, beta, out Lanes3<TL> origin, out Lanes3<TL> ray);
-            (TL dx, TL dy, TL dz) = (ray.X, ray.Y, ray.Z);
-            TL dd = TL.MultiplyAdd(dx, dx, TL.MultiplyAdd(dy, dy, dz * dz));
-            TL rdd = one / dd;
-            TL nearest = TL.Broadcast(float.NegativeInfinity);  // −t of the nearest hit so far (kept negated: saves a negation per sphere)
-            TL red = backgroundRed, green = backgroundGreen, blue = backgroundBlue;
-            TL closest = TL.Broadcast(float.PositiveInfinity);   // the smallest |Δ| / bound over the spheres
-            TL unsure = default;
-            TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
-            foreach (ref readonly SphereConstants sphere in spheres)
+            end = sampler.Prepare(start, samplesPerPixel);
+            for (int index = start; index < end; index++)
             {
-                TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
-                TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
-                TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
-                TL negatedT = LaneSphere.NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(sphere.RadiusSquared), out TL disc);
-                TL hit = TL.LessThan(nearest, negatedT);                             // t < best (false for NaN)
-                closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
-                if (checkOrder)
+                sampler.Sample(index, out TL sx, out TL sy);
+                TL alpha = WindowMapping.Alpha(sx, invWidth, left);
+                TL beta = WindowMapping.Beta(sy, invHeight, rowTop);
+                TP.GetRays(window, alpha, beta, out Lanes3<TL> origin, out Lanes3<TL> ray);
+                (TL dx, TL dy, TL dz) = (ray.X, ray.Y, ray.Z);
+                TL dd = TL.MultiplyAdd(dx, dx, TL.MultiplyAdd(dy, dy, dz * dz));
+                TL rdd = one / dd;
+                TL nearest = TL.Broadcast(float.NegativeInfinity);  // −t of the nearest hit so far (kept negated: saves a negation per sphere)
+                TL red = backgroundRed, green = backgroundGreen, blue = backgroundBlue;
+                TL closest = TL.Broadcast(float.PositiveInfinity);   // the smallest |Δ| / bound over the spheres
+                TL unsure = default;
+                TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
+                foreach (ref readonly SphereConstants sphere in spheres)
                 {
-                    unsure |= hit & TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
+                    TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
+                    TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
+                    TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
+                    TL negatedT = LaneSphere.NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(sphere.RadiusSquared), out TL disc);
+                    TL hit = TL.LessThan(nearest, negatedT);                             // t < best (false for NaN)
+                    closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
+                    if (checkOrder)
+                    {
+                        unsure |= hit & TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
+                    }
+
+                    nearest = TL.Select(hit, negatedT, nearest);
+                    red = TL.Select(hit, TL.Broadcast(sphere.Colour.X), red);
+                    green = TL.Select(hit, TL.Broadcast(sphere.Colour.Y), green);
+                    blue = TL.Select(hit, TL.Broadcast(sphere.Colour.Z), blue);
                 }
 
-                nearest = TL.Select(hit, negatedT, nearest);
-                red = TL.Select(hit, TL.Broadcast(sphere.Colour.X), red);
-                green = TL.Select(hit, TL.Broadcast(sphere.Colour.Y), green);
-                blue = TL.Select(hit, TL.Broadcast(sphere.Colour.Z), blue);
-            }
-
-            // The colour of the nearest sphere hit in each lane, or the background. Uncertain lanes: the fast
-            // pass only notes them (a call here would make the JIT spill every register around it on each
-            // sample); the careful pass traces them again in double.
-            uint uncertain = TL.MaskBits(unsure | TL.LessThanOrEqual(closest, one));
-            if (TMode.Retraces)
-            {
-                if (uncertain != 0)
+                // The colour of the nearest sphere hit in each lane, or the background. Uncertain lanes: the fast
+                // pass only notes them (a call here would make the JIT spill every register around it on each
+                // sample); the careful pass traces them again in double.
+                uint uncertain = TL.MaskBits(unsure | TL.LessThanOrEqual(closest, one));
+                if (TMode.Retraces)
                 {
-                    LaneColour<TL> exact = Retrace<TL, TP>(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertain));
-                    (red, green, blue) = (exact.R, exact.G, exact.B);
-                    retraced |= exact.Unsure;
-                    retracedCount += BitOperations.PopCount(exact.Unsure);
+                    if (uncertain != 0)
+                    {
+                        LaneColour<TL> exact = Retrace<TL, TP>(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertain));
+                        (red, green, blue) = (exact.R, exact.G, exact.B);
+                        retraced |= exact.Unsure;
+                        retracedCount += BitOperations.PopCount(exact.Unsure);
+                    }
                 }
-            }
-            else
-            {
-                retraced |= uncertain;
-            }
+                else
+                {
+                    retraced |= uncertain;
+                }
 
-            accumulatedRed += red;
-            accumulatedGreen += green;
-            accumulatedBlue += blue;
+                accumulatedRed += red;
+                accumulatedGreen += green;
+                accumulatedBlue += blue;
+            }
         }
 
         return new LaneColour<TL>(accumulatedRed, accumulatedGreen, accumulatedBlue, retraced);

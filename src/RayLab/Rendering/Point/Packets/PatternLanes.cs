@@ -50,25 +50,59 @@ internal struct LanePermutation<TL>
     }
 
     /// <summary>
-    /// Element <paramref name="i"/> of each lane's permutation, bit for bit the scalar one: Kensler's cycle walking
-    /// as a loop that runs until every lane has left the range [l, w], lanes that are done kept as they are.
+    /// Element <paramref name="i"/> of each lane's permutation, bit for bit the scalar one. With l a power of two
+    /// one round always lands below l and this is inlined; otherwise it calls <see cref="Walk"/>.
     /// </summary>
     /// <param name="i">Each lane's position, 0 ≤ i &lt; l.</param>
     /// <param name="length">The lengths l (all lanes equal, l ≤ 2³⁰).</param>
-    /// <remarks>A call of its own: inlined two or three times into a sampler it would use up the JIT's inlining budget.</remarks>
-    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly TL Element(TL i, in LaneLength<TL> length)
     {
-        TL w = length.Mask, last = length.Last;
-        TL v;
         if (length.IsPowerOfTwo)
         {
-            // w = l − 1: one round always lands below l, and the rotation wraps with the mask.
-            v = Round(i, w);
-            return TL.AddBits(v, _rotation) & w;
+            // w = l − 1: the rotation wraps with the mask.
+            TL w = length.Mask;
+            return TL.AddBits(Round(i, w), _rotation) & w;
         }
 
-        v = i;
+        return Walk(i, length);
+    }
+
+    /// <summary>
+    /// <see cref="Element"/> of two permutations at once. Each round is a chain of dependent multiplies, so its
+    /// latency, not its instruction count, sets the time; two independent chains side by side overlap. With both
+    /// lengths powers of two (one round each) the two chains are written out here; otherwise each is an
+    /// <see cref="Element"/>.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static (TL A, TL B) Pair(in LanePermutation<TL> a, TL ia, in LaneLength<TL> la, in LanePermutation<TL> b, TL ib, in LaneLength<TL> lb)
+    {
+        if (la.IsPowerOfTwo && lb.IsPowerOfTwo)
+        {
+            TL wa = la.Mask, wb = lb.Mask;
+            TL va = a.Round(ia, wa);
+            TL vb = b.Round(ib, wb);
+            return (TL.AddBits(va, a._rotation) & wa, TL.AddBits(vb, b._rotation) & wb);
+        }
+
+        return Apart(a, ia, la, b, ib, lb);
+    }
+
+    /// <summary><see cref="Pair"/> when a length is not a power of two: two <see cref="Element"/>s, in a call of its own (inlined, the JIT's inlining budget runs out).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    private static (TL A, TL B) Apart(in LanePermutation<TL> a, TL ia, in LaneLength<TL> la, in LanePermutation<TL> b, TL ib, in LaneLength<TL> lb) =>
+        (a.Element(ia, la), b.Element(ib, lb));
+
+    /// <summary>
+    /// Kensler's cycle walking for a length that is not a power of two: a loop that runs until every lane has left
+    /// the range [l, w], lanes that are done kept as they are.
+    /// </summary>
+    /// <remarks>A call of its own: inlined into a sampler's stage beside the power-of-two rounds it would use up the JIT's inlining budget.</remarks>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    private readonly TL Walk(TL i, in LaneLength<TL> length)
+    {
+        TL w = length.Mask, last = length.Last;
+        TL v = i;
         TL pending = TL.BroadcastBits(uint.MaxValue);
         do
         {
@@ -80,26 +114,6 @@ internal struct LanePermutation<TL>
 
         TL rotated = TL.AddBits(v, _rotation);
         return TL.Select(TL.LessThanBits(last, rotated), TL.SubtractBits(rotated, length.Length), rotated);
-    }
-
-    /// <summary>
-    /// <see cref="Element"/> of two permutations at once. Each round is a chain of dependent multiplies, so its
-    /// latency, not its instruction count, sets the time; two independent chains side by side overlap. With both
-    /// lengths powers of two (one round each) the two chains are written out here; otherwise each is an
-    /// <see cref="Element"/> call.
-    /// </summary>
-    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
-    public static (TL A, TL B) Pair(in LanePermutation<TL> a, TL ia, in LaneLength<TL> la, in LanePermutation<TL> b, TL ib, in LaneLength<TL> lb)
-    {
-        if (la.IsPowerOfTwo && lb.IsPowerOfTwo)
-        {
-            TL wa = la.Mask, wb = lb.Mask;
-            TL va = a.Round(ia, wa);
-            TL vb = b.Round(ib, wb);
-            return (TL.AddBits(va, a._rotation) & wa, TL.AddBits(vb, b._rotation) & wb);
-        }
-
-        return (a.Element(ia, la), b.Element(ib, lb));
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -271,9 +285,10 @@ internal readonly struct ShiftFormula(double q) : IDoubleFormula
 /// jitter is the counter hash in SIMD. Each point is the scalar sampler's float: with a power-of-two count the cell
 /// formula's double value is exact and one float rounding gives it; otherwise it runs in double.
 /// </summary>
-internal struct NRooksLanes<TL> : ILaneSampler<TL>
+internal struct NRooksLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
 {
+    private readonly float[] _block = PointBlock.Create<TL>();
     private readonly uint _salt;
     private readonly LaneLength<TL> _length;
     private readonly CellFormula _cell;
@@ -304,13 +319,34 @@ internal struct NRooksLanes<TL> : ILaneSampler<TL>
     }
 
     /// <inheritdoc />
-    /// <remarks>Not inlined: inside the kernel's loop it would use up the JIT's inlining budget, and the ray's own lane operations would become calls.</remarks>
-    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
-    public readonly void Sample(int index, out TL sx, out TL sy)
+    public int Prepare(int start, int end) => PointBlock.Fill<TL, NRooksLanes<TL>>(ref this, _block, start, end);
+
+    /// <inheritdoc />
+    public static bool HasMiddle => false;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Sample(int index, out TL sx, out TL sy) => PointBlock.Read(_block, index, out sx, out sy);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void First(int index, out TL a, out TL b, out TL c)
     {
         TL i = TL.BroadcastBits((uint)index);
-        (TL columnBits, TL rowBits) = LanePermutation<TL>.Pair(_columns, i, _length, _rows, i, _length);
-        TL column = TL.BitsToFloat(columnBits), row = TL.BitsToFloat(rowBits);
+        (a, b) = LanePermutation<TL>.Pair(_columns, i, _length, _rows, i, _length);
+        c = default;
+    }
+
+    /// <inheritdoc />
+    public readonly void Middle(int index, ref TL a, ref TL b, ref TL c)
+    {
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy)
+    {
+        TL column = TL.BitsToFloat(a), row = TL.BitsToFloat(b);
         TL h1 = LaneHash.SampleHash(_keys, index);
         TL h2 = TL.Hash(h1);
         if (_exactInFloat)
@@ -333,9 +369,10 @@ internal struct NRooksLanes<TL> : ILaneSampler<TL>
 /// pattern numbers once per packet and their elements walk in SIMD. Each point is the scalar sampler's float: with
 /// n a power of two the formula's double value is exact and one float rounding gives it; otherwise it runs in double.
 /// </summary>
-internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
+internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
 {
+    private readonly float[] _block = PointBlock.Create<TL>();
     private const uint ColumnSalt = 0x2f5a1c37u;
     private const uint RowSalt = 0xc13fa9a9u;
 
@@ -383,14 +420,36 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
     }
 
     /// <inheritdoc />
-    /// <remarks>Not inlined: inside the kernel's loop it would use up the JIT's inlining budget, and the ray's own lane operations would become calls.</remarks>
-    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
-    public readonly void Sample(int index, out TL sx, out TL sy)
+    public int Prepare(int start, int end) => PointBlock.Fill<TL, MultiJitteredLanes<TL>>(ref this, _block, start, end);
+
+    /// <inheritdoc />
+    public static bool HasMiddle => false;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Sample(int index, out TL sx, out TL sy) => PointBlock.Read(_block, index, out sx, out sy);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void First(int index, out TL a, out TL b, out TL c)
     {
         (int column, int row) = _cells[index];
-        (TL subColumnBits, TL subRowBits) = LanePermutation<TL>.Pair(
+        (a, b) = LanePermutation<TL>.Pair(
             _columns[column], TL.BroadcastBits((uint)row), _length, _rows[row], TL.BroadcastBits((uint)column), _length);
-        TL subColumn = TL.BitsToFloat(subColumnBits), subRow = TL.BitsToFloat(subRowBits);
+        c = default;
+    }
+
+    /// <inheritdoc />
+    public readonly void Middle(int index, ref TL a, ref TL b, ref TL c)
+    {
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy)
+    {
+        (int column, int row) = _cells[index];
+        TL subColumn = TL.BitsToFloat(a), subRow = TL.BitsToFloat(b);
         TL h1 = LaneHash.SampleHash(_keys, index);
         TL h2 = TL.Hash(h1);
         if (_exactInFloat)
@@ -413,9 +472,10 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>
 /// <c>randfloat</c> hash runs in SIMD, and the cell formulas run in double (the jitter is a rounded double, so
 /// only double arithmetic gives the scalar sampler's floats).
 /// </summary>
-internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
+internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
 {
+    private readonly float[] _block = PointBlock.Create<TL>();
     private readonly uint _salt;
     private readonly LaneLength<TL> _all, _columns, _rows;
     private readonly TL _inverseColumns, _columnCount;
@@ -455,11 +515,29 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
     }
 
     /// <inheritdoc />
-    /// <remarks>Not inlined: inside the kernel's loop it would use up the JIT's inlining budget, and the ray's own lane operations would become calls.</remarks>
-    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
-    public readonly void Sample(int index, out TL sx, out TL sy)
+    public int Prepare(int start, int end) => PointBlock.Fill<TL, CorrelatedMultiJitteredLanes<TL>>(ref this, _block, start, end);
+
+    /// <inheritdoc />
+    public static bool HasMiddle => true;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Sample(int index, out TL sx, out TL sy) => PointBlock.Read(_block, index, out sx, out sy);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void First(int index, out TL a, out TL b, out TL c)
     {
-        TL s = _index.Element(TL.BroadcastBits((uint)index), _all);
+        a = _index.Element(TL.BroadcastBits((uint)index), _all);
+        b = default;
+        c = default;
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Middle(int index, ref TL a, ref TL b, ref TL c)
+    {
+        TL s = a;
         TL quotient, remainder;
         if (_columns.IsPowerOfTwo)
         {
@@ -471,8 +549,15 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>
             (quotient, remainder) = DivideByColumns(s);
         }
 
-        (TL columnBits, TL rowBits) = LanePermutation<TL>.Pair(_column, remainder, _columns, _row, quotient, _rows);
-        TL column = TL.BitsToFloat(columnBits), row = TL.BitsToFloat(rowBits);
+        (b, c) = LanePermutation<TL>.Pair(_column, remainder, _columns, _row, quotient, _rows);
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy)
+    {
+        TL s = a;
+        TL column = TL.BitsToFloat(b), row = TL.BitsToFloat(c);
         TL jx = RandomBits(s, _jx, _jxMultiplier);
         TL jy = RandomBits(s, _jy, _jyMultiplier);
         sx = TL.InDouble(_x, row, TL.Top24(jx), column, LowByte(jx));
@@ -551,6 +636,10 @@ internal struct HammersleyLanes<TL> : ILaneSampler<TL>
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly int Prepare(int start, int end) => end;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Sample(int index, out TL sx, out TL sy)
     {
         sx = TL.InDouble(new ShiftFormula(_unshifted[2 * index]), _shiftX, default, default, default);
@@ -565,9 +654,10 @@ internal struct HammersleyLanes<TL> : ILaneSampler<TL>
 /// the index's bits (the Pascal matrix mod 2: C(k, j) is odd exactly when j's bits are a subset of k's), five
 /// shift–mask–xor steps.
 /// </summary>
-internal struct SobolLanes<TL> : ILaneSampler<TL>
+internal struct SobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
 {
+    private readonly float[] _block = PointBlock.Create<TL>();
     private const uint IndexSalt = 0x1b873593u;
 
     private readonly uint _salt;
@@ -586,12 +676,35 @@ internal struct SobolLanes<TL> : ILaneSampler<TL>
     }
 
     /// <inheritdoc />
-    /// <remarks>Not inlined: inside the kernel's loop it would use up the JIT's inlining budget, and the ray's own lane operations would become calls.</remarks>
-    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
-    public readonly void Sample(int index, out TL sx, out TL sy)
+    public int Prepare(int start, int end) => PointBlock.Fill<TL, SobolLanes<TL>>(ref this, _block, start, end);
+
+    /// <inheritdoc />
+    public static bool HasMiddle => false;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Sample(int index, out TL sx, out TL sy) => PointBlock.Read(_block, index, out sx, out sy);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void First(int index, out TL a, out TL b, out TL c)
     {
         // i = NUS(index) = R(LK(R(index) + seed)), R the bit reversal, LK the Laine–Karras mix.
-        TL i = Reverse(LaineKarras(TL.AddBits(TL.BroadcastBits(LowDiscrepancy.ReverseBits((uint)index)), _indexSeed)));
+        a = Reverse(LaineKarras(TL.AddBits(TL.BroadcastBits(LowDiscrepancy.ReverseBits((uint)index)), _indexSeed)));
+        b = default;
+        c = default;
+    }
+
+    /// <inheritdoc />
+    public readonly void Middle(int index, ref TL a, ref TL b, ref TL c)
+    {
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy)
+    {
+        TL i = a;
 
         // NUS(R(i)) = R(LK(i + seed)); NUS(D₁(i)) = R(LK(R(D₁(i)) + seed)) with R(D₁(i)) the superset XOR.
         sx = TL.ToUnit(Reverse(LaineKarras(TL.AddBits(i, _xSeed))));
