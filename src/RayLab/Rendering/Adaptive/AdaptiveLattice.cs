@@ -146,18 +146,11 @@ internal sealed class AdaptiveLattice
     /// <summary>Rays traced for the pixel corners.</summary>
     public long CornerRays => _corners.LongLength;
 
-    /// <summary>
-    /// True when pixel (<paramref name="x"/>, <paramref name="y"/>)'s four corners hit the same thing: a flat pixel
-    /// (when the sampler does not insist on centres), whose value is that thing's, <paramref name="pixel"/> in 8 bits.
-    /// </summary>
-    public bool TryFlat(int x, int y, out Rgb24 pixel)
-    {
-        int stride = _plane.Width + 1;
-        int top = (y * stride) + x, bottom = top + stride;
-        int id = _corners[top];
-        pixel = _levels[id];
-        return _corners[top + 1] == id && _corners[bottom] == id && _corners[bottom + 1] == id;
-    }
+    /// <summary>What the pixel corners on horizontal pixel line <paramref name="j"/> (0 the top edge) hit, W + 1 entries.</summary>
+    public ReadOnlySpan<int> CornerLine(int j) => _corners.AsSpan(j * (_plane.Width + 1), _plane.Width + 1);
+
+    /// <summary>The 8-bit colour of a flat pixel all of whose corners hit <paramref name="id"/>.</summary>
+    public Rgb24 Level(int id) => _levels[id];
 
     /// <summary>
     /// Points on horizontal pixel lines (other than corners) that more than one row traced: each row's sorted list
