@@ -273,33 +273,38 @@ internal sealed class AdaptiveLattice
         }
 
         /// <summary>
-        /// True when every minimum-depth point of pixel <paramref name="x"/> hit the same thing: no square is refined
-        /// further, so its value and its rays are those of that thing alone, worked out once per thread.
+        /// How many pixels from <paramref name="x"/> on have every minimum-depth point hit the same thing,
+        /// <paramref name="id"/> (what the first one's top-left point hit): no square of theirs is refined further, so
+        /// their value and rays are those of that thing alone (<see cref="Uniform"/>). The pixel after the run is not
+        /// uniform.
         /// </summary>
-        public readonly bool TryUniform(AdaptiveSampler sampler, int x, int row, out Intensity value, out double samples)
+        public readonly int UniformRun(int x, out int id)
         {
             AdaptiveLattice lattice = _lattice;
             int m = lattice.DenseDepth, stride = lattice.DenseStride, first = x << m, across = 1 << m;
             int[] dense = _buffers.Dense;
-            int id = dense[first];
-            for (int k = 0, offset = first; k <= 2 << m; k++, offset += stride)
+            id = dense[first];
+            int run = lattice._plane.Width - x;
+            for (int k = 0, offset = first; k <= 2 << m && run > 0; k++, offset += stride)
             {
-                ReadOnlySpan<int> line = dense.AsSpan(offset, (k & 1) == 0 ? across + 1 : across);
-                if (line.IndexOfAnyExcept(id) >= 0)
+                // Even lines: pixel x + i needs its across + 1 corners from first + i·across equal; odd lines: its
+                // across centres from there. Only the part of the line the run so far covers is looked at.
+                bool even = (k & 1) == 0;
+                ReadOnlySpan<int> line = dense.AsSpan(offset, (run * across) + (even ? 1 : 0));
+                int same = line.IndexOfAnyExcept(id);
+                if (same >= 0)
                 {
-                    value = default;
-                    samples = 0;
-                    return false;
+                    run = even ? (same - 1) / across : same / across;
                 }
             }
 
-            return Uniform(sampler, id, x, row, out value, out samples);
+            return run;
         }
 
         /// <summary>
         /// With <see cref="CentreLine"/>: true when pixel <paramref name="x"/>'s four corners and its centre hit the same
         /// thing, so no quadrant is refined; its value and rays are then worked out once per thread, as for
-        /// <see cref="TryUniform"/>.
+        /// <see cref="UniformRun"/>.
         /// </summary>
         public readonly bool TryUniformWithCentre(AdaptiveSampler sampler, int x, int row, out Intensity value, out double samples)
         {
@@ -314,10 +319,12 @@ internal sealed class AdaptiveLattice
                 return false;
             }
 
-            return Uniform(sampler, id, x, row, out value, out samples);
+            Uniform(sampler, id, x, row, out value, out samples);
+            return true;
         }
 
-        private readonly bool Uniform(AdaptiveSampler sampler, int id, int x, int row, out Intensity value, out double samples)
+        /// <summary>The value and rays of a pixel every traced point of which hit <paramref name="id"/>, worked out once per thread and colour.</summary>
+        public readonly void Uniform(AdaptiveSampler sampler, int id, int x, int row, out Intensity value, out double samples)
         {
             if (!_buffers.UniformKnown[id])
             {
@@ -329,7 +336,6 @@ internal sealed class AdaptiveLattice
 
             value = _buffers.UniformValue[id];
             samples = _buffers.UniformSamples[id];
-            return true;
         }
 
         /// <summary>Starts pixel (<paramref name="x"/>, <paramref name="row"/>).</summary>

@@ -111,14 +111,34 @@ internal static class AdaptiveRenderer
                     }
                 }
 
-                // A pixel whose corners disagree, or one the guard stopped a run at (or any pixel, with a minimum depth
-                // or the quincunx): the recursion decides. With a minimum depth (its band of points) or the quincunx
-                // (corners and centre): a pixel whose traced points all agree is refined no further, and its value is
-                // known per colour.
+                else if (dense)
+                {
+                    // With a minimum depth: the run of pixels from x whose band points all hit one thing is refined no
+                    // further; the pixel after the run is not uniform.
+                    int run = source.UniformRun(x, out int id);
+                    if (run > 0)
+                    {
+                        source.Uniform(sampler, id, x, row, out Intensity uniform, out double charged);
+                        pixels.Slice(x, run).Fill(Rgb24.FromIntensity(uniform));
+                        if (!counts.IsEmpty)
+                        {
+                            counts.Slice(x, run).Fill((float)charged);
+                        }
+
+                        x += run;
+                        if (x == pixels.Length)
+                        {
+                            break;
+                        }
+                    }
+                }
+
+                // A pixel whose corners disagree, one the guard stopped a run at, one whose band points disagree, or
+                // any pixel with the quincunx: the recursion decides. With the quincunx (corners and centre): a pixel
+                // whose traced points all agree is refined no further, and its value is known per colour.
                 Intensity value;
                 double samples;
-                if (!(dense && source.TryUniform(sampler, x, row, out value, out samples))
-                    && !(centres && source.TryUniformWithCentre(sampler, x, row, out value, out samples)))
+                if (!(centres && source.TryUniformWithCentre(sampler, x, row, out value, out samples)))
                 {
                     source.NextPixel(x, row);
                     value = AdaptivePixel.Evaluate(sampler, ref source, x, row, out samples);
