@@ -91,8 +91,8 @@ internal sealed class AdaptiveLattice
 
     /// <summary>
     /// Rays for the minimum-depth points beyond the pixel corners: the corners of the depth-m squares,
-    /// (W·2^m + 1)(H·2^m + 1) less the pixel corners, and their centres, W·H·4^m, each counted once although the
-    /// lines between two rows of pixels are traced by both.
+    /// (W·2^m + 1)(H·2^m + 1) less the pixel corners, and their centres, W·H·4^m, each counted once although a
+    /// line between two rows of pixels is traced by both when they are on different threads.
     /// </summary>
     public long DenseRays => DenseDepth == 0 ? 0
         : (((_plane.Width * (1L << DenseDepth)) + 1) * ((_plane.Height * (1L << DenseDepth)) + 1)) - CornerRays
@@ -256,15 +256,29 @@ internal sealed class AdaptiveLattice
             }
 
             long g = lattice._size >> (m + 1), y0 = row * lattice._size;
-            int stride = lattice.DenseStride;
+            int stride = lattice.DenseStride, last = 2 << m, first = 0;
             long again = 0;
-            for (int k = 0; k <= 2 << m; k++)
+            if (row > 0 && _buffers.DenseRow == row - 1)
+            {
+                // This thread's last row was the one above: its bottom line is this row's top line, taken rather than
+                // traced again (its points traced again in double counted as if it were, so the count does not
+                // depend on which thread took which row).
+                _buffers.Dense.AsSpan(last * stride, stride).CopyTo(_buffers.Dense);
+                again += _buffers.BottomLineRetraced;
+                first = 1;
+            }
+
+            for (int k = first; k <= last; k++)
             {
                 // Even lines: the depth-m squares' corners, every 2g; odd lines: their centres, between them.
-                again += (k & 1) == 0
+                int traced = (k & 1) == 0
                     ? lattice.TraceLine(y0 + (k * g), 0, 2 * g, _buffers.Dense.AsSpan(k * stride, stride))
                     : lattice.TraceLine(y0 + (k * g), g, 2 * g, _buffers.Dense.AsSpan(k * stride, stride - 1));
+                again += traced;
+                _buffers.BottomLineRetraced = traced;
             }
+
+            _buffers.DenseRow = row;
 
             if (again != 0)
             {
@@ -498,6 +512,12 @@ internal sealed class AdaptiveLattice
             public List<long> Bottom { get; } = [];
 
             public uint Stamp { get; set; }
+
+            /// <summary>The row whose band of minimum-depth points <see cref="Dense"/> holds (−1: none yet).</summary>
+            public int DenseRow { get; set; } = -1;
+
+            /// <summary>Points of that band's bottom line traced again in double.</summary>
+            public int BottomLineRetraced { get; set; }
         }
     }
 }
