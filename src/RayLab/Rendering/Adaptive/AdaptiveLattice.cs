@@ -91,8 +91,8 @@ internal sealed class AdaptiveLattice
 
     /// <summary>
     /// Rays for the minimum-depth points beyond the pixel corners: the corners of the depth-m squares,
-    /// (W·2^m + 1)(H·2^m + 1) less the pixel corners, and their centres, W·H·4^m, each counted once although the
-    /// lines between two rows of pixels are traced by both.
+    /// (W·2^m + 1)(H·2^m + 1) less the pixel corners, and their centres, W·H·4^m, each counted once although a
+    /// line between two rows of pixels is traced by both when they are on different threads.
     /// </summary>
     public long DenseRays => DenseDepth == 0 ? 0
         : (((_plane.Width * (1L << DenseDepth)) + 1) * ((_plane.Height * (1L << DenseDepth)) + 1)) - CornerRays
@@ -146,18 +146,11 @@ internal sealed class AdaptiveLattice
     /// <summary>Rays traced for the pixel corners.</summary>
     public long CornerRays => _corners.LongLength;
 
-    /// <summary>
-    /// True when pixel (<paramref name="x"/>, <paramref name="y"/>)'s four corners hit the same thing: a flat pixel
-    /// (when the sampler does not insist on centres), whose value is that thing's, <paramref name="pixel"/> in 8 bits.
-    /// </summary>
-    public bool TryFlat(int x, int y, out Rgb24 pixel)
-    {
-        int stride = _plane.Width + 1;
-        int top = (y * stride) + x, bottom = top + stride;
-        int id = _corners[top];
-        pixel = _levels[id];
-        return _corners[top + 1] == id && _corners[bottom] == id && _corners[bottom + 1] == id;
-    }
+    /// <summary>What the pixel corners on horizontal pixel line <paramref name="j"/> (0 the top edge) hit, W + 1 entries.</summary>
+    public ReadOnlySpan<int> CornerLine(int j) => _corners.AsSpan(j * (_plane.Width + 1), _plane.Width + 1);
+
+    /// <summary>The 8-bit colour of a flat pixel all of whose corners hit <paramref name="id"/>.</summary>
+    public Rgb24 Level(int id) => _levels[id];
 
     /// <summary>
     /// Points on horizontal pixel lines (other than corners) that more than one row traced: each row's sorted list
@@ -263,15 +256,29 @@ internal sealed class AdaptiveLattice
             }
 
             long g = lattice._size >> (m + 1), y0 = row * lattice._size;
-            int stride = lattice.DenseStride;
+            int stride = lattice.DenseStride, last = 2 << m, first = 0;
             long again = 0;
-            for (int k = 0; k <= 2 << m; k++)
+            if (row > 0 && _buffers.DenseRow == row - 1)
+            {
+                // This thread's last row was the one above: its bottom line is this row's top line, taken rather than
+                // traced again (its points traced again in double counted as if it were, so the count does not
+                // depend on which thread took which row).
+                _buffers.Dense.AsSpan(last * stride, stride).CopyTo(_buffers.Dense);
+                again += _buffers.BottomLineRetraced;
+                first = 1;
+            }
+
+            for (int k = first; k <= last; k++)
             {
                 // Even lines: the depth-m squares' corners, every 2g; odd lines: their centres, between them.
-                again += (k & 1) == 0
+                int traced = (k & 1) == 0
                     ? lattice.TraceLine(y0 + (k * g), 0, 2 * g, _buffers.Dense.AsSpan(k * stride, stride))
                     : lattice.TraceLine(y0 + (k * g), g, 2 * g, _buffers.Dense.AsSpan(k * stride, stride - 1));
+                again += traced;
+                _buffers.BottomLineRetraced = traced;
             }
+
+            _buffers.DenseRow = row;
 
             if (again != 0)
             {
@@ -280,33 +287,38 @@ internal sealed class AdaptiveLattice
         }
 
         /// <summary>
-        /// True when every minimum-depth point of pixel <paramref name="x"/> hit the same thing: no square is refined
-        /// further, so its value and its rays are those of that thing alone, worked out once per thread.
+        /// How many pixels from <paramref name="x"/> on have every minimum-depth point hit the same thing,
+        /// <paramref name="id"/> (what the first one's top-left point hit): no square of theirs is refined further, so
+        /// their value and rays are those of that thing alone (<see cref="Uniform"/>). The pixel after the run is not
+        /// uniform.
         /// </summary>
-        public readonly bool TryUniform(AdaptiveSampler sampler, int x, int row, out Intensity value, out double samples)
+        public readonly int UniformRun(int x, out int id)
         {
             AdaptiveLattice lattice = _lattice;
             int m = lattice.DenseDepth, stride = lattice.DenseStride, first = x << m, across = 1 << m;
             int[] dense = _buffers.Dense;
-            int id = dense[first];
-            for (int k = 0, offset = first; k <= 2 << m; k++, offset += stride)
+            id = dense[first];
+            int run = lattice._plane.Width - x;
+            for (int k = 0, offset = first; k <= 2 << m && run > 0; k++, offset += stride)
             {
-                ReadOnlySpan<int> line = dense.AsSpan(offset, (k & 1) == 0 ? across + 1 : across);
-                if (line.IndexOfAnyExcept(id) >= 0)
+                // Even lines: pixel x + i needs its across + 1 corners from first + i·across equal; odd lines: its
+                // across centres from there. Only the part of the line the run so far covers is looked at.
+                bool even = (k & 1) == 0;
+                ReadOnlySpan<int> line = dense.AsSpan(offset, (run * across) + (even ? 1 : 0));
+                int same = line.IndexOfAnyExcept(id);
+                if (same >= 0)
                 {
-                    value = default;
-                    samples = 0;
-                    return false;
+                    run = even ? (same - 1) / across : same / across;
                 }
             }
 
-            return Uniform(sampler, id, x, row, out value, out samples);
+            return run;
         }
 
         /// <summary>
         /// With <see cref="CentreLine"/>: true when pixel <paramref name="x"/>'s four corners and its centre hit the same
         /// thing, so no quadrant is refined; its value and rays are then worked out once per thread, as for
-        /// <see cref="TryUniform"/>.
+        /// <see cref="UniformRun"/>.
         /// </summary>
         public readonly bool TryUniformWithCentre(AdaptiveSampler sampler, int x, int row, out Intensity value, out double samples)
         {
@@ -321,10 +333,12 @@ internal sealed class AdaptiveLattice
                 return false;
             }
 
-            return Uniform(sampler, id, x, row, out value, out samples);
+            Uniform(sampler, id, x, row, out value, out samples);
+            return true;
         }
 
-        private readonly bool Uniform(AdaptiveSampler sampler, int id, int x, int row, out Intensity value, out double samples)
+        /// <summary>The value and rays of a pixel every traced point of which hit <paramref name="id"/>, worked out once per thread and colour.</summary>
+        public readonly void Uniform(AdaptiveSampler sampler, int id, int x, int row, out Intensity value, out double samples)
         {
             if (!_buffers.UniformKnown[id])
             {
@@ -336,7 +350,6 @@ internal sealed class AdaptiveLattice
 
             value = _buffers.UniformValue[id];
             samples = _buffers.UniformSamples[id];
-            return true;
         }
 
         /// <summary>Starts pixel (<paramref name="x"/>, <paramref name="row"/>).</summary>
@@ -499,6 +512,12 @@ internal sealed class AdaptiveLattice
             public List<long> Bottom { get; } = [];
 
             public uint Stamp { get; set; }
+
+            /// <summary>The row whose band of minimum-depth points <see cref="Dense"/> holds (−1: none yet).</summary>
+            public int DenseRow { get; set; } = -1;
+
+            /// <summary>Points of that band's bottom line traced again in double.</summary>
+            public int BottomLineRetraced { get; set; }
         }
     }
 }

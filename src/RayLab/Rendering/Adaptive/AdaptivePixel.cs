@@ -40,7 +40,7 @@ internal static class AdaptivePixel
             && !(sampler.Guard && source.MayCross(x0, y0, size)))
         {
             // A flat pixel: the mean of its corners, which is what the combination rule gives for any centre that
-            // agrees (exactly the corners' value when they are equal, as AdaptiveLattice.TryFlat takes it).
+            // agrees (exactly the corners' value when they are equal, as AdaptiveRenderer's runs of flat pixels take it).
             return tl == tr && tl == bl && tl == br ? tl : 0.25 * (tl + tr + bl + br);
         }
 

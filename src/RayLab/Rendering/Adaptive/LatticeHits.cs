@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Rendering.Point.Packets;
@@ -144,15 +145,20 @@ internal sealed class LatticeHits
                 }
 
                 nearest = TL.Select(hit, negatedT, nearest);
-                id = TL.Select(hit, TL.Broadcast(sphere.Id), id);
+                id = TL.Select(hit, TL.BroadcastBits(sphere.Id), id);
             }
 
             uint uncertain = TL.MaskBits(unsure | TL.LessThanOrEqual(closest, one));
-            id.Store(buffer);
+            // The indices are integer bits in the lanes: a whole packet is stored straight into the line.
             int count = Math.Min(lanes, ids.Length - k0);
-            for (int lane = 0; lane < count; lane++)
+            if (count == lanes)
             {
-                ids[k0 + lane] = (int)buffer[lane];
+                id.Store(MemoryMarshal.Cast<int, float>(ids.Slice(k0, lanes)));
+            }
+            else
+            {
+                id.Store(buffer);
+                MemoryMarshal.Cast<float, int>(buffer)[..count].CopyTo(ids[k0..]);
             }
 
             for (uint rest = uncertain & (uint)((1UL << count) - 1); rest != 0; rest &= rest - 1)
@@ -166,7 +172,7 @@ internal sealed class LatticeHits
         return retraced;
     }
 
-    /// <summary>One sphere's constants: o − C at α = β = 0, r², 1 / the error bound of Δ, and its index + 1 as a float.</summary>
+    /// <summary>One sphere's constants: o − C at α = β = 0, r², 1 / the error bound of Δ, and its index + 1.</summary>
     private readonly struct HitSphere(Double3 offset, float radiusSquared, float inverseBound, int id)
     {
         public Float3 Offset { get; } = offset;
@@ -175,6 +181,6 @@ internal sealed class LatticeHits
 
         public float InverseBound { get; } = inverseBound;
 
-        public float Id { get; } = id;
+        public uint Id { get; } = (uint)id;
     }
 }
