@@ -184,7 +184,8 @@ public static class PatternsJob
         html.Add(("Discrepancy", ["discrepancy-l2", "discrepancy-star"],
             $"How far the fraction of points in a box [0, a)×[0, b) strays from its area. The L2-star discrepancy is the root mean square "
             + $"over all such boxes, by Warnock's closed form (1972), averaged over {options.DiscrepancyRealisations} pixels; random falls as "
-            + "N^−½, the stratified and low-discrepancy sets about as N^−1 (up to a log). The star discrepancy is the worst box, found "
+            + "N^−½, and so does regular (its rows and columns line up: T² = 1/(18N) + 7/(288N²) for the n×n grid), the stratified "
+            + "and low-discrepancy sets about as N^−1 (up to a log); nrooks, stratified along each axis alone, sits between. The star discrepancy is the worst box, found "
             + "exactly (Dobkin, Eppstein and Mitchell 1996) for small N; the Koksma–Hlawka inequality bounds the integration error of a "
             + "function of bounded variation by it."));
 
