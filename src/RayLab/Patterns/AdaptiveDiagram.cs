@@ -1,0 +1,262 @@
+using RayLab.Cameras;
+using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Exact;
+
+namespace RayLab.Patterns;
+
+/// <summary>A point the lab's adaptive recursion traced in one pixel, labelled as the lab labels them.</summary>
+/// <param name="Label">A, B, C, D (the corners), E (the centre), then F, G, H, J, … in trace order (the lab skips I and O).</param>
+/// <param name="X">Offset to the right inside the pixel, 0 … 1.</param>
+/// <param name="Y">Offset downward inside the pixel, 0 … 1.</param>
+/// <param name="Value">What the ray saw.</param>
+/// <param name="Weight">The point's share of the pixel's value under the lab's combination rule (the shares add up to 1).</param>
+public sealed record AdaptivePoint(string Label, double X, double Y, Intensity Value, double Weight);
+
+/// <summary>A square of the recursion, in pixel units (x right, y down).</summary>
+/// <param name="X">Left edge.</param>
+/// <param name="Y">Top edge.</param>
+/// <param name="Size">Side.</param>
+/// <param name="Depth">0 for the pixel, 1 for its quadrants, ….</param>
+/// <param name="Refined">True when the recursion went into this square (it traced its centre).</param>
+public sealed record AdaptiveSquare(double X, double Y, double Size, int Depth, bool Refined);
+
+/// <summary>
+/// The lab's adaptive antialiasing diagram (section 4.1.4) for one pixel of a real scene: the squares the recursion
+/// made, each traced point labelled in trace order, the weight the combination rule gives it, and the pixel's value
+/// against its exact area-weighted colour. It runs the renderer's own recursion (<see cref="AdaptiveSampler"/>).
+/// </summary>
+public sealed class AdaptiveDiagram
+{
+    private AdaptiveDiagram(int px, int py, AdaptiveSampler sampler, IReadOnlyList<AdaptivePoint> points, IReadOnlyList<AdaptiveSquare> squares, Intensity value, Intensity exact)
+    {
+        PixelX = px;
+        PixelY = py;
+        Sampler = sampler;
+        Points = points;
+        Squares = squares;
+        Value = value;
+        Exact = exact;
+    }
+
+    /// <summary>The pixel's column.</summary>
+    public int PixelX { get; }
+
+    /// <summary>The pixel's row (0 at the top).</summary>
+    public int PixelY { get; }
+
+    /// <summary>The settings the recursion ran with.</summary>
+    public AdaptiveSampler Sampler { get; }
+
+    /// <summary>The traced points, in trace order.</summary>
+    public IReadOnlyList<AdaptivePoint> Points { get; }
+
+    /// <summary>Every square the recursion looked at: the pixel, and the quadrants of each refined square.</summary>
+    public IReadOnlyList<AdaptiveSquare> Squares { get; }
+
+    /// <summary>The pixel's value by the lab's rule: Σ weight × value.</summary>
+    public Intensity Value { get; }
+
+    /// <summary>The pixel's exact area-weighted colour (<see cref="ExactRenderer"/>).</summary>
+    public Intensity Exact { get; }
+
+    /// <summary>The scene inside this diagram's pixel, traced at <paramref name="resolution"/>² points (cell centres): the diagram's background.</summary>
+    /// <param name="scene">The scene the diagram was made from.</param>
+    /// <param name="camera">Its camera.</param>
+    /// <param name="width">The render's W.</param>
+    /// <param name="height">The render's H.</param>
+    /// <param name="resolution">Points per side, 1 to 4096.</param>
+    /// <returns>A <paramref name="resolution"/>² image of the pixel.</returns>
+    public Imaging.Image TraceInside(Scene scene, Camera camera, int width, int height, int resolution)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(camera);
+        ArgumentOutOfRangeException.ThrowIfLessThan(resolution, 1);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(resolution, 4096);
+        ImagePlane plane = camera.GetImagePlane(width, height);
+        var image = new Imaging.Image(resolution, resolution);
+        for (int j = 0; j < resolution; j++)
+        {
+            for (int i = 0; i < resolution; i++)
+            {
+                double sx = (i + 0.5) / resolution, sy = (j + 0.5) / resolution;
+                image.SetPixel(i, j, scene.Trace(plane.GetRay(plane.Alpha(PixelX, sx), WindowMapping.Beta(PixelY + sy, height)), plane.TMin, plane.TMax));
+            }
+        }
+
+        return image;
+    }
+
+    /// <summary>Traces pixel (<paramref name="px"/>, <paramref name="py"/>) of a W×H render.</summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="width">W.</param>
+    /// <param name="height">H.</param>
+    /// <param name="sampler">The adaptive settings.</param>
+    /// <param name="px">The pixel's column.</param>
+    /// <param name="py">The pixel's row.</param>
+    /// <returns>The diagram.</returns>
+    /// <exception cref="ArgumentException">The pixel is outside the image, or the camera's settings are invalid.</exception>
+    public static AdaptiveDiagram Trace(Scene scene, Camera camera, int width, int height, AdaptiveSampler sampler, int px, int py)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(camera);
+        ArgumentNullException.ThrowIfNull(sampler);
+        ArgumentOutOfRangeException.ThrowIfNegative(px);
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(px, width);
+        ArgumentOutOfRangeException.ThrowIfNegative(py);
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(py, height);
+        ImagePlane plane = camera.GetImagePlane(width, height);
+        Intensity exact = new ExactRenderer { MaxDegreeOfParallelism = 1 }.RenderLinear(scene, camera, width, height)[((long)py * width) + px];
+        return Build(scene, plane, sampler, px, py, exact);
+    }
+
+    /// <summary>
+    /// Finds an edge pixel for the diagram: among the pixels an edge crosses (exact value not one flat colour),
+    /// preferring those the edge cuts through the middle (two corners on each side), the one whose recursion traced
+    /// a number of points closest to <paramref name="wantedPoints"/> (the lab's example has 16, A to R), the first in
+    /// reading order on a tie.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="width">W.</param>
+    /// <param name="height">H.</param>
+    /// <param name="sampler">The adaptive settings.</param>
+    /// <param name="wantedPoints">How many traced points the diagram should show, ≥ 4.</param>
+    /// <returns>The diagram of that pixel.</returns>
+    /// <exception cref="InvalidOperationException">No edge crosses the image.</exception>
+    public static AdaptiveDiagram FindEdgePixel(Scene scene, Camera camera, int width, int height, AdaptiveSampler sampler, int wantedPoints = 16)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(camera);
+        ArgumentNullException.ThrowIfNull(sampler);
+        ImagePlane plane = camera.GetImagePlane(width, height);
+        Intensity[] exact = new ExactRenderer { MaxDegreeOfParallelism = 1 }.RenderLinear(scene, camera, width, height);
+        var colours = Enumerable.Range(-1, scene.Spheres.Count + 1).Select(scene.ColourOf).ToHashSet();
+        AdaptiveDiagram? best = null;
+        for (int i = 0; i < exact.Length; i++)
+        {
+            if (colours.Contains(exact[i]))
+            {
+                continue; // no edge inside this pixel
+            }
+
+            AdaptiveDiagram candidate = Build(scene, plane, sampler, i % width, i / width, exact[i]);
+            if (best is null || Score(candidate) < Score(best))
+            {
+                best = candidate;
+            }
+        }
+
+        return best ?? throw new InvalidOperationException("No edge crosses the image: the adaptive diagram needs an edge pixel.");
+
+        int Score(AdaptiveDiagram d)
+        {
+            // Corners A, B, C, D split two and two (an edge through the middle), else a penalty of 1000.
+            Intensity[] corners = [.. d.Points.Take(4).Select(p => p.Value)];
+            bool halves = corners.Distinct().Count() == 2 && corners.Count(c => c == corners[0]) == 2;
+            return (halves ? 0 : 1000) + Math.Abs(d.Points.Count - wantedPoints);
+        }
+    }
+
+    private static AdaptiveDiagram Build(Scene scene, ImagePlane plane, AdaptiveSampler sampler, int px, int py, Intensity exact)
+    {
+        var source = new Recorder(scene, plane, sampler);
+        AdaptivePixel.Evaluate(sampler, ref source, px, py, out _);
+        long size = source.Size, x0 = px * size, y0 = py * size;
+
+        // Weights from the squares the recursion refined: a square was refined exactly when its centre was traced.
+        var weights = new Dictionary<(long, long), double>();
+        var squares = new List<AdaptiveSquare>();
+        void Add((long, long) key, double w) => weights[key] = weights.GetValueOrDefault(key) + w;
+        void Walk(long sx, long sy, long side, int depth, double share)
+        {
+            squares.Add(new AdaptiveSquare((sx - x0) / (double)size, (sy - y0) / (double)size, side / (double)size, depth, true));
+            long h = side / 2, q = side / 4;
+            (long X, long Y, long Cx, long Cy)[] quadrants =
+                [(sx, sy, sx, sy), (sx + h, sy, sx + side, sy), (sx, sy + h, sx, sy + side), (sx + h, sy + h, sx + side, sy + side)];
+            foreach ((long qx, long qy, long cx, long cy) in quadrants)
+            {
+                if (q > 0 && source.Centres.Contains((qx + q, qy + q)))
+                {
+                    Walk(qx, qy, h, depth + 1, share / 4);
+                }
+                else
+                {
+                    squares.Add(new AdaptiveSquare((qx - x0) / (double)size, (qy - y0) / (double)size, h / (double)size, depth + 1, false));
+                    Add((cx, cy), share / 8); // ¼ of (corner + centre)/2
+                    Add((sx + h, sy + h), share / 8);
+                }
+            }
+        }
+
+        if (source.Centres.Contains((x0 + (size / 2), y0 + (size / 2))))
+        {
+            Walk(x0, y0, size, 0, 1);
+        }
+        else
+        {
+            squares.Add(new AdaptiveSquare(0, 0, 1, 0, false));
+            foreach ((long, long) corner in new[] { (x0, y0), (x0 + size, y0), (x0, y0 + size), (x0 + size, y0 + size) })
+            {
+                Add(corner, 0.25); // a flat pixel: the mean of its corners
+            }
+        }
+
+        var points = new List<AdaptivePoint>(source.Order.Count);
+        Intensity value = default;
+        for (int i = 0; i < source.Order.Count; i++)
+        {
+            ((long lx, long ly), Intensity v) = source.Order[i];
+            double w = weights.GetValueOrDefault((lx, ly));
+            value += w * v;
+            points.Add(new AdaptivePoint(Label(i), (lx - x0) / (double)size, (ly - y0) / (double)size, v, w));
+        }
+
+        return new AdaptiveDiagram(px, py, sampler, points, squares, value, exact);
+    }
+
+    /// <summary>The lab's labels: A … Z without I and O, then AA, AB, ….</summary>
+    /// <param name="index">The trace order, from 0.</param>
+    public static string Label(int index)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(index);
+        const string Letters = "ABCDEFGHJKLMNPQRSTUVWXYZ";
+        return index < Letters.Length ? Letters[index].ToString() : Label((index / Letters.Length) - 1) + Letters[index % Letters.Length];
+    }
+
+    // Traces lattice points straight through the camera, each once, and remembers the order.
+    private struct Recorder(Scene scene, ImagePlane plane, AdaptiveSampler sampler) : ILatticeSource
+    {
+        public readonly long Size = 1L << (sampler.MaxDepth + 1);
+        private readonly SilhouetteGuard? _guard = sampler.Guard ? new SilhouetteGuard(scene, plane, 1L << (sampler.MaxDepth + 1)) : null;
+        public readonly List<((long X, long Y) Point, Intensity Value)> Order = [];
+        public readonly HashSet<(long, long)> Centres = [];
+        private readonly Dictionary<(long, long), Intensity> _seen = [];
+
+        public readonly Intensity At(long lx, long ly, out double weight)
+        {
+            weight = 1;
+            if (!_seen.TryGetValue((lx, ly), out Intensity value))
+            {
+                value = Shoot(lx, ly);
+                _seen.Add((lx, ly), value);
+                Order.Add(((lx, ly), value));
+            }
+
+            return value;
+        }
+
+        public readonly bool MayCross(long x0, long y0, long size) => _guard?.MayCross(x0, y0, size) ?? false;
+
+        public readonly Intensity Centre(long lx, long ly)
+        {
+            Centres.Add((lx, ly));
+            return At(lx, ly, out _);
+        }
+
+        private readonly Intensity Shoot(long lx, long ly) => scene.Trace(
+            plane.GetRay(WindowMapping.Alpha(lx, plane.Width * (double)Size), WindowMapping.Beta(ly, plane.Height * (double)Size)),
+            plane.TMin,
+            plane.TMax);
+    }
+}
