@@ -1,4 +1,3 @@
-using System.Buffers;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
@@ -15,7 +14,7 @@ namespace RayLab.Rendering.Point.Packets;
 /// (<see cref="Scene.Trace"/>), so a student can read that one and trust this one; like it, the kernel relies on
 /// the scene's flat shading and takes each sphere's colour from <see cref="Scene.ColourOf"/>.
 /// </summary>
-internal static class PacketKernel
+internal static partial class PacketKernel
 {
     /// <summary>Renders one row of the image into <paramref name="pixels"/>; returns the samples traced again in double.</summary>
     /// <remarks>
@@ -30,18 +29,18 @@ internal static class PacketKernel
         where TS : struct, ILaneSampler<TL>
         where TP : struct, IProjection
     {
+        if (frame.Hierarchy is not null)
+        {
+            return RenderRowThroughHierarchy<TL, TS, TP>(frame, ref sampler, samplesPerPixel, row, pixels);
+        }
+
         int lanes = TL.Count;
         int retraced = 0;
         TL scale = TL.Broadcast(256f / samplesPerPixel);
-        PacketHierarchy? hierarchy = frame.Hierarchy;
-        int[]? leafBuffer = hierarchy is null ? null : ArrayPool<int>.Shared.Rent(hierarchy.Nodes.Length);
         for (int x0 = 0; x0 < frame.Width; x0 += lanes)
         {
             sampler.BeginPacket(x0, row);
-            int retracedAtOnce = 0;   // with a hierarchy: the samples the fast pass traced again itself
-            ReadOnlySpan<int> leaves = hierarchy is null ? default : leafBuffer.AsSpan(0, hierarchy.CollectLeaves(x0, lanes, row, leafBuffer));
-            LaneColour<TL> sum = SumPacket<TL, TS, TP, FloatOnly>(frame, ref sampler, samplesPerPixel, x0, row, leaves, ref retracedAtOnce);
-            retraced += retracedAtOnce;
+            LaneColour<TL> sum = SumPacket<TL, TS, TP, FloatOnly>(frame, ref sampler, samplesPerPixel, x0, row);
             if (sum.Unsure != 0)
             {
                 (sum, int again) = SumPacketCarefully<TL, TS, TP>(frame, ref sampler, samplesPerPixel, x0, row);
@@ -50,11 +49,6 @@ internal static class PacketKernel
 
             // The lab's 8-bit rule of each pixel's mean, sum/n, as sum · (256/n).
             EightBit.WriteLanes(sum.R, sum.G, sum.B, scale, pixels.Slice(x0, Math.Min(lanes, frame.Width - x0)));
-        }
-
-        if (leafBuffer is not null)
-        {
-            ArrayPool<int>.Shared.Return(leafBuffer);
         }
 
         return retraced;
@@ -69,8 +63,19 @@ internal static class PacketKernel
     {
         sampler.BeginPacket(x0, row);
         int count = 0;
-        LaneColour<TL> sum = SumPacket<TL, TS, TP, RetraceInDouble>(frame, ref sampler, samplesPerPixel, x0, row, default, ref count);
+        LaneColour<TL> sum = SumPacket<TL, TS, TP, RetraceInDouble>(frame, ref sampler, samplesPerPixel, x0, row, ref count);
         return (sum, count);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static LaneColour<TL> SumPacket<TL, TS, TP, TMode>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int x0, int row)
+        where TL : struct, ILanes<TL>
+        where TS : struct, ILaneSampler<TL>
+        where TP : struct, IProjection
+        where TMode : struct, IPacketMode
+    {
+        int ignored = 0;
+        return SumPacket<TL, TS, TP, TMode>(frame, ref sampler, samplesPerPixel, x0, row, ref ignored);
     }
 
     /// <summary>
@@ -78,7 +83,7 @@ internal static class PacketKernel
     /// that had an uncertain sample (float only) or that were traced again (careful mode).
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private static LaneColour<TL> SumPacket<TL, TS, TP, TMode>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int x0, int row, ReadOnlySpan<int> leaves, ref int retracedCount)
+    private static LaneColour<TL> SumPacket<TL, TS, TP, TMode>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int x0, int row, ref int retracedCount)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
         where TP : struct, IProjection
@@ -88,9 +93,7 @@ internal static class PacketKernel
         TL invWidth = TL.Broadcast(1f / frame.Width), invHeight = TL.Broadcast(1f / frame.Height);
         Float3 a = frame.A, b = frame.B, c = frame.C, direction = frame.Direction, background = frame.Background;
         var window = new LaneWindow<TL>(new(a.X, a.Y, a.Z), new(b.X, b.Y, b.Z), new(c.X, c.Y, c.Z), new(direction.X, direction.Y, direction.Z));
-        PacketHierarchy? hierarchy = frame.Hierarchy;
-        TL minusHalf = TL.Broadcast(-0.5f), oneAndHalf = TL.Broadcast(1.5f);
-        ReadOnlySpan<SphereConstants> spheres = hierarchy is null ? frame.Spheres : default;  // with a hierarchy the loop below has nothing to do
+        ReadOnlySpan<SphereConstants> spheres = frame.Spheres;
         bool checkOrder = frame.CheckDepthOrder;
         TL left = WindowMapping.PacketLeft(x0, invWidth);
         TL rowTop = WindowMapping.RowTop<TL>(row, frame.Height);
@@ -111,27 +114,6 @@ internal static class PacketKernel
             TL closest = TL.Broadcast(float.PositiveInfinity);   // the smallest |Δ| / bound over the spheres
             TL unsure = default;
             TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
-            if (hierarchy is not null)
-            {
-                // Traversing costs more than a call: the uncertain lanes are traced again in double at once, in
-                // either pass, and the packet is never summed twice.
-                // The packet's leaves hold every box its rays can reach while each sample stays within half a
-                // pixel of its pixel (the samplers' [0, 1)); a sample outside that traverses from the root.
-                var before = new LaneHit<TL>(nearest, red, green, blue, closest, unsure);
-                uint stray = TL.MaskBits(TL.LessThan(sx, minusHalf) | TL.LessThan(sy, minusHalf) | TL.LessThan(oneAndHalf, sx) | TL.LessThan(oneAndHalf, sy));
-                LaneHit<TL> found = stray == 0
-                    ? PacketHierarchy.NearestInLeaves<TL, TP>(hierarchy, leaves, origin, ray, dd, rdd, depthTolerance, checkOrder, before)
-                    : PacketHierarchy.Nearest<TL, TP>(hierarchy, origin, ray, dd, rdd, depthTolerance, checkOrder, before);
-                (red, green, blue) = (found.R, found.G, found.B);
-                uint uncertainHere = TL.MaskBits(found.Unsure | TL.LessThanOrEqual(found.Closest, one));
-                if (uncertainHere != 0)
-                {
-                    LaneColour<TL> exact = Retrace<TL, TP>(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertainHere));
-                    (red, green, blue) = (exact.R, exact.G, exact.B);
-                    retracedCount += BitOperations.PopCount(exact.Unsure);
-                }
-            }
-
             foreach (ref readonly SphereConstants sphere in spheres)
             {
                 TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
