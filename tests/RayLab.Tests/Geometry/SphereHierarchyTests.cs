@@ -3,6 +3,7 @@ using RayLab.Geometry;
 using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Exact;
 using RayLab.Sampling;
 
 namespace RayLab.Tests.Geometry;
@@ -227,6 +228,23 @@ public class SphereHierarchyTests
         RenderStatistics stats = new Renderer().Render(scene, Perspective with { FarPlane = 1000 }, new JitteredSampler(4, seed: 1), image);
         Assert.Equal(32L * 24 * 4, stats.PrimaryRays);
         Assert.Contains(image.PixelBytes.ToArray(), b => b > 200); // some white sphere is hit
+    }
+
+    [Fact]
+    public void TheExactRendererRefusesMoreSpheresInViewThanItsLimitWithAOneLineMessageNamingIt()
+    {
+        var random = new Random(2);
+        var spheres = new Sphere[OutlineSet.MaxSpheresInView + 1];
+        for (int i = 0; i < spheres.Length; i++)
+        {
+            spheres[i] = new Sphere(new Double3((random.NextDouble() * 8) - 4, (random.NextDouble() * 4) - 2, -5 - (random.NextDouble() * 20)), 0.01, Intensity.White);
+        }
+
+        Scene scene = SceneOf(spheres, SceneAcceleration.Auto);
+        var e = Assert.Throws<UnsupportedSceneException>(() => new Renderer().Render(scene, Perspective, RenderMethod.Exact, new Image(16, 12)));
+        Assert.Equal(spheres.Length - 1, e.SphereIndex);
+        Assert.Contains("at most 20000", e.Message, StringComparison.Ordinal);
+        Assert.DoesNotContain('\n', e.Message);
     }
 
     private static bool Inside(Double3 p, HierarchyNode node) =>

@@ -27,6 +27,9 @@ internal sealed class OutlineSet
         CrossingHeights = crossings;
     }
 
+    /// <summary>The most spheres in view the exact renderer draws (above it, <see cref="Build"/> refuses the scene).</summary>
+    public const int MaxSpheresInView = 20_000;
+
     /// <summary>The outlines that reach into the image.</summary>
     public Outline[] Outlines { get; }
 
@@ -74,6 +77,12 @@ internal sealed class OutlineSet
                 string amount = rounding.ToString("G2", CultureInfo.InvariantCulture);
                 throw new UnsupportedSceneException(i, $"is seen at a zoom beyond double precision: rounding alone can move its picture by {amount} "
                     + "pixels, and the exact sampler needs at most 1e-6 (widen the window, or move the camera closer to the sphere)");
+            }
+
+            if (kept.Count == MaxSpheresInView)
+            {
+                throw new UnsupportedSceneException(i, $"is one sphere more in view than the exact sampler draws: at most {MaxSpheresInView} "
+                    + "(its time grows with the crossings of their outlines; use a point sampler or the adaptive one)");
             }
 
             kept.Add((c, r));
