@@ -16,8 +16,15 @@ namespace RayLab;
 /// </remarks>
 public sealed class Scene
 {
+    /// <summary>
+    /// From this many spheres on, <see cref="SceneAcceleration.Auto"/> traces through the hierarchy (measured
+    /// break-even, docs/performance.md: below it testing every sphere is as fast).
+    /// </summary>
+    internal const int HierarchyThreshold = 12;
+
     private readonly Sphere[] _spheres;
     private readonly Intensity[] _colours;
+    private readonly Lazy<SphereHierarchy?> _hierarchy;
 
     /// <summary>Creates a scene.</summary>
     /// <param name="spheres">The spheres; none may be null.</param>
@@ -39,7 +46,26 @@ public sealed class Scene
         Background = background;
         Ambient = ambient;
         _colours = [.. _spheres.Select(sphere => sphere.Color * ambient)];
+        _hierarchy = new Lazy<SphereHierarchy?>(() => SphereHierarchy.Build(_spheres), LazyThreadSafetyMode.ExecutionAndPublication);
     }
+
+    /// <summary>
+    /// Whether rays find their sphere through a bounding volume hierarchy (the lab's reference [5], space
+    /// subdivision) or by testing every sphere; <see cref="SceneAcceleration.Auto"/> (the default) uses the
+    /// hierarchy from <c>12</c> spheres on. The picture is the same bytes either way; only the time differs.
+    /// </summary>
+    public SceneAcceleration Acceleration { get; init; }
+
+    /// <summary>True when rays are traced through the hierarchy (see <see cref="Acceleration"/>).</summary>
+    internal bool UsesHierarchy => Acceleration switch
+    {
+        SceneAcceleration.None => false,
+        SceneAcceleration.Hierarchy => true,
+        _ => _spheres.Length >= HierarchyThreshold,
+    };
+
+    /// <summary>The hierarchy when <see cref="UsesHierarchy"/> (built on first use, once per scene), else null.</summary>
+    internal SphereHierarchy? Hierarchy => UsesHierarchy ? _hierarchy.Value : null;
 
     /// <summary>The spheres.</summary>
     public IReadOnlyList<Sphere> Spheres => _spheres;
@@ -79,19 +105,12 @@ public sealed class Scene
     public Intensity Trace(in Ray ray, double tMin, double tMax) => ColourOf(Nearest(ray, tMin, tMax));
 
     /// <summary>The index of the nearest sphere hit with parameter in [<paramref name="tMin"/>, <paramref name="tMax"/>], or −1.</summary>
+    /// <remarks>Through the hierarchy when <see cref="UsesHierarchy"/>; the answer is the same either way.</remarks>
     internal int Nearest(in Ray ray, double tMin, double tMax)
     {
-        int nearest = -1;
-        double best = tMax;
-        for (int k = 0; k < _spheres.Length; k++)
-        {
-            if (_spheres[k].TryIntersect(ray, tMin, best, out double t))
-            {
-                best = t;
-                nearest = k;
-            }
-        }
-
-        return nearest;
+        SphereHierarchy? hierarchy = Hierarchy;
+        return hierarchy is null
+            ? SphereHierarchy.NearestOfAll(_spheres, ray, tMin, tMax)
+            : hierarchy.Nearest(_spheres, ray, tMin, tMax);
     }
 }

@@ -6,7 +6,7 @@ namespace RayLab.Scenes;
 
 /// <summary>
 /// Reads scene files: JSON (comments and trailing commas allowed) with the fields <c>image</c>,
-/// <c>background</c>, <c>ambient</c>, <c>camera</c>, <c>spheres</c> and <c>sampler</c>; see the README.
+/// <c>background</c>, <c>ambient</c>, <c>camera</c>, <c>spheres</c>, <c>sampler</c> and <c>acceleration</c>; see the README.
 /// Strict: a missing required field, a wrong type, a non-finite or out-of-range number and an unknown field
 /// are all errors that name the file and the field.
 /// </summary>
@@ -17,6 +17,9 @@ public static class SceneFile
 
     /// <summary>The most samples per pixel a scene (or an override of it) may ask for: 65 536.</summary>
     public const int MaxSamples = 1 << 16;
+
+    /// <summary>The values of the optional <c>acceleration</c> field (<see cref="SceneAcceleration"/> in lower case).</summary>
+    private static readonly string[] AccelerationNames = [.. Enum.GetNames<SceneAcceleration>().Select(n => n.ToLowerInvariant())];
 
     private static readonly JsonDocumentOptions Options = new()
     {
@@ -102,7 +105,10 @@ public static class SceneFile
             }
 
             SamplerSettings sampler = Optional(obj, "sampler") is { } s ? ReadSampler(Object(s, "sampler")) : SamplerSettings.Default;
-            return new SceneDescription(source, width, height, new Scene(spheres, background, ambient), camera, sampler);
+            SceneAcceleration acceleration = Optional(obj, "acceleration") is { } a
+                ? Enum.Parse<SceneAcceleration>(Name(a, "acceleration", AccelerationNames), ignoreCase: true)
+                : SceneAcceleration.Auto;
+            return new SceneDescription(source, width, height, new Scene(spheres, background, ambient) { Acceleration = acceleration }, camera, sampler);
         }
 
         // The numbers are read as JSON (kind, finiteness); their ranges are the camera's own checks.

@@ -14,7 +14,7 @@ namespace RayLab.Scenes;
 internal sealed class SceneSection(string path, IReadOnlyList<string> fields, Func<string, string?>? alias = null)
 {
     /// <summary>The top-level fields of a scene file.</summary>
-    public static IReadOnlyList<string> RootFields { get; } = ["image", "background", "ambient", "camera", "spheres", "sampler"];
+    public static IReadOnlyList<string> RootFields { get; } = ["image", "background", "ambient", "camera", "spheres", "sampler", "acceleration"];
 
     /// <summary>The <c>image</c> object: <see cref="Imaging.Image.CheckSize"/> names <c>width</c> and <c>height</c>.</summary>
     public static SceneSection Image { get; } = new("image", ["width", "height"]);

@@ -141,7 +141,7 @@ internal sealed class LatticeHits
                 closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
                 if (checkOrder)
                 {
-                    unsure |= hit & TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
+                    unsure |= TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);   // either order, as the packet kernel: a farther sphere tested later may be the nearer one in double
                 }
 
                 nearest = TL.Select(hit, negatedT, nearest);

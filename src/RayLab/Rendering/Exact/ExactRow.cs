@@ -129,12 +129,15 @@ internal sealed class ExactRow
                 }
 
                 (double left, double right) = o.At(ym);
-                Insert(ref n, new Branch(left, i, -1));
-                Insert(ref n, new Branch(right, i, +1));
+                _branches[n++] = new Branch(left, i, -1);
+                _branches[n++] = new Branch(right, i, +1);
             }
         }
 
+        // Sorted by X; equal X in the order they were added (outline index, then left before right), as
+        // insertion one by one would leave them: O(n log n) where a row of a field of spheres meets hundreds.
         Span<Branch> branches = _branches.AsSpan(0, n);
+        branches.Sort(static (p, q) => p.X != q.X ? p.X.CompareTo(q.X) : (p.Outline != q.Outline ? p.Outline.CompareTo(q.Outline) : p.Sign.CompareTo(q.Sign)));
 
         // Walk the pieces left to right; a branch outside the image stands for the image's edge.
         double leftX = 0, leftIntegral = 0;
@@ -168,18 +171,6 @@ internal sealed class ExactRow
                 break;
             }
         }
-    }
-
-    // Insertion into the branches sorted by X (a row meets only a few outlines).
-    private void Insert(ref int n, Branch branch)
-    {
-        int at = n++;
-        for (; at > 0 && _branches[at - 1].X > branch.X; at--)
-        {
-            _branches[at] = _branches[at - 1];
-        }
-
-        _branches[at] = branch;
     }
 
     // The piece between boundaries at xl and xr (at mid-strip), with ∫X dY of each over the strip.

@@ -27,6 +27,9 @@ internal sealed class OutlineSet
         CrossingHeights = crossings;
     }
 
+    /// <summary>The most spheres in view the exact renderer draws (above it, <see cref="Build"/> refuses the scene).</summary>
+    public const int MaxSpheresInView = 20_000;
+
     /// <summary>The outlines that reach into the image.</summary>
     public Outline[] Outlines { get; }
 
@@ -47,6 +50,7 @@ internal sealed class OutlineSet
         double depthPerT = plane.DepthPerT;
         double near = plane.TMin * depthPerT, far = plane.TMax * depthPerT;
         var kept = new List<(Double3 Centre, double Radius)>();
+        var keptIndex = new List<int>();
         var outlines = new List<Outline>();
         for (int i = 0; i < scene.Spheres.Count; i++)
         {
@@ -75,7 +79,14 @@ internal sealed class OutlineSet
                     + "pixels, and the exact sampler needs at most 1e-6 (widen the window, or move the camera closer to the sphere)");
             }
 
+            if (kept.Count == MaxSpheresInView)
+            {
+                throw new UnsupportedSceneException(i, $"is one sphere more in view than the exact sampler draws: at most {MaxSpheresInView} "
+                    + "(its time grows with the crossings of their outlines; use a point sampler or the adaptive one)");
+            }
+
             kept.Add((c, r));
+            keptIndex.Add(i);
             outlines.Add(projection.Sphere(c, r));
             foreach (double cut in (ReadOnlySpan<double>)[near, far])
             {
@@ -87,20 +98,69 @@ internal sealed class OutlineSet
             }
         }
 
-        for (int i = 0; i < kept.Count; i++)
+        foreach ((int i, int j) in MeetingCandidates(scene, keptIndex))
         {
-            for (int j = i + 1; j < kept.Count; j++)
+            if (Meeting(kept[i], kept[j]) is { } circle)
             {
-                if (Meeting(kept[i], kept[j]) is { } circle)
-                {
-                    outlines.Add(projection.Circle(circle.Centre, circle.Radius, circle.Normal));
-                }
+                outlines.Add(projection.Circle(circle.Centre, circle.Radius, circle.Normal));
             }
         }
 
         Outline[] inImage = outlines.Where(o => (o.Hx > 0 || o.Hy > 0)
             && o.Right >= 0 && o.Left <= plane.Width && o.Bottom >= 0 && o.Top <= plane.Height).ToArray();
         return new OutlineSet(inImage, Crossings(inImage, plane.Height));
+    }
+
+    /// <summary>
+    /// The pairs (i &lt; j, positions in the kept list, in the order of the all-pairs loop) whose boxes meet: every
+    /// pair without a hierarchy; with one, only the pairs it finds (the same circles, in the same order).
+    /// </summary>
+    private static List<(int I, int J)> MeetingCandidates(Scene scene, List<int> keptIndex)
+    {
+        var pairs = new List<(int, int)>();
+        SphereHierarchy? hierarchy = scene.Hierarchy;
+        if (hierarchy is null)
+        {
+            for (int i = 0; i < keptIndex.Count; i++)
+            {
+                for (int j = i + 1; j < keptIndex.Count; j++)
+                {
+                    pairs.Add((i, j));
+                }
+            }
+
+            return pairs;
+        }
+
+        var position = new Dictionary<int, int>(keptIndex.Count);
+        for (int k = 0; k < keptIndex.Count; k++)
+        {
+            position[keptIndex[k]] = k;
+        }
+
+        for (int i = 0; i < keptIndex.Count; i++)
+        {
+            Sphere sphere = scene.Spheres[keptIndex[i]];
+            Double3 r = new(sphere.Radius, sphere.Radius, sphere.Radius);
+            int self = i;
+            var found = new List<int>();
+            hierarchy.VisitOverlapping(sphere.Center - r, sphere.Center + r, other =>
+            {
+                if (position.TryGetValue(other, out int j) && j > self)
+                {
+                    found.Add(j);
+                }
+
+                return true;
+            });
+            found.Sort();
+            foreach (int j in found)
+            {
+                pairs.Add((i, j));
+            }
+        }
+
+        return pairs;
     }
 
     // The circle where two spheres meet, if their surfaces cross.
@@ -123,10 +183,15 @@ internal sealed class OutlineSet
     {
         var ys = new List<double>();
         Span<double> thetas = stackalloc double[4];
-        for (int i = 0; i < outlines.Length; i++)
+
+        // Only pairs whose heights overlap can cross: outlines by their top, each paired with those starting
+        // above its bottom (a sweep down the image; every pair the all-pairs loop would find, as i < j).
+        int[] byTop = [.. Enumerable.Range(0, outlines.Length).OrderBy(k => outlines[k].Top)];
+        for (int s = 0; s < byTop.Length; s++)
         {
-            for (int j = i + 1; j < outlines.Length; j++)
+            for (int u = s + 1; u < byTop.Length && outlines[byTop[u]].Top <= outlines[byTop[s]].Bottom; u++)
             {
+                int i = Math.Min(byTop[s], byTop[u]), j = Math.Max(byTop[s], byTop[u]);
                 Outline a = outlines[i], b = outlines[j];
                 if (a.Hy == 0 || b.Hy == 0 || a.Right < b.Left || b.Right < a.Left || a.Bottom < b.Top || b.Bottom < a.Top)
                 {

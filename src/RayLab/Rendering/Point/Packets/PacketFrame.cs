@@ -56,6 +56,7 @@ internal sealed class PacketFrame
         Sphere[] spheres = [.. kept.Select(index => scene.Spheres[index])];
         Spheres = new SphereConstants[spheres.Length];
         double[] reach = new double[spheres.Length];
+        var position = new Dictionary<int, int>(kept.Length);
         for (int k = 0; k < spheres.Length; k++)
         {
             Sphere sphere = spheres[k];
@@ -63,22 +64,74 @@ internal sealed class PacketFrame
             double bound = 32 * Epsilon * ((sphere.Radius * sphere.Radius) + (largest * largest));
             Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(scene.ColourOf(kept[k])));
             reach[k] = 3e-3 * (sphere.Radius + largest);
+            position[kept[k]] = k;
         }
 
-        for (int j = 0; j < spheres.Length && !CheckDepthOrder; j++)
+        SphereHierarchy? hierarchy = scene.Hierarchy;
+        double largestReach = reach.Length == 0 ? 0 : reach.Max();
+        CheckDepthOrder = hierarchy is null ? AnyCloseAll(spheres, reach) : AnyCloseNear(scene, hierarchy, kept, reach, largestReach);
+        if (CheckDepthOrder)
+        {
+            DepthTolerance = (float)(2 * largestReach);
+        }
+
+        if (hierarchy is not null)
+        {
+            double largestRadius = spheres.Length == 0 ? 0 : spheres.Max(sphere => sphere.Radius);
+            Hierarchy = PacketHierarchy.Create(hierarchy, plane, index => Spheres[position[index]], largestRadius);
+        }
+    }
+
+    /// <summary>True when two spheres are closer than 2 × (reach₁ + reach₂): every pair tested.</summary>
+    private static bool AnyCloseAll(Sphere[] spheres, double[] reach)
+    {
+        for (int j = 0; j < spheres.Length; j++)
         {
             for (int k = j + 1; k < spheres.Length; k++)
             {
-                double gap = (spheres[j].Center - spheres[k].Center).Length - spheres[j].Radius - spheres[k].Radius;
-                if (gap <= 2 * (reach[j] + reach[k]))
+                if (Close(spheres[j], spheres[k], reach[j], reach[k]))
                 {
-                    CheckDepthOrder = true;
-                    DepthTolerance = (float)Math.Max(DepthTolerance, 2 * (reach.Max()));
-                    break;
+                    return true;
                 }
             }
         }
+
+        return false;
     }
+
+    /// <summary>The same answer as <see cref="AnyCloseAll"/>, each sphere tested only against those the hierarchy finds near it.</summary>
+    private static bool AnyCloseNear(Scene scene, SphereHierarchy hierarchy, int[] kept, double[] reach, double largestReach)
+    {
+        var position = new int[scene.Spheres.Count];
+        for (int k = 0; k < kept.Length; k++)
+        {
+            position[kept[k]] = k;
+        }
+
+        bool found = false;
+        for (int j = 0; j < kept.Length && !found; j++)
+        {
+            Sphere sphere = scene.Spheres[kept[j]];
+            double r = sphere.Radius + (2 * (reach[j] + largestReach));
+            Double3 extent = new(r, r, r);
+            int self = kept[j];
+            double reachJ = reach[j];
+            hierarchy.VisitOverlapping(sphere.Center - extent, sphere.Center + extent, other =>
+            {
+                if (other != self && Close(sphere, scene.Spheres[other], reachJ, reach[position[other]]))
+                {
+                    found = true;
+                }
+
+                return !found;
+            });
+        }
+
+        return found;
+    }
+
+    private static bool Close(Sphere a, Sphere b, double reachA, double reachB) =>
+        (a.Center - b.Center).Length - a.Radius - b.Radius <= 2 * (reachA + reachB);
 
     public ImagePlane Plane { get; }
 
@@ -106,6 +159,9 @@ internal sealed class PacketFrame
 
     /// <summary>The spheres the kernel tests (radius 0 left out: never hit).</summary>
     public SphereConstants[] Spheres { get; }
+
+    /// <summary>The scene's hierarchy in float for this frame, when the scene uses one; the kernel then traverses it instead of testing <see cref="Spheres"/>.</summary>
+    public PacketHierarchy? Hierarchy { get; }
 
     /// <summary>True when two spheres are close enough that float could order their hits wrongly.</summary>
     public bool CheckDepthOrder { get; }

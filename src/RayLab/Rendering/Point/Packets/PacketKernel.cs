@@ -14,7 +14,7 @@ namespace RayLab.Rendering.Point.Packets;
 /// (<see cref="Scene.Trace"/>), so a student can read that one and trust this one; like it, the kernel relies on
 /// the scene's flat shading and takes each sphere's colour from <see cref="Scene.ColourOf"/>.
 /// </summary>
-internal static class PacketKernel
+internal static partial class PacketKernel
 {
     /// <summary>Renders one row of the image into <paramref name="pixels"/>; returns the samples traced again in double.</summary>
     /// <remarks>
@@ -29,6 +29,11 @@ internal static class PacketKernel
         where TS : struct, ILaneSampler<TL>
         where TP : struct, IProjection
     {
+        if (frame.Hierarchy is not null)
+        {
+            return RenderRowThroughHierarchy<TL, TS, TP>(frame, ref sampler, samplesPerPixel, row, pixels);
+        }
+
         int lanes = TL.Count;
         int retraced = 0;
         TL scale = TL.Broadcast(256f / samplesPerPixel);
@@ -122,7 +127,7 @@ internal static class PacketKernel
                     closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
                     if (checkOrder)
                     {
-                        unsure |= hit & TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
+                        unsure |= TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);   // either order: a farther sphere tested later too
                     }
 
                     nearest = TL.Select(hit, negatedT, nearest);

@@ -1,0 +1,318 @@
+using System.Runtime.CompilerServices;
+using RayLab.Cameras;
+using RayLab.Geometry;
+
+namespace RayLab.Rendering.Point.Packets;
+
+/// <summary>
+/// The scene's <see cref="SphereHierarchy"/> for one frame of the packet kernel: each box in float, as offsets
+/// from the eye (the sphere offsets' fixed point), widened by 10⁻⁴ of its distance, and the spheres' constants
+/// in leaf order. A packet's rays traverse it together (<see cref="Nearest{TL, TP}"/>): a node is entered when
+/// any lane's ray enters its box before that lane's nearest hit so far.
+/// </summary>
+/// <remarks>
+/// <para>The traversal gives the kernel's answer for the spheres it tests; the spheres it skips cannot change
+/// the exact answer, so the float answers it calls certain are the double ones, as without it:</para>
+/// <para>- a box a lane's float ray misses is missed by the double ray: the widening (10⁻⁴ of the distance) is
+/// far above float's rounding of the ray and of the box (a few 10⁻⁶);</para>
+/// <para>- a box entered only beyond 1.01 × the nearest float hit (plus 1 % of the largest radius) lies behind
+/// the true nearest hit: a float hit is off by at most 3·10⁻³ (r + |o − C|) (<see cref="PacketFrame"/>'s
+/// depth reach).</para>
+/// <para>A lane's two hits within the depth tolerance are marked uncertain whichever was found first (the
+/// order of the tests is the tree's, not the scene's).</para>
+/// </remarks>
+internal sealed class PacketHierarchy
+{
+    /// <summary>The widening of each box, relative to its distance from the eye.</summary>
+    private const double Widening = 1e-4;
+
+    private PacketHierarchy(PacketNode[] nodes, SphereConstants[] spheres, int depth, float radiusSlack, ImagePlane plane)
+    {
+        Nodes = nodes;
+        Spheres = spheres;
+        Depth = depth;
+        RadiusSlack = radiusSlack;
+        _plane = plane;
+    }
+
+    private readonly ImagePlane _plane;
+
+    /// <summary>The nodes in the hierarchy's order.</summary>
+    public PacketNode[] Nodes { get; }
+
+    /// <summary>The spheres' constants in leaf order.</summary>
+    public SphereConstants[] Spheres { get; }
+
+    /// <summary>The hierarchy's depth (the traversal stack's size).</summary>
+    public int Depth { get; }
+
+    /// <summary>1 % of the largest radius (world units): the depth culling's absolute slack.</summary>
+    public float RadiusSlack { get; }
+
+    /// <summary>The frame's copy of <paramref name="hierarchy"/>.</summary>
+    /// <param name="hierarchy">The scene's hierarchy.</param>
+    /// <param name="plane">The camera's image plane.</param>
+    /// <param name="constantsOf">A sphere's kernel constants, by its index in the scene.</param>
+    /// <param name="largestRadius">The largest radius in the scene.</param>
+    public static PacketHierarchy Create(SphereHierarchy hierarchy, ImagePlane plane, Func<int, SphereConstants> constantsOf, double largestRadius)
+    {
+        Double3 fixedPoint = plane.Eye + (plane.IsOrthographic ? plane.C : Double3.Zero);
+        double window = plane.IsOrthographic ? plane.A.Length + plane.B.Length + plane.C.Length : 0;
+        ReadOnlySpan<HierarchyNode> nodes = hierarchy.Nodes;
+        var packetNodes = new PacketNode[nodes.Length];
+        for (int i = 0; i < nodes.Length; i++)
+        {
+            HierarchyNode node = nodes[i];
+            Double3 centre = 0.5 * (node.Lo + node.Hi);
+            double reach = (fixedPoint - centre).Length + (0.5 * (node.Hi - node.Lo).Length) + window;
+            double pad = Widening * reach;
+            Double3 widen = new(pad, pad, pad);
+            packetNodes[i] = new PacketNode(fixedPoint - (node.Lo - widen), fixedPoint - (node.Hi + widen), node.Start, node.Count, node.Axis);
+        }
+
+        ReadOnlySpan<int> order = hierarchy.Order;
+        var spheres = new SphereConstants[order.Length];
+        for (int i = 0; i < order.Length; i++)
+        {
+            spheres[i] = constantsOf(order[i]);
+        }
+
+        return new PacketHierarchy(packetNodes, spheres, hierarchy.Depth, (float)(0.01 * largestRadius), plane);
+    }
+
+    /// <summary>
+    /// The leaves whose boxes the rays of a packet may enter, near ones first: the packet's pixels
+    /// <paramref name="x0"/> … <paramref name="x0"/> + <paramref name="lanes"/> − 1 of row <paramref name="row"/>,
+    /// widened by one pixel on every side (a sample offset anywhere in [−1, 2) stays inside; the kernel checks
+    /// [−½, 1½) and traverses from the root for a sample outside it). Tested in double against the float boxes.
+    /// </summary>
+    /// <param name="x0">The packet's first column.</param>
+    /// <param name="lanes">The packet's width.</param>
+    /// <param name="row">The row.</param>
+    /// <param name="leaves">Receives the leaves' node indices; as long as <see cref="Nodes"/>.</param>
+    /// <returns>The number of leaves.</returns>
+    public int CollectLeaves(int x0, int lanes, int row, Span<int> leaves)
+    {
+        ImagePlane plane = _plane;
+        double alpha0 = (x0 - 1.0) / plane.Width, alpha1 = (x0 + lanes + 1.0) / plane.Width;
+        double beta0 = 1 - ((row + 2.0) / plane.Height), beta1 = 1 - ((row - 1.0) / plane.Height);
+        Double3 a = plane.A, b = plane.B, c = plane.C, gaze = -plane.W;
+        Span<Plane> planes = stackalloc Plane[5];
+        if (plane.IsOrthographic)
+        {
+            // Origins α a + β b (from e + c), direction −w: four planes along −w through the window's edges.
+            planes[0] = Side(Double3.Cross(b, gaze), a, alpha0 * a);
+            planes[1] = Side(Double3.Cross(b, gaze), -a, alpha1 * a);
+            planes[2] = Side(Double3.Cross(a, gaze), b, beta0 * b);
+            planes[3] = Side(Double3.Cross(a, gaze), -b, beta1 * b);
+        }
+        else
+        {
+            // Directions c + α a + β b from e: four planes through e.
+            planes[0] = Side(Double3.Cross(c + (alpha0 * a), b), a, Double3.Zero);
+            planes[1] = Side(Double3.Cross(c + (alpha1 * a), b), -a, Double3.Zero);
+            planes[2] = Side(Double3.Cross(c + (beta0 * b), a), b, Double3.Zero);
+            planes[3] = Side(Double3.Cross(c + (beta1 * b), a), -b, Double3.Zero);
+        }
+
+        planes[4] = new Plane(gaze, 0); // nothing behind the eye (or the orthographic window's plane)
+        Double3 centre = plane.IsOrthographic ? gaze : c + (0.5 * (alpha0 + alpha1) * a) + (0.5 * (beta0 + beta1) * b);
+        int negative = (centre.X < 0 ? 1 : 0) | (centre.Y < 0 ? 2 : 0) | (centre.Z < 0 ? 4 : 0);
+        PacketNode[] nodes = Nodes;
+        Span<int> stack = stackalloc int[Depth + 1];
+        int top = 0, count = 0;
+        stack[top++] = 0;
+        while (top > 0)
+        {
+            int index = stack[--top];
+            ref readonly PacketNode node = ref nodes[index];
+
+            // The box relative to the fixed point is [−Lo, −Hi] (the node stores fixed point − corner).
+            Double3 lo = new(-(double)node.Lo.X, -(double)node.Lo.Y, -(double)node.Lo.Z);
+            Double3 hi = new(-(double)node.Hi.X, -(double)node.Hi.Y, -(double)node.Hi.Z);
+            bool outside = false;
+            foreach (Plane side in planes)
+            {
+                Double3 n = side.Normal;
+                double farthest = ((n.X >= 0 ? hi.X : lo.X) * n.X) + ((n.Y >= 0 ? hi.Y : lo.Y) * n.Y) + ((n.Z >= 0 ? hi.Z : lo.Z) * n.Z);
+                if (farthest + side.Offset < 0)
+                {
+                    outside = true;
+                    break;
+                }
+            }
+
+            if (outside)
+            {
+                continue;
+            }
+
+            if (node.Count > 0)
+            {
+                leaves[count++] = index;
+                continue;
+            }
+
+            bool rightFirst = ((negative >> node.Axis) & 1) != 0;
+            stack[top++] = rightFirst ? index + 1 : node.Start;
+            stack[top++] = rightFirst ? node.Start : index + 1;
+        }
+
+        return count;
+    }
+
+    /// <summary>The half-space n·x + d ≥ 0 with n = ±<paramref name="normal"/> pointing along <paramref name="inward"/>, through <paramref name="point"/>.</summary>
+    private static Plane Side(Double3 normal, Double3 inward, Double3 point)
+    {
+        Double3 n = Double3.Dot(normal, inward) >= 0 ? normal : -normal;
+        return new Plane(n, -Double3.Dot(n, point));
+    }
+
+    /// <summary>
+    /// The nearest hit per lane among the spheres of the packet's <paramref name="leaves"/> (from
+    /// <see cref="CollectLeaves"/>): each leaf's box tested against the lanes first, as in <see cref="Nearest{TL, TP}"/>.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    public static LaneHit<TL> NearestInLeaves<TL, TP>(PacketHierarchy hierarchy, ReadOnlySpan<int> leaves, in Lanes3<TL> origin, in Lanes3<TL> direction, TL dd, TL rdd, TL depthTolerance, bool checkOrder, in LaneHit<TL> background)
+        where TL : struct, ILanes<TL>
+        where TP : struct, IProjection
+    {
+        (TL dx, TL dy, TL dz) = (direction.X, direction.Y, direction.Z);
+        TL minusOne = TL.Broadcast(-1f);
+        TL tiny = TL.Sqrt(dd) * TL.Broadcast(1e-12f);
+        TL nx = minusOne / TL.Select(TL.LessThan(TL.Abs(dx), tiny), tiny, dx);
+        TL ny = minusOne / TL.Select(TL.LessThan(TL.Abs(dy), tiny), tiny, dy);
+        TL nz = minusOne / TL.Select(TL.LessThan(TL.Abs(dz), tiny), tiny, dz);
+        TL slack = TL.Broadcast(hierarchy.RadiusSlack) * TL.Sqrt(rdd);
+        var state = new LaneHit<TL>(background.Nearest, background.R, background.G, background.B, TL.Broadcast(float.PositiveInfinity), default);
+        PacketNode[] nodes = hierarchy.Nodes;
+        SphereConstants[] spheres = hierarchy.Spheres;
+        foreach (int index in leaves)
+        {
+            ref readonly PacketNode node = ref nodes[index];
+            if (Enters<TL, TP>(node, origin, nx, ny, nz, state.Nearest, slack))
+            {
+                TestLeaf<TL, TP>(spheres, node, origin, dx, dy, dz, dd, rdd, depthTolerance, checkOrder, ref state);
+            }
+        }
+
+        return state;
+    }
+
+    /// <summary>True when any lane's ray enters the node's box before 1.01 × its nearest hit + slack.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool Enters<TL, TP>(in PacketNode node, in Lanes3<TL> origin, TL nx, TL ny, TL nz, TL nearest, TL slack)
+        where TL : struct, ILanes<TL>
+        where TP : struct, IProjection
+    {
+        TL ax = TP.AddOrigin(TL.Broadcast(node.Lo.X), origin.X) * nx, bx = TP.AddOrigin(TL.Broadcast(node.Hi.X), origin.X) * nx;
+        TL ay = TP.AddOrigin(TL.Broadcast(node.Lo.Y), origin.Y) * ny, by = TP.AddOrigin(TL.Broadcast(node.Hi.Y), origin.Y) * ny;
+        TL az = TP.AddOrigin(TL.Broadcast(node.Lo.Z), origin.Z) * nz, bz = TP.AddOrigin(TL.Broadcast(node.Hi.Z), origin.Z) * nz;
+        TL enter = Max(Max(TL.Min(ax, bx), TL.Min(ay, by)), TL.Min(az, bz));
+        TL leave = TL.Min(TL.Min(Max(ax, bx), Max(ay, by)), Max(az, bz));
+        TL limit = TL.MultiplyAdd(nearest, TL.Broadcast(-1.01f), slack);  // 1.01 × the nearest t + slack (+∞ before a hit)
+        TL inside = TL.LessThanOrEqual(enter, leave) & TL.LessThanOrEqual(default, leave) & TL.LessThanOrEqual(enter, limit);
+        return TL.MaskBits(inside) != 0;
+    }
+
+    /// <summary>The kernel's per-sphere test over one leaf's spheres.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void TestLeaf<TL, TP>(SphereConstants[] spheres, in PacketNode node, in Lanes3<TL> origin, TL dx, TL dy, TL dz, TL dd, TL rdd, TL depthTolerance, bool checkOrder, ref LaneHit<TL> state)
+        where TL : struct, ILanes<TL>
+        where TP : struct, IProjection
+    {
+        (TL nearest, TL red, TL green, TL blue, TL closest, TL unsure) = state;
+        for (int i = node.Start; i < node.Start + node.Count; i++)
+        {
+            ref readonly SphereConstants sphere = ref spheres[i];
+            TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
+            TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
+            TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
+            TL negatedT = LaneSphere.NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(sphere.RadiusSquared), out TL disc);
+            TL hit = TL.LessThan(nearest, negatedT);
+            closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
+            if (checkOrder)
+            {
+                unsure |= TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
+            }
+
+            nearest = TL.Select(hit, negatedT, nearest);
+            red = TL.Select(hit, TL.Broadcast(sphere.Colour.X), red);
+            green = TL.Select(hit, TL.Broadcast(sphere.Colour.Y), green);
+            blue = TL.Select(hit, TL.Broadcast(sphere.Colour.Z), blue);
+        }
+
+        state = new LaneHit<TL>(nearest, red, green, blue, closest, unsure);
+    }
+
+    /// <summary>
+    /// The nearest hit per lane among the spheres whose boxes the packet's rays reach: the kernel's per-sphere
+    /// loop (<see cref="LaneSphere.NegatedNearRoot"/>) run over the leaves the packet enters, near child first.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    public static LaneHit<TL> Nearest<TL, TP>(PacketHierarchy hierarchy, in Lanes3<TL> origin, in Lanes3<TL> direction, TL dd, TL rdd, TL depthTolerance, bool checkOrder, in LaneHit<TL> background)
+        where TL : struct, ILanes<TL>
+        where TP : struct, IProjection
+    {
+        (TL dx, TL dy, TL dz) = (direction.X, direction.Y, direction.Z);
+        TL zero = default;
+        TL minusOne = TL.Broadcast(-1f);
+        TL tiny = TL.Sqrt(dd) * TL.Broadcast(1e-12f);   // a zero component would make 0·∞: it moves the box test's ray by 10⁻¹²
+        TL nx = minusOne / TL.Select(TL.LessThan(TL.Abs(dx), tiny), tiny, dx);
+        TL ny = minusOne / TL.Select(TL.LessThan(TL.Abs(dy), tiny), tiny, dy);
+        TL nz = minusOne / TL.Select(TL.LessThan(TL.Abs(dz), tiny), tiny, dz);
+        TL slack = TL.Broadcast(hierarchy.RadiusSlack) * TL.Sqrt(rdd);
+        var state = new LaneHit<TL>(background.Nearest, background.R, background.G, background.B, TL.Broadcast(float.PositiveInfinity), default);
+        uint negative = (TL.MaskBits(TL.LessThan(dx, zero)) & 1) | ((TL.MaskBits(TL.LessThan(dy, zero)) & 1) << 1) | ((TL.MaskBits(TL.LessThan(dz, zero)) & 1) << 2);
+        PacketNode[] nodes = hierarchy.Nodes;
+        SphereConstants[] spheres = hierarchy.Spheres;
+        Span<int> stack = stackalloc int[hierarchy.Depth + 1];
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0)
+        {
+            int index = stack[--top];
+            ref readonly PacketNode node = ref nodes[index];
+            if (!Enters<TL, TP>(node, origin, nx, ny, nz, state.Nearest, slack))
+            {
+                continue;
+            }
+
+            if (node.Count == 0)
+            {
+                bool rightFirst = ((negative >> node.Axis) & 1) != 0;
+                stack[top++] = rightFirst ? index + 1 : node.Start;
+                stack[top++] = rightFirst ? node.Start : index + 1;
+                continue;
+            }
+
+            TestLeaf<TL, TP>(spheres, node, origin, dx, dy, dz, dd, rdd, depthTolerance, checkOrder, ref state);
+        }
+
+        return state;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL Max<TL>(TL a, TL b)
+        where TL : struct, ILanes<TL> => TL.Select(TL.LessThan(a, b), b, a);
+}
+
+/// <summary>
+/// One node of a <see cref="PacketHierarchy"/>: its widened box as offsets from the frame's fixed point
+/// (fixed point − corner), and the <see cref="HierarchyNode"/>'s links.
+/// </summary>
+/// <param name="Lo">Fixed point − the lower corner.</param>
+/// <param name="Hi">Fixed point − the upper corner.</param>
+/// <param name="Start">A leaf's first sphere, or an inner node's right child.</param>
+/// <param name="Count">A leaf's sphere count; 0 for an inner node.</param>
+/// <param name="Axis">The split axis.</param>
+internal readonly record struct PacketNode(Float3 Lo, Float3 Hi, int Start, int Count, int Axis);
+
+/// <summary>A half-space n·x + d ≥ 0 (relative to the frame's fixed point).</summary>
+/// <param name="Normal">n, pointing inside.</param>
+/// <param name="Offset">d.</param>
+internal readonly record struct Plane(Double3 Normal, double Offset);
+
+/// <summary>A packet's nearest hits: −t, colour, the smallest |Δ|/bound and the lanes uncertain in depth order.</summary>
+internal readonly record struct LaneHit<TL>(TL Nearest, TL R, TL G, TL B, TL Closest, TL Unsure)
+    where TL : struct, ILanes<TL>;
