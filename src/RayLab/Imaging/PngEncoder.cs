@@ -1,4 +1,5 @@
 using System.Buffers.Binary;
+using System.IO.Hashing;
 using System.IO.Compression;
 using System.Text;
 
@@ -147,9 +148,11 @@ public static class PngEncoder
         Encoding.ASCII.GetBytes(type, header[4..]);
         stream.Write(header);
         stream.Write(data);
-        uint crc = Crc32.Update(Crc32.Update(0xFFFFFFFFu, header[4..]), data) ^ 0xFFFFFFFFu;
+        var crc = new Crc32(); // System.IO.Hashing: the ISO 3309 CRC PNG chunks use, vectorised
+        crc.Append(header[4..]);
+        crc.Append(data);
         Span<byte> crcBytes = stackalloc byte[4];
-        BinaryPrimitives.WriteUInt32BigEndian(crcBytes, crc);
+        BinaryPrimitives.WriteUInt32BigEndian(crcBytes, crc.GetCurrentHashAsUInt32());
         stream.Write(crcBytes);
     }
 }
