@@ -4,7 +4,7 @@ namespace RayLab.Benchmarks;
 
 /// <summary>
 /// RayLab's benchmarks (BenchmarkDotNet): <c>dotnet run -c Release --project benchmarks/RayLab.Benchmarks -- --filter '*'</c>,
-/// or one class, e.g. <c>--filter '*Frame*'</c>. <c>-- png-sizes</c> prints the PNG size table instead.
+/// or one class, e.g. <c>--filter '*Frame*'</c>. <c>-- png-sizes</c> prints the PNG size table (and Skia's sizes) instead.
 /// </summary>
 public static class Program
 {
@@ -13,6 +13,8 @@ public static class Program
         if (args is ["png-sizes"])
         {
             PngSizes.Print(Console.Out);
+            Console.Out.WriteLine();
+            SkiaSizes.Print(Console.Out);
             return 0;
         }
 

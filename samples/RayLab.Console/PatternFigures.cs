@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Text.RegularExpressions;
+using RayLab.Comparison;
 using RayLab.Patterns;
 using RayLab.Sampling;
 using ScottPlot;
@@ -21,6 +22,7 @@ internal static partial class PatternFigures
     public static Plot Pixel(string title, SamplePoint[] points, int strata = 0, bool rooks = false)
     {
         var plot = new Plot();
+        ChartFont.Apply(plot);
         UnitFrame(plot, 1);
         if (rooks)
         {
@@ -41,6 +43,7 @@ internal static partial class PatternFigures
     public static Plot Block(string title, IPixelSampler sampler)
     {
         var plot = new Plot();
+        ChartFont.Apply(plot);
         UnitFrame(plot, 4);
         Lines(plot, 4, 4, Colors.Gray, 1.5f);
         for (int y = 0; y < 4; y++)
@@ -59,6 +62,7 @@ internal static partial class PatternFigures
     public static Plot Adaptive(AdaptiveDiagram diagram, byte[] backgroundPng)
     {
         var plot = new Plot();
+        ChartFont.Apply(plot);
         var image = new ScottPlot.Image(backgroundPng);
         plot.Add.ImageRect(image, new CoordinateRect(0, 1, 1, 0));
         foreach (AdaptiveSquare square in diagram.Squares)
@@ -124,6 +128,7 @@ internal static partial class PatternFigures
         }
 
         var plot = new Plot();
+        ChartFont.Apply(plot);
         var heat = plot.Add.Heatmap(data);
         heat.Colormap = new ScottPlot.Colormaps.Viridis();
         heat.Extent = new CoordinateRect(-k - 0.5, k + 0.5, -k - 0.5, k + 0.5);
@@ -142,6 +147,7 @@ internal static partial class PatternFigures
     public static Plot Lines(string title, string xLabel, string yLabel, IReadOnlyList<(string Name, double[] X, double[] Y)> series, double? reference = null, string? referenceLabel = null)
     {
         var plot = new Plot();
+        ChartFont.Apply(plot);
         for (int i = 0; i < series.Count; i++)
         {
             (string name, double[] x, double[] y) = series[i];
@@ -172,6 +178,7 @@ internal static partial class PatternFigures
     public static Plot LogLog(string title, string yLabel, IReadOnlyList<(string Name, int[] N, double[] Y)> series)
     {
         var plot = new Plot();
+        ChartFont.Apply(plot);
         for (int i = 0; i < series.Count; i++)
         {
             (string name, int[] n, double[] y) = series[i];

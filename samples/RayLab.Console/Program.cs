@@ -71,7 +71,7 @@ public static class Program
         // a scene file that omits the field gets (SamplerSettings' defaults, as SceneFile reads them).
         SamplerSettings d = SamplerSettings.Default;
         var scene = new Argument<string>("scene") { Description = "The scene file: JSON with image, camera, spheres, … (see the README's \"Scene files\"), or the name of a scene raylab carries (see 'raylab scenes')." };
-        var output = new Option<string>("--output", "-o") { Description = "The image to write, .png or .bmp (the format follows the extension).", HelpName = "OUT.png", Required = true };
+        var output = new Option<string>("--output", "-o") { Description = "The image to write, .png, .bmp, .jpg/.jpeg or .webp (the format follows the extension).", HelpName = "OUT.png", Required = true };
         var camera = new Option<string?>("--camera") { Description = $"{Choices(CameraSettings.Types)}. Default: the scene's camera.type.", HelpName = "TYPE" };
         var sampler = new Option<string?>("--sampler") { Description = $"{Choices(SamplerSettings.Types)}. Default: the scene's sampler.type; {d.Type} if omitted.", HelpName = "NAME" };
         var samples = new Option<int?>("--samples") { Description = $"Samples per pixel, 1 to {SceneFile.MaxSamples}; a perfect square (1, 4, 9, …) for regular, jittered and multijittered. Default: the scene's sampler.samples; {d.Samples} if omitted.", HelpName = "N" };
@@ -86,11 +86,12 @@ public static class Program
         var quincunx = new Option<bool>("--quincunx") { Description = $"Adaptive: trace every pixel's centre, even where its corners agree (≈ 1 ray per pixel more). Default: the scene's sampler.quincunx; {(d.Quincunx ? "true" : "false")} if omitted." };
         var guard = new Option<bool>("--guard") { Description = $"Adaptive: also refine, down to the maximum depth, every square a sphere's silhouette may cross although its points agree (never loses a small sphere or a sliver). Default: the scene's sampler.guard; {(d.Guard ? "true" : "false")} if omitted." };
         var kernel = new Option<string?>("--kernel") { Description = $"Point samplers and the adaptive sampler's traced points: the render loop, {Choices(RenderJob.Kernels)}; auto takes the widest SIMD packet the CPU runs, scalar is the double-precision reference loop. Default: auto.", HelpName = "KERNEL" };
-        var heatmap = new Option<string?>("--heatmap") { Description = "Also write the primary rays spent per pixel as an image with a legend, .png or .bmp. Default: none.", HelpName = "HEAT.png" };
+        var heatmap = new Option<string?>("--heatmap") { Description = "Also write the primary rays spent per pixel as an image with a legend, .png, .bmp, .jpg/.jpeg or .webp. Default: none.", HelpName = "HEAT.png" };
+        var quality = new Option<int?>("--quality") { Description = $"JPEG and WebP quality, 0 to 100 (higher keeps more detail in a larger file); PNG and BMP are lossless and ignore it. Default: {ImageFormats.DefaultQuality}.", HelpName = "Q" };
 
         var render = new Command("render", "Render a scene file into an image.")
         {
-            scene, output, camera, sampler, samples, seed, minDepth, maxDepth, contrast, quincunx, guard, width, height, threads, kernel, stats, heatmap,
+            scene, output, camera, sampler, samples, seed, minDepth, maxDepth, contrast, quincunx, guard, width, height, threads, kernel, stats, heatmap, quality,
         };
         render.SetAction(result => RenderJob.Run(
             new RenderRequest(
@@ -110,7 +111,8 @@ public static class Program
                 result.GetValue(heatmap),
                 result.GetValue(kernel),
                 result.GetValue(quincunx),
-                result.GetValue(guard)),
+                result.GetValue(guard),
+                result.GetValue(quality)),
             stdout,
             stderr,
             cancellation));

@@ -97,6 +97,11 @@ public static class RenderJob
             }
         }
 
+        if (request.Quality is < 0 or > 100)
+        {
+            throw new UsageException($"--quality: {request.Quality} is out of range; expected 0 to 100");
+        }
+
         CheckChoice(request.Camera, "--camera", "camera", CameraSettings.Types);
         CheckChoice(request.Sampler, "--sampler", "sampler", SamplerSettings.Types);
         CheckChoice(request.Kernel, "--kernel", "kernel", Kernels);
@@ -143,11 +148,12 @@ public static class RenderJob
         cancellation.ThrowIfCancellationRequested();
 
         var encodeClock = Stopwatch.StartNew();
-        image.Save(request.OutputPath);
+        int quality = request.Quality ?? ImageFormats.DefaultQuality;
+        image.Save(request.OutputPath, quality);
         double encodeMs = encodeClock.Elapsed.TotalMilliseconds;
         if (raysPerPixel is not null)
         {
-            HeatMap.Render(raysPerPixel, image.Width, image.Height).Save(request.HeatmapPath!);
+            HeatMap.Render(raysPerPixel, image.Width, image.Height).Save(request.HeatmapPath!, quality);
         }
 
         if (request.StatsPath is not null)

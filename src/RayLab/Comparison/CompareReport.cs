@@ -24,14 +24,14 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     /// <summary>The results, grouped into the chart's lines in the order they first appear.</summary>
     public IReadOnlyList<IGrouping<string, CompareResult>> Series { get; } = [.. results.GroupBy(r => r.Case.Series)];
 
-    /// <summary>Writes results.csv, results.md, error-vs-time.svg, error-vs-rays.svg and index.html into <paramref name="folder"/>.</summary>
+    /// <summary>Writes results.csv, results.md, the charts error-vs-time and error-vs-rays (each .png and .svg) and index.html into <paramref name="folder"/>.</summary>
     /// <param name="folder">An existing folder (the images are already in its <c>images/</c> and <c>errors/</c>).</param>
     public void WriteTo(string folder)
     {
         File.WriteAllText(Path.Combine(folder, "results.csv"), Csv());
         File.WriteAllText(Path.Combine(folder, "results.md"), Markdown());
-        File.WriteAllText(Path.Combine(folder, "error-vs-time.svg"), Chart("RMSE against time", r => r.Time.TotalMilliseconds, "median render time (ms)"));
-        File.WriteAllText(Path.Combine(folder, "error-vs-rays.svg"), Chart("RMSE against rays", r => r.RaysPerPixel, "primary rays per pixel"));
+        Chart(Path.Combine(folder, "error-vs-time"), "RMSE against time", r => r.Time.TotalMilliseconds, "median render time (ms)");
+        Chart(Path.Combine(folder, "error-vs-rays"), "RMSE against rays", r => r.RaysPerPixel, "primary rays per pixel");
         File.WriteAllText(Path.Combine(folder, "index.html"), Html());
     }
 
@@ -242,8 +242,8 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         }
     }
 
-    private string Chart(string title, Func<CompareResult, double> x, string xLabel) => LogLogChart.ToSvg(
-        title, xLabel, "RMSE (8-bit levels)",
+    private void Chart(string stem, string title, Func<CompareResult, double> x, string xLabel) => LogLogChart.Save(
+        stem, title, xLabel, "RMSE (8-bit levels)",
         [.. Series.Select(s => new LogLogChart.Series(s.Key, [.. s.Select(r => (x(r), r.Error.Rmse))]))]);
 
     private string Html()
@@ -254,8 +254,8 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
             .Append("<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}td,th{padding:2px 8px;border-bottom:1px solid #ddd;text-align:right}td:first-child,td:nth-child(2){text-align:left}</style></head>\n<body>\n")
             .Append($"<h1>raylab compare</h1>\n<p>{E(heading)}</p>\n<p>{E(Definition)}</p>\n")
             .Append("<p><a href=\"results.md\">results.md</a> (table, slopes, times to reach an error) · <a href=\"results.csv\">results.csv</a> · <a href=\"images/exact.png\">the exact image</a></p>\n")
-            .Append("<p><a href=\"error-vs-time.svg\"><img src=\"error-vs-time.svg\" alt=\"RMSE against time, log-log\"></a></p>\n")
-            .Append("<p><a href=\"error-vs-rays.svg\"><img src=\"error-vs-rays.svg\" alt=\"RMSE against rays per pixel, log-log\"></a></p>\n")
+            .Append("<p><a href=\"error-vs-time.svg\"><img src=\"error-vs-time.png\" alt=\"RMSE against time, log-log\"></a></p>\n")
+            .Append("<p><a href=\"error-vs-rays.svg\"><img src=\"error-vs-rays.png\" alt=\"RMSE against rays per pixel, log-log\"></a></p>\n")
             .Append("<table>\n<tr><th>sampler</th><th>setting</th><th>rays/px</th><th>time (ms)</th><th>RMSE</th><th>max</th><th>&gt; 1 level</th><th>image</th><th>error</th></tr>\n");
         foreach (CompareResult r in results)
         {

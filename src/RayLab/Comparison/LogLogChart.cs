@@ -1,26 +1,28 @@
 using System.Globalization;
-using System.Security;
-using System.Text;
+using ScottPlot;
+using ScottPlot.TickGenerators;
+using RayLab.Imaging;
 
 namespace RayLab.Comparison;
 
 /// <summary>
-/// A line chart with logarithmic axes, written as SVG by hand (no charting library restores here): labelled
-/// decades with faint lines at 2…9, one polyline with point markers per series, one colour per series and a
-/// legend. Points with a coordinate that is not a positive finite number cannot be placed and are left out.
+/// The compare report's line charts with logarithmic axes, drawn by ScottPlot: both axes labelled in decades with
+/// faint lines at 2…9, a title, a legend to the right, and each line told apart by its colour (a palette made for
+/// many categories) and its marker's shape. Points with a coordinate that is not a positive finite number cannot be
+/// placed and are left out. Text is set in the embedded DejaVu Sans, so the charts look the same on every machine.
 /// </summary>
 public static class LogLogChart
 {
-    /// <summary>The SVG's size in pixels.</summary>
-    public const int Width = 780, Height = 480;
+    /// <summary>The charts' size in pixels.</summary>
+    public const int Width = 900, Height = 540;
 
-    private const double Left = 80, Top = 40, Right = Width - 220, Bottom = Height - 60;
-
-    // Tableau 10 and two more: distinguishable, and readable on white.
-    private static readonly string[] Palette =
+    // The markers, in order: filled shapes first, then open ones and strokes; with the palette's 25 colours every
+    // line of a chart of up to 25 lines has its own colour and its neighbours in the legend have different shapes.
+    private static readonly MarkerShape[] Shapes =
     [
-        "#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f", "#edc948",
-        "#b07aa1", "#ff9da7", "#9c755f", "#7f7f7f", "#17becf", "#1b1b1b",
+        MarkerShape.FilledCircle, MarkerShape.FilledSquare, MarkerShape.FilledTriangleUp, MarkerShape.FilledDiamond,
+        MarkerShape.FilledTriangleDown, MarkerShape.OpenCircle, MarkerShape.OpenSquare, MarkerShape.OpenTriangleUp,
+        MarkerShape.OpenDiamond, MarkerShape.Cross, MarkerShape.Eks,
     ];
 
     /// <summary>One line on the chart.</summary>
@@ -28,60 +30,63 @@ public static class LogLogChart
     /// <param name="Points">The points, joined in this order.</param>
     public sealed record Series(string Name, IReadOnlyList<(double X, double Y)> Points);
 
-    /// <summary>Draws the chart.</summary>
+    /// <summary>The chart as a ScottPlot <see cref="Plot"/>, to change or save further (the caller disposes it).</summary>
     /// <param name="title">The title above the plot.</param>
     /// <param name="xLabel">The horizontal axis's label.</param>
     /// <param name="yLabel">The vertical axis's label.</param>
-    /// <param name="series">The lines, coloured in order.</param>
-    /// <returns>A standalone SVG document.</returns>
-    public static string ToSvg(string title, string xLabel, string yLabel, IReadOnlyList<Series> series)
+    /// <param name="series">The lines, coloured and marked in order.</param>
+    /// <returns>The plot.</returns>
+    public static Plot Create(string title, string xLabel, string yLabel, IReadOnlyList<Series> series)
     {
+        ArgumentNullException.ThrowIfNull(title);
+        ArgumentNullException.ThrowIfNull(xLabel);
+        ArgumentNullException.ThrowIfNull(yLabel);
         ArgumentNullException.ThrowIfNull(series);
+        ChartFonts.Register();
+        var plot = new Plot();
+        plot.Font.Set(LabelFont.FamilyName);
+        plot.Title(title, size: 17);
+        plot.XLabel(xLabel, size: 14);
+        plot.YLabel(yLabel, size: 14);
+
+        var palette = new ScottPlot.Palettes.Tsitsulin();
+        for (int i = 0; i < series.Count; i++)
+        {
+            (double X, double Y)[] points = [.. series[i].Points.Where(Drawable)];
+            var line = plot.Add.ScatterLine(
+                points.Select(p => Math.Log10(p.X)).ToArray(), points.Select(p => Math.Log10(p.Y)).ToArray(), palette.GetColor(i));
+            line.LegendText = series[i].Name;
+            line.LineWidth = 1.5f;
+            line.MarkerShape = Shapes[i % Shapes.Length];
+            line.MarkerSize = 8;
+        }
+
         (double X, double Y)[] all = [.. series.SelectMany(s => s.Points).Where(Drawable)];
         (int xLo, int xHi) = Decades(all.Select(p => p.X));
         (int yLo, int yHi) = Decades(all.Select(p => p.Y));
-        double Px(double x) => Left + ((Math.Log10(x) - xLo) / (xHi - xLo) * (Right - Left));
-        double Py(double y) => Bottom - ((Math.Log10(y) - yLo) / (yHi - yLo) * (Bottom - Top));
+        plot.Axes.Bottom.TickGenerator = DecadeTicks(xLo, xHi);
+        plot.Axes.Left.TickGenerator = DecadeTicks(yLo, yHi);
+        plot.Axes.SetLimits(xLo, xHi, yLo, yHi);
+        plot.Grid.MajorLineColor = Colors.Black.WithAlpha(0.22);
+        plot.Grid.MinorLineColor = Colors.Black.WithAlpha(0.07);
+        plot.Grid.MinorLineWidth = 1;
+        plot.Legend.FontSize = 13;
+        plot.ShowLegend(Edge.Right);
+        return plot;
+    }
 
-        var svg = new StringBuilder();
-        Append(svg, $"""<svg xmlns="http://www.w3.org/2000/svg" width="{Width}" height="{Height}" viewBox="0 0 {Width} {Height}" font-family="sans-serif" font-size="12">""");
-        Append(svg, $"""<rect width="{Width}" height="{Height}" fill="white"/>""");
-        Append(svg, $"""<text x="{(Left + Right) / 2:F1}" y="22" text-anchor="middle" font-size="15">{Escape(title)}</text>""");
-        for (int k = xLo; k <= xHi; k++)
-        {
-            GridLines(svg, k, k < xHi, m => Px(m), vertical: true);
-            Append(svg, $"""<text class="x-decade" x="{Px(Math.Pow(10, k)):F2}" y="{Bottom + 18:F1}" text-anchor="middle">{Decade(k)}</text>""");
-        }
-
-        for (int k = yLo; k <= yHi; k++)
-        {
-            GridLines(svg, k, k < yHi, m => Py(m), vertical: false);
-            Append(svg, $"""<text class="y-decade" x="{Left - 8:F1}" y="{Py(Math.Pow(10, k)):F2}" text-anchor="end" dominant-baseline="middle">{Decade(k)}</text>""");
-        }
-
-        Append(svg, $"""<rect x="{Left}" y="{Top}" width="{Right - Left}" height="{Bottom - Top}" fill="none" stroke="black"/>""");
-        Append(svg, $"""<text x="{(Left + Right) / 2:F1}" y="{Height - 18}" text-anchor="middle">{Escape(xLabel)}</text>""");
-        Append(svg, $"""<text transform="translate(20 {(Top + Bottom) / 2:F1}) rotate(-90)" text-anchor="middle">{Escape(yLabel)}</text>""");
-
-        for (int i = 0; i < series.Count; i++)
-        {
-            string colour = Palette[i % Palette.Length];
-            string dash = i < Palette.Length ? "" : """ stroke-dasharray="6 3" """;
-            (double X, double Y)[] points = [.. series[i].Points.Where(Drawable)];
-            string coordinates = string.Join(' ', points.Select(p => Invariant($"{Px(p.X):F2},{Py(p.Y):F2}")));
-            Append(svg, $"""<polyline class="series" data-series="{Escape(series[i].Name)}" points="{coordinates}" fill="none" stroke="{colour}" stroke-width="2"{dash}/>""");
-            foreach ((double x, double y) in points)
-            {
-                Append(svg, $"""<circle cx="{Px(x):F2}" cy="{Py(y):F2}" r="3" fill="{colour}"/>""");
-            }
-
-            double ly = Top + 8 + (i * 18);
-            Append(svg, $"""<line x1="{Right + 16}" y1="{ly:F1}" x2="{Right + 40}" y2="{ly:F1}" stroke="{colour}" stroke-width="2"{dash}/>""");
-            Append(svg, $"""<text class="legend" x="{Right + 46}" y="{ly:F1}" dominant-baseline="middle">{Escape(series[i].Name)}</text>""");
-        }
-
-        svg.Append("</svg>\n");
-        return svg.ToString();
+    /// <summary>Writes the chart as <paramref name="stem"/>.png and <paramref name="stem"/>.svg.</summary>
+    /// <param name="stem">The path without extension.</param>
+    /// <param name="title">The title above the plot.</param>
+    /// <param name="xLabel">The horizontal axis's label.</param>
+    /// <param name="yLabel">The vertical axis's label.</param>
+    /// <param name="series">The lines, coloured and marked in order.</param>
+    public static void Save(string stem, string title, string xLabel, string yLabel, IReadOnlyList<Series> series)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(stem);
+        using Plot plot = Create(title, xLabel, yLabel, series);
+        plot.SavePng(stem + ".png", Width, Height);
+        plot.SaveSvg(stem + ".svg", Width, Height);
     }
 
     private static bool Drawable((double X, double Y) p) => p.X > 0 && p.Y > 0 && double.IsFinite(p.X) && double.IsFinite(p.Y);
@@ -100,34 +105,27 @@ public static class LogLogChart
         return (lo, Math.Max(hi, lo + 1));
     }
 
-    private static void GridLines(StringBuilder svg, int k, bool withMinor, Func<double, double> at, bool vertical)
+    /// <summary>Major ticks labelled at each decade 10^k (the axis holds log₁₀ of the values), minor ones at 2…9 · 10^k.</summary>
+    private static NumericManual DecadeTicks(int lo, int hi)
     {
-        for (int m = 1; m <= (withMinor ? 9 : 1); m++)
+        var ticks = new NumericManual();
+        for (int k = lo; k <= hi; k++)
         {
-            double p = at(m * Math.Pow(10, k));
-            string stroke = m == 1 ? "#c8c8c8" : "#ececec";
-            if (vertical)
+            ticks.AddMajor(k, Decade(k));
+            for (int m = 2; m <= 9 && k < hi; m++)
             {
-                Append(svg, $"""<line x1="{p:F2}" y1="{Top}" x2="{p:F2}" y2="{Bottom}" stroke="{stroke}"/>""");
-            }
-            else
-            {
-                Append(svg, $"""<line x1="{Left}" y1="{p:F2}" x2="{Right}" y2="{p:F2}" stroke="{stroke}"/>""");
+                ticks.AddMinor(k + Math.Log10(m));
             }
         }
+
+        return ticks;
     }
 
     /// <summary>10^k as a plain number from 0.0001 to 100000, beyond that as 1e<i>k</i>.</summary>
-    private static string Decade(int k) => k switch
+    internal static string Decade(int k) => k switch
     {
-        < -4 or > 5 => Invariant($"1e{k}"),
+        < -4 or > 5 => string.Create(CultureInfo.InvariantCulture, $"1e{k}"),
         < 0 => "0." + new string('0', -k - 1) + "1",
         _ => "1" + new string('0', k),
     };
-
-    private static string Escape(string text) => SecurityElement.Escape(text);
-
-    private static void Append(StringBuilder svg, FormattableString line) => svg.Append(Invariant(line)).Append('\n');
-
-    private static string Invariant(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
 }

@@ -1,17 +1,19 @@
 using System.Globalization;
+using SkiaSharp;
 
 namespace RayLab.Imaging;
 
 /// <summary>
 /// Draws a per-pixel quantity — the primary rays an adaptive render spent on each pixel — as a false-colour
-/// picture with a legend: a colour bar on the right labelled with its numbers. Drawn with RayLab's own image
-/// type and a built-in 3×5 pixel font; no imaging library is needed.
+/// picture with a legend: a colour bar on the right, titled with the unit and labelled with its scale. The
+/// legend's text is drawn by SkiaSharp in the embedded DejaVu Sans (<see cref="LabelFont"/>).
 /// </summary>
 public static class HeatMap
 {
-    private const int Scale = 2;          // font pixels per glyph pixel
-    private const int LegendWidth = 24 + (6 * 4 * Scale);
-    private const int MinHeight = 5 * 12 * Scale;
+    private const int LegendWidth = 84;
+    private const int MinHeight = 120;
+    private const int Gap = 6, BarWidth = 12, Top = 28, BottomMargin = 8;
+    private const float TextSize = 12;
 
     // Viridis, sampled at five stops: dark blue (few rays) to yellow (many).
     private static readonly (double R, double G, double B)[] Ramp =
@@ -31,7 +33,7 @@ public static class HeatMap
     /// <param name="values">One value per pixel.</param>
     /// <param name="width">Width W of the data.</param>
     /// <param name="height">Height H of the data.</param>
-    /// <param name="title">The colour bar's title, up to 7 characters of the built-in font (digits, <c>. /</c> and <c>a e l p r s v x y</c>).</param>
+    /// <param name="title">The colour bar's title, the values' unit (shrunk to fit the legend's width; empty for none).</param>
     /// <returns>An image W + legend wide and at least H high.</returns>
     /// <exception cref="ArgumentException">The span's length is not W·H, or a value is not finite.</exception>
     public static Image Render(ReadOnlySpan<float> values, int width, int height, string title)
@@ -71,7 +73,7 @@ public static class HeatMap
             }
         }
 
-        DrawLegend(image, width + 6, min, max, title);
+        DrawLegend(image, width, min, max, title);
         return image;
     }
 
@@ -92,91 +94,46 @@ public static class HeatMap
 
     private static void DrawLegend(Image image, int x0, float min, float max, string title)
     {
-        const int BarWidth = 12, Top = 14 * Scale;
-        int bottom = image.Height - (4 * Scale);
-        DrawText(image, x0, 2, title);
-        for (int y = Top; y <= bottom; y++)
+        int height = image.Height;
+        int bottom = height - BottomMargin;
+        using var strip = new SKBitmap(new SKImageInfo(LegendWidth, height, SKColorType.Rgba8888, SKAlphaType.Opaque));
+        using (var canvas = new SKCanvas(strip))
+        using (SKFont font = LabelFont.Create(TextSize))
+        using (var ink = new SKPaint { Color = SKColors.Black, IsAntialias = true })
+        using (var tick = new SKPaint { Color = SKColors.Black, IsAntialias = false })
         {
-            Rgb24 colour = ColorAt((bottom - y) / (double)(bottom - Top));
-            image.GetRowSpan(y).Slice(x0, BarWidth).Fill(colour);
-        }
-
-        const int Ticks = 5;
-        for (int k = 0; k < Ticks; k++)
-        {
-            double f = k / (double)(Ticks - 1);
-            int y = bottom - (int)Math.Round(f * (bottom - Top));
-            image.GetRowSpan(y).Slice(x0 + BarWidth, 2).Fill(new Rgb24(0, 0, 0));
-            double value = min + (f * (max - min));
-            string label = value.ToString(value >= 100 || value == Math.Floor(value) ? "0" : "0.#", CultureInfo.InvariantCulture);
-            DrawText(image, x0 + BarWidth + 8, Math.Clamp(y - (5 * Scale / 2), 0, image.Height - (5 * Scale)), label);
-        }
-    }
-
-    /// <summary>Draws text in black with the 3×5 font; characters without a glyph are left blank.</summary>
-    internal static void DrawText(Image image, int x, int y, string text)
-    {
-        foreach (char ch in text)
-        {
-            if (Font.TryGetValue(ch, out ushort bits))
+            canvas.Clear(SKColors.White);
+            if (title.Length > 0)
             {
-                for (int gy = 0; gy < 5; gy++)
-                {
-                    for (int gx = 0; gx < 3; gx++)
-                    {
-                        if ((bits >> (14 - ((gy * 3) + gx)) & 1) != 0)
-                        {
-                            for (int sy = 0; sy < Scale; sy++)
-                            {
-                                int py = y + (gy * Scale) + sy;
-                                if (py >= 0 && py < image.Height)
-                                {
-                                    Span<Rgb24> row = image.GetRowSpan(py);
-                                    for (int sx = 0; sx < Scale; sx++)
-                                    {
-                                        int px = x + (gx * Scale) + sx;
-                                        if (px >= 0 && px < image.Width)
-                                        {
-                                            row[px] = default;
-                                        }
-                                    }
-                                }
-                            }
-                        }
-                    }
-                }
+                // The unit, shrunk if needed to fit the strip.
+                float room = LegendWidth - Gap - 2;
+                float width = font.MeasureText(title);
+                using SKFont titleFont = LabelFont.Create(width > room ? TextSize * room / width : TextSize);
+                canvas.DrawText(title, Gap, Top - 13, SKTextAlign.Left, titleFont, ink);
             }
 
-            x += 4 * Scale;
+            const int Ticks = 5;
+            for (int k = 0; k < Ticks; k++)
+            {
+                double f = k / (double)(Ticks - 1);
+                int y = bottom - (int)Math.Round(f * (bottom - Top));
+                canvas.DrawRect(SKRect.Create(Gap + BarWidth, y, 3, 1), tick);
+                double value = min + (f * (max - min));
+                string label = value.ToString(value >= 100 || value == Math.Floor(value) ? "0" : "0.#", CultureInfo.InvariantCulture);
+                float baseline = Math.Clamp(y + (TextSize * 0.36f), TextSize, height - 1);
+                canvas.DrawText(label, Gap + BarWidth + 6, baseline, SKTextAlign.Left, font, ink);
+            }
+        }
+
+        Image legend = Image.FromSKBitmap(strip);
+        for (int y = Top; y <= bottom; y++)
+        {
+            legend.GetRowSpan(y).Slice(Gap, BarWidth).Fill(ColorAt((bottom - y) / (double)(bottom - Top)));
+        }
+
+        for (int y = 0; y < height; y++)
+        {
+            legend.GetRowSpan(y).CopyTo(image.GetRowSpan(y)[x0..]);
         }
     }
-
-    /// <summary>3×5 glyphs, 15 bits each, row by row from the top-left bit (bit 14).</summary>
-    private static readonly Dictionary<char, ushort> Font = new()
-    {
-        ['0'] = Glyph("111", "101", "101", "101", "111"),
-        ['1'] = Glyph("010", "110", "010", "010", "111"),
-        ['2'] = Glyph("111", "001", "111", "100", "111"),
-        ['3'] = Glyph("111", "001", "111", "001", "111"),
-        ['4'] = Glyph("101", "101", "111", "001", "001"),
-        ['5'] = Glyph("111", "100", "111", "001", "111"),
-        ['6'] = Glyph("111", "100", "111", "101", "111"),
-        ['7'] = Glyph("111", "001", "010", "010", "010"),
-        ['8'] = Glyph("111", "101", "111", "101", "111"),
-        ['9'] = Glyph("111", "101", "111", "001", "111"),
-        ['.'] = Glyph("000", "000", "000", "000", "010"),
-        ['/'] = Glyph("001", "001", "010", "100", "100"),
-        ['r'] = Glyph("000", "110", "101", "100", "100"),
-        ['a'] = Glyph("000", "011", "101", "101", "011"),
-        ['y'] = Glyph("000", "101", "111", "001", "110"),
-        ['s'] = Glyph("000", "011", "110", "011", "110"),
-        ['p'] = Glyph("000", "110", "101", "110", "100"),
-        ['x'] = Glyph("000", "101", "010", "010", "101"),
-        ['e'] = Glyph("000", "011", "111", "100", "011"),
-        ['l'] = Glyph("110", "010", "010", "010", "111"),
-        ['v'] = Glyph("000", "101", "101", "101", "010"),
-    };
-
-    private static ushort Glyph(params string[] rows) =>
-        (ushort)Convert.ToInt32(string.Concat(rows), 2);
 }

@@ -78,16 +78,31 @@ public sealed class Image
     public Rgb24 GetPixel(int x, int y) => GetRowSpan(y)[CheckX(x)];
 
     /// <summary>
-    /// Saves the image, choosing the format from the extension (<c>.png</c>, <c>.bmp</c>). The file is written
-    /// under a temporary name in the same folder and renamed, so a failure never leaves a partial file.
+    /// Saves the image, choosing the format from the extension as System.Drawing's <c>Bitmap.Save</c> does:
+    /// <c>.png</c>, <c>.bmp</c>, <c>.jpg</c>/<c>.jpeg</c> or <c>.webp</c> (JPEG and WebP at quality
+    /// <see cref="ImageFormats.DefaultQuality"/>). The file is written under a temporary name in the same folder
+    /// and renamed, so a failure never leaves a partial file.
     /// </summary>
     /// <param name="path">The output path.</param>
-    /// <exception cref="NotSupportedException">The extension is not a supported format.</exception>
+    /// <exception cref="NotSupportedException">The extension is not a supported format (the message names them).</exception>
     /// <exception cref="DirectoryNotFoundException">The folder does not exist (the message names it).</exception>
     /// <exception cref="IOException">The folder cannot be written.</exception>
-    public void Save(string path)
+    public void Save(string path) => Save(path, ImageFormats.DefaultQuality);
+
+    /// <summary>
+    /// Saves the image, choosing the format from the extension (see <see cref="Save(string)"/>); JPEG and WebP
+    /// are written at <paramref name="quality"/>, which PNG and BMP (lossless) ignore.
+    /// </summary>
+    /// <param name="path">The output path.</param>
+    /// <param name="quality">JPEG/WebP quality, 0–100 (90 by default; higher keeps more detail in a larger file).</param>
+    /// <exception cref="ArgumentOutOfRangeException">The quality is outside 0–100.</exception>
+    /// <exception cref="NotSupportedException">The extension is not a supported format (the message names them).</exception>
+    /// <exception cref="DirectoryNotFoundException">The folder does not exist (the message names it).</exception>
+    /// <exception cref="IOException">The folder cannot be written.</exception>
+    public void Save(string path, int quality)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(path);
+        CheckQuality(quality);
         ImageFormat format = ImageFormat.FromPath(path);
         string full = Path.GetFullPath(path);
         string folder = Path.GetDirectoryName(full) ?? ".";
@@ -101,7 +116,7 @@ public sealed class Image
         {
             using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None))
             {
-                Save(stream, format);
+                Save(stream, format, quality);
                 stream.Flush(flushToDisk: true);
             }
 
@@ -118,12 +133,20 @@ public sealed class Image
         }
     }
 
+    /// <summary>Writes the image to a stream in the given format (JPEG and WebP at quality <see cref="ImageFormats.DefaultQuality"/>).</summary>
+    /// <param name="stream">A writable stream.</param>
+    /// <param name="format">The format.</param>
+    public void Save(Stream stream, ImageFormat format) => Save(stream, format, ImageFormats.DefaultQuality);
+
     /// <summary>Writes the image to a stream in the given format.</summary>
     /// <param name="stream">A writable stream.</param>
     /// <param name="format">The format.</param>
-    public void Save(Stream stream, ImageFormat format)
+    /// <param name="quality">JPEG/WebP quality, 0–100; PNG and BMP ignore it.</param>
+    /// <exception cref="ArgumentOutOfRangeException">The format is unknown or the quality is outside 0–100.</exception>
+    public void Save(Stream stream, ImageFormat format, int quality)
     {
         ArgumentNullException.ThrowIfNull(stream);
+        CheckQuality(quality);
         switch (format)
         {
             case ImageFormat.Png:
@@ -132,9 +155,19 @@ public sealed class Image
             case ImageFormat.Bmp:
                 BmpEncoder.Write(stream, this);
                 break;
+            case ImageFormat.Jpeg:
+            case ImageFormat.Webp:
+                SkiaEncoder.Write(stream, this, format, quality);
+                break;
             default:
                 throw new ArgumentOutOfRangeException(nameof(format), format, "Unknown image format.");
         }
+    }
+
+    private static void CheckQuality(int quality)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(quality);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(quality, 100);
     }
 
     private int CheckX(int x)

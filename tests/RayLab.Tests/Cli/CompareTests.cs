@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Text.RegularExpressions;
 using System.Xml.Linq;
 using RayLab.Cli;
+using RayLab.Comparison;
 using RayLab.Imaging;
 using RayLab.Rendering;
 using RayLab.Sampling;
@@ -26,7 +27,7 @@ public sealed partial class CompareTests : IDisposable
         }
         """;
 
-    private static readonly string[] ReportFiles = ["error-vs-rays.svg", "error-vs-time.svg", "index.html", "results.csv", "results.md"];
+    private static readonly string[] ReportFiles = ["error-vs-rays.png", "error-vs-rays.svg", "error-vs-time.png", "error-vs-time.svg", "index.html", "results.csv", "results.md"];
 
     private readonly TempDirectory _dir = new();
 
@@ -79,9 +80,14 @@ public sealed partial class CompareTests : IDisposable
         Assert.Contains("index.html", lines[^2], StringComparison.Ordinal);
         Assert.Matches(@"^total time \d+\.\d s$", lines[^1]);
 
-        // The charts have a line per series; index.html links every file it names, and they all exist.
-        XDocument chart = XDocument.Load(Path.Combine(report, "error-vs-time.svg"));
-        Assert.Equal(expectedSeries, chart.Descendants(XName.Get("polyline", "http://www.w3.org/2000/svg")).Select(p => (string)p.Attribute("data-series")!));
+        // The charts (ScottPlot, PNG and SVG) name every series; index.html links every file it names, and they all exist.
+        foreach (string chart in new[] { "error-vs-time", "error-vs-rays" })
+        {
+            string text = string.Concat(XDocument.Load(Path.Combine(report, chart + ".svg")).Descendants(XName.Get("text", "http://www.w3.org/2000/svg")).Select(t => t.Value));
+            Assert.All(expectedSeries, name => Assert.Contains(name, text, StringComparison.Ordinal));
+            Assert.Equal((LogLogChart.Width, LogLogChart.Height), (SkiaDecode.Load(Path.Combine(report, chart + ".png")) is var png ? (png.Width, png.Height) : default));
+        }
+
         string[] links = [.. Href().Matches(File.ReadAllText(Path.Combine(report, "index.html"))).Select(m => m.Groups[1].Value).Distinct()];
         Assert.Equal((2 * rows.Length) + 5, links.Length);
         Assert.All(links, l => Assert.True(File.Exists(Path.Combine(report, l)), l));
@@ -194,7 +200,7 @@ public sealed partial class CompareTests : IDisposable
 
     private static Image Load(string path)
     {
-        PngTestDecoder.Result png = PngTestDecoder.Decode(File.ReadAllBytes(path));
+        SkiaDecode.Result png = SkiaDecode.Decode(File.ReadAllBytes(path));
         var image = new Image(png.Width, png.Height);
         png.Rgb.CopyTo(image.PixelBytes);
         return image;

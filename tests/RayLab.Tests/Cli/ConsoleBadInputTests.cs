@@ -44,7 +44,9 @@ public sealed class ConsoleBadInputTests : IDisposable
     [InlineData(1, "--output", "the path is empty", "-o", " ")]
     [InlineData(1, "--stats", "not a usable path", "--stats", "{dir}/a\0b.json")]
     [InlineData(1, "--heatmap", "does not exist", "--heatmap", "{dir}/no-such-folder/heat.png")]
-    [InlineData(1, "--heatmap", ".png", "--heatmap", "{dir}/heat.jpg")]
+    [InlineData(1, "--heatmap", ".webp", "--heatmap", "{dir}/heat.gif")]
+    [InlineData(1, "--quality", "0 to 100", "--quality", "101")]
+    [InlineData(1, "--quality", "0 to 100", "--quality", "-1")]
     [InlineData(1, "--heatmap", "same file", "--heatmap", "{out}")]
     public void AnOptionProblemIsOneLineNamingTheOptionAndLeavesNoFile(int code, string option, string mention, params string[] options)
     {

@@ -100,7 +100,7 @@ public sealed partial class ConsoleFuzzTests : IDisposable
             Assert.Equal("", err);
             Assert.Single(Lines(@out));
             Assert.Equal(["out.png", "scene.json"], _dir.Entries());
-            PngTestDecoder.Result png = PngTestDecoder.Decode(File.ReadAllBytes(output));
+            SkiaDecode.Result png = SkiaDecode.Decode(File.ReadAllBytes(output));
             Assert.True(png.Width >= 1 && png.Height >= 1);
             File.Delete(output);
         }

@@ -259,7 +259,7 @@ public sealed class ConsoleTests : IDisposable
     [InlineData("small", "raylab: error: --width", "--width", "render", "{scene}", "-o", "{out}", "--width", "0")]
     [InlineData("small", "raylab: error: ", "--bogus", "render", "{scene}", "-o", "{out}", "--bogus")]
     [InlineData("small", "raylab: error: ", "--output", "render", "{scene}")]
-    [InlineData("small", "raylab: error: --output", ".jpg", "render", "{scene}", "-o", "{dir}/out.jpg")]
+    [InlineData("small", "raylab: error: --output", ".jpg", "render", "{scene}", "-o", "{dir}/out.tiff")]
     [InlineData("small", "raylab: error: --output", "no-such-folder", "render", "{scene}", "-o", "{dir}/no-such-folder/out.png")]
     [InlineData("small", "raylab: error: --stats", "no-such-folder", "render", "{scene}", "-o", "{out}", "--stats", "{dir}/no-such-folder/stats.json")]
     public void AnErrorIsOneLineNamingTheProblemAndLeavesNoFiles(string scene, string expectedStart, string mention, params string[] args) =>

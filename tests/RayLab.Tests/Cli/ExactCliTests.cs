@@ -47,7 +47,7 @@ public sealed class ExactCliTests : IDisposable
         SceneDescription scene = SceneFile.Load(LabScene);
         var expected = new Image(80, 60);
         new ExactRenderer().Render(scene.Scene, scene.Camera.CreateCamera(), expected);
-        Assert.Equal(expected.PixelBytes.ToArray(), BmpTestDecoder.Decode(File.ReadAllBytes(image)).Rgb);
+        Assert.Equal(expected.PixelBytes.ToArray(), SkiaDecode.Load(image).Rgb);
     }
 
     [Fact]

@@ -55,7 +55,7 @@ public sealed class HelpTests
     }
 
     [Theory]
-    [InlineData("--output", "(REQUIRED)", ".png or .bmp")]
+    [InlineData("--output", "(REQUIRED)", ".png, .bmp, .jpg/.jpeg or .webp")]
     [InlineData("--camera", "Default: the scene's camera.type.", "perspective or orthographic")]
     [InlineData("--sampler", "Default: the scene's sampler.type;", "regular, random, jittered, cmj, multijittered, nrooks, hammersley, sobol, adaptive or exact")]
     [InlineData("--samples", "Default: the scene's sampler.samples;", "1 to 65536; a perfect square (1, 4, 9, …) for regular, jittered and multijittered")]
@@ -69,7 +69,8 @@ public sealed class HelpTests
     [InlineData("--height", "Default: the scene's image.height.", "1 to 1048576, with W·H·3 ≤ 2,147,483,591 bytes")]
     [InlineData("--threads", "Default: all cores", "≥ 1")]
     [InlineData("--stats", "Default: none.", "JSON")]
-    [InlineData("--heatmap", "Default: none.", ".png or .bmp")]
+    [InlineData("--heatmap", "Default: none.", ".png, .bmp, .jpg/.jpeg or .webp")]
+    [InlineData("--quality", "Default: 90.", "0 to 100")]
     public void EachRenderOptionStatesItsDefaultAndRange(string option, string defaultText, string rangeText)
     {
         string entry = OptionEntry(RenderHelp(), option);
@@ -83,7 +84,7 @@ public sealed class HelpTests
     {
         string[] entries = OptionEntries(RenderHelp());
 
-        Assert.Equal(17, entries.Length); // --output, 15 other options and --help
+        Assert.Equal(18, entries.Length); // --output, 16 other options and --help
         Assert.All(entries.Where(e => !e.Contains("--help", StringComparison.Ordinal)), e =>
             Assert.True(e.Contains("Default:", StringComparison.Ordinal) || e.Contains("(REQUIRED)", StringComparison.Ordinal), e));
     }

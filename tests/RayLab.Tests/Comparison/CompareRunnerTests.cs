@@ -36,7 +36,7 @@ public sealed class CompareRunnerTests : IDisposable
             TestContext.Current.CancellationToken);
 
         Assert.Equal(["jittered", "rotated-grid", "mitchell"], report.Series.Select(s => s.Key));
-        foreach (string file in new[] { "index.html", "results.md", "error-vs-time.svg", "error-vs-rays.svg", "images/exact.png", "errors/mitchell-4---16.png" })
+        foreach (string file in new[] { "index.html", "results.md", "error-vs-time.svg", "error-vs-rays.svg", "error-vs-time.png", "error-vs-rays.png", "images/exact.png", "errors/mitchell-4---16.png" })
         {
             Assert.True(File.Exists(Path.Combine(folder, file)), $"{file} was not written");
         }

@@ -1,94 +1,110 @@
-using System.Globalization;
 using System.Xml.Linq;
 using RayLab.Comparison;
+using RayLab.Tests.Imaging;
+using ScottPlot;
+using ScottPlot.Plottables;
 
 namespace RayLab.Tests.Comparison;
 
-public class LogLogChartTests
+public sealed class LogLogChartTests : IDisposable
 {
     private static readonly XNamespace Svg = "http://www.w3.org/2000/svg";
+    private readonly TempDirectory _dir = new();
+
+    public void Dispose() => _dir.Dispose();
 
     [Fact]
-    public void TheSvgParsesWithLabelledDecadesAndALegend()
+    public void EachSeriesIsALineOfLog10PointsNamedInTheLegend()
     {
-        XDocument doc = XDocument.Parse(LogLogChart.ToSvg("error & time", "time (ms)", "RMSE (levels)",
+        using Plot plot = LogLogChart.Create("error & time", "time (ms)", "RMSE (levels)",
         [
             new("jittered", [(1, 100), (10, 10), (100, 1)]),
             new("random <1>", [(2, 50), (20, 20)]),
-        ]));
+        ]);
 
-        Assert.Equal(Svg + "svg", doc.Root!.Name);
-        Assert.Equal(["1", "10", "100"], Texts(doc, "x-decade"));
-        Assert.Equal(["1", "10", "100"], Texts(doc, "y-decade"));
-        Assert.Equal(["jittered", "random <1>"], Texts(doc, "legend"));
-        Assert.Contains(doc.Descendants(Svg + "text"), t => t.Value == "error & time");
+        Scatter[] lines = [.. plot.GetPlottables().OfType<Scatter>()];
+        Assert.Equal(["jittered", "random <1>"], lines.Select(l => l.LegendText));
+        Assert.Equal([(0, 2), (1, 1), (2, 0)], Coordinates(lines[0]));
+        Assert.Equal([(Math.Log10(2), Math.Log10(50)), (Math.Log10(20), Math.Log10(20))], Coordinates(lines[1]));
+        Assert.Equal("error & time", plot.Axes.Title.Label.Text);
     }
 
     [Fact]
-    public void OnePolylinePerSeriesWithItsOwnColourAndEveryPointOnItsDecade()
+    public void AxesAreLabelledInDecadesWithMinorTicksAtTwoToNine()
     {
-        XDocument doc = XDocument.Parse(LogLogChart.ToSvg("t", "x", "y",
+        using Plot plot = LogLogChart.Create("t", "x", "y",
         [
             new("a", [(0.01, 1000), (0.1, 100), (1, 10)]),
-            new("b", [(0.01, 10), (1, 1000)]),
-            new("c", [(0.1, 10)]),
-        ]));
+            new("b", [(0.02, 10), (0.5, 1000)]),
+        ]);
 
-        XElement[] lines = [.. doc.Descendants(Svg + "polyline")];
-        Assert.Equal(["a", "b", "c"], lines.Select(l => (string)l.Attribute("data-series")!));
-        Assert.Equal(3, lines.Select(l => (string)l.Attribute("stroke")!).Distinct().Count());
-
-        // Decades 0.01…1 across and 10…1000 up: each point sits where its decade's label is.
-        Assert.Equal(["0.01", "0.1", "1"], Texts(doc, "x-decade"));
-        Assert.Equal(["10", "100", "1000"], Texts(doc, "y-decade"));
-        double X(string label) => Coordinate(doc, "x-decade", label, "x");
-        double Y(string label) => Coordinate(doc, "y-decade", label, "y");
-        Assert.Equal([(X("0.01"), Y("1000")), (X("0.1"), Y("100")), (X("1"), Y("10"))], Points(lines[0]));
-        Assert.Equal([(X("0.01"), Y("10")), (X("1"), Y("1000"))], Points(lines[1]));
-        Assert.Equal([(X("0.1"), Y("10"))], Points(lines[2]));
-
-        // Log axes: equal ratios are equal distances, and larger values are higher up (smaller y).
-        Assert.Equal(X("0.1") - X("0.01"), X("1") - X("0.1"), 6);
-        Assert.True(Y("1000") < Y("100"));
+        Assert.Equal(["0.01", "0.1", "1"], MajorLabels(plot, plot.Axes.Bottom));
+        Assert.Equal(["10", "100", "1000"], MajorLabels(plot, plot.Axes.Left));
+        double[] minor = [.. Rendered(plot, plot.Axes.Bottom).Where(t => !t.IsMajor).Select(t => t.Position)];
+        Assert.Equal(16, minor.Length); // 2…9 in each of the two decades
+        Assert.Contains(minor, p => Math.Abs(p - Math.Log10(0.05)) < 1e-12);
+        AxisLimits limits = plot.Axes.GetLimits();
+        Assert.Equal((-2, 0, 1, 3), (limits.Left, limits.Right, limits.Bottom, limits.Top));
     }
 
     [Fact]
-    public void PointsBetweenDecadesAreOnTheLogScaleAndUndrawablePointsAreLeftOut()
+    public void UndrawablePointsAreLeftOutAndDecadesBeyondTheUsualRangeUseExponents()
     {
-        XDocument doc = XDocument.Parse(LogLogChart.ToSvg("t", "x", "y",
-            [new("s", [(1, 1), (Math.Sqrt(10), 0), (Math.Sqrt(10), Math.Sqrt(10)), (double.NaN, 5), (10, 10)])]));
+        using Plot plot = LogLogChart.Create("t", "x", "y",
+            [new("s", [(1e-6, 1e6), (Math.Sqrt(10), 0), (double.NaN, 5), (-1, 2), (2e-5, 3e7)])]);
 
-        (double X, double Y)[] points = Points(Assert.Single(doc.Descendants(Svg + "polyline")));
-        Assert.Equal(3, points.Length);
-        // √10 is half a decade: exactly midway between 1 and 10 on both axes.
-        Assert.Equal((points[0].X + points[2].X) / 2, points[1].X, 1);
-        Assert.Equal((points[0].Y + points[2].Y) / 2, points[1].Y, 1);
-        Assert.Equal(3, doc.Descendants(Svg + "circle").Count());
+        Assert.Equal(2, Coordinates(Assert.Single(plot.GetPlottables().OfType<Scatter>())).Length);
+        Assert.Equal(["1e-6", "1e-5", "0.0001"], MajorLabels(plot, plot.Axes.Bottom));
+        Assert.Equal(["1e6", "1e7", "1e8"], MajorLabels(plot, plot.Axes.Left));
+
+        using Plot empty = LogLogChart.Create("t", "x", "y", [new("nothing", [])]);
+        Assert.Equal(["1", "10"], MajorLabels(empty, empty.Axes.Bottom));
     }
 
     [Fact]
-    public void DecadesBeyondTheUsualRangeUseExponentsAndAnEmptyChartStillDraws()
+    public void TwelveLinesEachHaveTheirOwnColourAndNeighboursDifferInShape()
     {
-        XDocument wide = XDocument.Parse(LogLogChart.ToSvg("t", "x", "y", [new("s", [(1e-6, 1e6), (2e-5, 3e7)])]));
-        Assert.Equal(["1e-6", "1e-5", "0.0001"], Texts(wide, "x-decade"));
-        Assert.Equal(["1e6", "1e7", "1e8"], Texts(wide, "y-decade"));
+        LogLogChart.Series[] series = [.. Enumerable.Range(0, 12).Select(i => new LogLogChart.Series($"s{i}", [(1, i + 1.0), (10, i + 2.0)]))];
+        using Plot plot = LogLogChart.Create("t", "x", "y", series);
 
-        XDocument empty = XDocument.Parse(LogLogChart.ToSvg("t", "x", "y", [new("nothing", [])]));
-        Assert.Equal(["1", "10"], Texts(empty, "x-decade"));
-        Assert.Equal("", (string)Assert.Single(empty.Descendants(Svg + "polyline")).Attribute("points")!);
+        Scatter[] lines = [.. plot.GetPlottables().OfType<Scatter>()];
+        Assert.Equal(12, lines.Select(l => l.Color).Distinct().Count());
+        Assert.All(lines.Zip(lines.Skip(1)), pair => Assert.NotEqual(pair.First.MarkerShape, pair.Second.MarkerShape));
+        Assert.All(lines, l => Assert.NotEqual(MarkerShape.None, l.MarkerShape));
     }
 
-    private static string[] Texts(XDocument doc, string cls) =>
-        [.. doc.Descendants(Svg + "text").Where(t => (string?)t.Attribute("class") == cls).Select(t => t.Value)];
+    [Fact]
+    public void SaveWritesAPngWithTextAndAnSvgNamingTheTitleAndEverySeries()
+    {
+        string stem = _dir.File("chart");
+        LogLogChart.Save(stem, "RMSE against time", "time (ms)", "RMSE (levels)",
+            [new("jittered", [(1, 10), (100, 1)]), new("adaptive c=0.5", [(3, 5), (30, 0.5)])]);
 
-    private static double Coordinate(XDocument doc, string cls, string label, string attribute) =>
-        double.Parse((string)doc.Descendants(Svg + "text")
-            .Single(t => (string?)t.Attribute("class") == cls && t.Value == label).Attribute(attribute)!, CultureInfo.InvariantCulture);
-
-    private static (double X, double Y)[] Points(XElement polyline) =>
-        [.. ((string)polyline.Attribute("points")!).Split(' ', StringSplitOptions.RemoveEmptyEntries).Select(p =>
+        SkiaDecode.Result png = SkiaDecode.Load(stem + ".png");
+        Assert.Equal((LogLogChart.Width, LogLogChart.Height), (png.Width, png.Height));
+        // The title's glyphs: dark pixels in the band above the plot, which is otherwise white.
+        int dark = 0;
+        for (int i = 0; i < png.Width * 30 * 3; i += 3)
         {
-            string[] xy = p.Split(',');
-            return (double.Parse(xy[0], CultureInfo.InvariantCulture), double.Parse(xy[1], CultureInfo.InvariantCulture));
-        })];
+            dark += png.Rgb[i] + png.Rgb[i + 1] + png.Rgb[i + 2] < 200 ? 1 : 0;
+        }
+
+        Assert.True(dark > 50, $"{dark} dark pixels in the title band");
+
+        string text = string.Concat(XDocument.Load(stem + ".svg").Descendants(Svg + "text").Select(t => t.Value));
+        Assert.Contains("RMSE against time", text, StringComparison.Ordinal);
+        Assert.Contains("jittered", text, StringComparison.Ordinal);
+        Assert.Contains("adaptive c=0.5", text, StringComparison.Ordinal);
+    }
+
+    private static (double X, double Y)[] Coordinates(Scatter line) => [.. line.Data.GetScatterPoints().Select(p => (p.X, p.Y))];
+
+    // The ticks are made when the plot is laid out: render it once first.
+    private static string[] MajorLabels(Plot plot, IAxis axis) => [.. Rendered(plot, axis).Where(t => t.IsMajor).OrderBy(t => t.Position).Select(t => t.Label)];
+
+    private static Tick[] Rendered(Plot plot, IAxis axis)
+    {
+        plot.GetImage(LogLogChart.Width, LogLogChart.Height).Dispose();
+        return axis.TickGenerator.Ticks;
+    }
 }

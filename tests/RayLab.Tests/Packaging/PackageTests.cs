@@ -2,6 +2,8 @@ using System.Buffers.Binary;
 using System.Diagnostics;
 using System.Text;
 using System.Text.RegularExpressions;
+using RayLab.Tests.Imaging;
+using SkiaSharp;
 
 namespace RayLab.Tests.Packaging;
 
@@ -82,6 +84,14 @@ public sealed partial class PackageTests : IDisposable
 
         await RunAsync(app, packages, "dotnet", "run", "-c", "Release");
         AssertPng(Path.Combine(app, "two-spheres.png"), 800, 600);
+        // Image.Save("….jpg") and ("….webp") through SkiaSharp, which came with the package alone.
+        foreach ((string file, SKEncodedImageFormat format) in new[] { ("two-spheres.jpg", SKEncodedImageFormat.Jpeg), ("two-spheres.webp", SKEncodedImageFormat.Webp) })
+        {
+            string path = Path.Combine(app, file);
+            Assert.True(File.Exists(path), $"{path} was not written");
+            SkiaDecode.Result decoded = SkiaDecode.Load(path);
+            Assert.Equal((800, 600, format), (decoded.Width, decoded.Height, decoded.Format));
+        }
 
         // 2b. The README's guide "Your own antialiasing method": the sources of samples/RayLab.OwnMethod (a point
         // sampler and a pixel method of the student's own) beside the same project file and the lab's scene,
@@ -104,6 +114,7 @@ public sealed partial class PackageTests : IDisposable
         // ... and writes the speed-against-error report with both methods through the library's compare API.
         string report = Path.Combine(own, "out", "report");
         Assert.True(File.Exists(Path.Combine(report, "index.html")), "the own-method sample wrote no index.html");
+        AssertPng(Path.Combine(report, "error-vs-time.png"), 900, 540); // ScottPlot's chart, from the package too
         string[] series = [.. File.ReadAllLines(Path.Combine(report, "results.csv")).Skip(1).Select(line => line.Split(',')[0]).Distinct()];
         Assert.Equal(["jittered", "rotated-grid", "mitchell"], series);
         AssertPng(Path.Combine(report, "images", "mitchell-4---16.png"), 200, 150);
