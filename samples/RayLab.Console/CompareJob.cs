@@ -40,7 +40,7 @@ public static class CompareJob
             var report = new CompareReport(Heading(request, scene, measured.Exact), Command(request), measured.Results, notes);
             report.WriteTo(staging);
             cancellation.ThrowIfCancellationRequested(); // the last chance to leave the folder untouched
-            Publish(staging, request.OutputFolder);
+            ReportFolder.Publish(staging, request.OutputFolder);
             done = true;
 
             stdout.Write(report.Table());
@@ -223,34 +223,6 @@ public static class CompareJob
     }
 
     /// <summary>Moves every file from the staging folder into place, <c>index.html</c> last (each move is a rename).</summary>
-    private static void Publish(string staging, string folder)
-    {
-        string[] files = [.. Directory.EnumerateFiles(staging, "*", SearchOption.AllDirectories)
-            .OrderBy(f => Path.GetFileName(f) == "index.html").ThenBy(f => f, StringComparer.Ordinal)];
-        // Check every target first, so a file or folder in the way stops the run before anything is moved.
-        foreach (string file in files)
-        {
-            string target = Path.Combine(folder, Path.GetRelativePath(staging, file));
-            string parent = Path.GetDirectoryName(target)!;
-            if (File.Exists(parent))
-            {
-                throw new UsageException($"--out: '{parent}' is a file where the report needs a folder");
-            }
-
-            if (Directory.Exists(target))
-            {
-                throw new UsageException($"--out: '{target}' is a folder where the report writes a file");
-            }
-        }
-
-        foreach (string file in files)
-        {
-            string target = Path.Combine(folder, Path.GetRelativePath(staging, file));
-            Directory.CreateDirectory(Path.GetDirectoryName(target)!);
-            File.Move(file, target, overwrite: true);
-        }
-    }
-
     private static void CleanUp(string? staging, string[] createdFolders)
     {
         try

@@ -52,13 +52,9 @@ public static class PatternsJob
             File.WriteAllText(Path.Combine(staging, "patterns.csv"), csv);
             File.WriteAllText(Path.Combine(staging, "index.html"), Html(request, html, slopeTable));
             cancellation.ThrowIfCancellationRequested();
-            string[] files = [.. Directory.EnumerateFiles(staging).OrderBy(f => Path.GetFileName(f) == "index.html").ThenBy(f => f, StringComparer.Ordinal)];
-            foreach (string file in files)
-            {
-                File.Move(file, Path.Combine(request.OutputFolder, Path.GetFileName(file)), overwrite: true);
-            }
+            int moved = ReportFolder.Publish(staging, request.OutputFolder);
 
-            stdout.WriteLine(string.Create(Inv, $"wrote {Path.Combine(request.OutputFolder, "index.html")} ({files.Length - 1} files) in {clock.Elapsed.TotalSeconds:F1} s"));
+            stdout.WriteLine(string.Create(Inv, $"wrote {Path.Combine(request.OutputFolder, "index.html")} ({moved - 1} files) in {clock.Elapsed.TotalSeconds:F1} s"));
             return 0;
         }
         catch (Exception e) when (e is UsageException or IOException or UnauthorizedAccessException or ArgumentException)

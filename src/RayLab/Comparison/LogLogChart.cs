@@ -1,7 +1,6 @@
 using System.Globalization;
 using ScottPlot;
 using ScottPlot.TickGenerators;
-using RayLab.Imaging;
 
 namespace RayLab.Comparison;
 
@@ -42,9 +41,8 @@ public static class LogLogChart
         ArgumentNullException.ThrowIfNull(xLabel);
         ArgumentNullException.ThrowIfNull(yLabel);
         ArgumentNullException.ThrowIfNull(series);
-        ChartFonts.Register();
         var plot = new Plot();
-        plot.Font.Set(LabelFont.FamilyName);
+        ChartFont.Apply(plot);
         plot.Title(title, size: 17);
         plot.XLabel(xLabel, size: 14);
         plot.YLabel(yLabel, size: 14);

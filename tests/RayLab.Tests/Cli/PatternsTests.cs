@@ -109,6 +109,18 @@ public sealed partial class PatternsTests : IDisposable
         Assert.Equal($"raylab: error: --out: '{file}' is a file, not a folder", error.TrimEnd());
     }
 
+    [Fact]
+    public void A_folder_where_a_file_goes_stops_the_run_before_anything_is_moved()
+    {
+        string folder = _dir.File("blocked");
+        string blocker = Path.Combine(folder, "patterns.csv");
+        Directory.CreateDirectory(blocker);
+        (int code, _, string error) = Run(Small(folder));
+        Assert.Equal(1, code);
+        Assert.Equal($"raylab: error: --out: '{blocker}' is a folder where the report writes a file", error.TrimEnd());
+        Assert.Equal([blocker], Directory.EnumerateFileSystemEntries(folder));
+    }
+
     [GeneratedRegex("<img src=\"([^\"]+)\"")]
     private static partial Regex ImageSource();
 

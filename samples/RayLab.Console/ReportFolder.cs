@@ -1,0 +1,44 @@
+namespace RayLab.Cli;
+
+/// <summary>
+/// Moves a report built in a hidden staging folder into its output folder, <c>index.html</c> last, so a page never
+/// points at files that are not there yet; shared by <c>raylab compare</c> and <c>raylab patterns</c>.
+/// </summary>
+internal static class ReportFolder
+{
+    /// <summary>
+    /// Moves every file under <paramref name="staging"/> to the same relative path under <paramref name="folder"/>,
+    /// after checking that no file or folder is in the way of any of them (so a clash stops the run before anything
+    /// is moved).
+    /// </summary>
+    /// <returns>How many files were moved, <c>index.html</c> included.</returns>
+    public static int Publish(string staging, string folder)
+    {
+        string[] files = [.. Directory.EnumerateFiles(staging, "*", SearchOption.AllDirectories)
+            .OrderBy(f => Path.GetFileName(f) == "index.html").ThenBy(f => f, StringComparer.Ordinal)];
+        // Check every target first, so a file or folder in the way stops the run before anything is moved.
+        foreach (string file in files)
+        {
+            string target = Path.Combine(folder, Path.GetRelativePath(staging, file));
+            string parent = Path.GetDirectoryName(target)!;
+            if (File.Exists(parent))
+            {
+                throw new UsageException($"--out: '{parent}' is a file where the report needs a folder");
+            }
+
+            if (Directory.Exists(target))
+            {
+                throw new UsageException($"--out: '{target}' is a folder where the report writes a file");
+            }
+        }
+
+        foreach (string file in files)
+        {
+            string target = Path.Combine(folder, Path.GetRelativePath(staging, file));
+            Directory.CreateDirectory(Path.GetDirectoryName(target)!);
+            File.Move(file, target, overwrite: true);
+        }
+
+        return files.Length;
+    }
+}
