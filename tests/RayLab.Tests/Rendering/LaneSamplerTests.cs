@@ -60,6 +60,20 @@ public class LaneSamplerTests
         CheckMultiJittered<Lanes256>(new MultiJitteredSampler(1024, 3));
     }
 
+    [Theory]
+    [InlineData(240)] // m = 15, n = 16: the largest tables, m not a power of two.
+    [InlineData(272)] // m = 16, n = 17: one row past the largest table, the permutations walked per sample.
+    [InlineData(289)] // m = n = 17.
+    public void CmjAtTheEdgeOfItsPerPacketTablesIsTheScalarPoints(int count)
+    {
+        foreach (uint seed in Seeds)
+        {
+            CheckCmj<Lanes128>(new CorrelatedMultiJitteredSampler(count, seed));
+            CheckCmj<Lanes256>(new CorrelatedMultiJitteredSampler(count, seed));
+            CheckCmj<Lanes512>(new CorrelatedMultiJitteredSampler(count, seed));
+        }
+    }
+
     [Fact]
     public void TheSecondSobolDimensionIsTheReversedSupersetXor()
     {

@@ -139,6 +139,15 @@ internal interface ILanes<TSelf>
     /// </summary>
     static abstract TSelf InDouble<TF>(in TF formula, TSelf a, TSelf b, TSelf c, TSelf d)
         where TF : struct, IDoubleFormula;
+
+    /// <summary>
+    /// <paramref name="formula"/> in double on integer lanes: <paramref name="a"/> and <paramref name="c"/> as signed
+    /// 32-bit integers and <paramref name="jitter"/> as an unsigned one, each converted to double exactly (the formula's
+    /// b; its d is 0), the results rounded to the nearest float. One conversion per input, where
+    /// <see cref="InDouble"/> would take a 32-bit hash as two floats.
+    /// </summary>
+    static abstract TSelf InDoubleFromBits<TF>(in TF formula, TSelf a, TSelf jitter, TSelf c)
+        where TF : struct, IDoubleFormula;
 }
 
 /// <summary>

@@ -147,6 +147,22 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 InDoubleFromBits<TF>(in TF formula, Lanes128 a, Lanes128 jitter, Lanes128 c)
+        where TF : struct, IDoubleFormula
+    {
+        (Vector128<double> aLow, Vector128<double> aHigh) = ToDouble(a.V.AsInt32());
+        (Vector128<double> jLow, Vector128<double> jHigh) = ToDouble((jitter.V.AsUInt32() ^ Vector128.Create(0x80000000u)).AsInt32());
+        (Vector128<double> cLow, Vector128<double> cHigh) = ToDouble(c.V.AsInt32());
+        Vector128<double> offset = Vector128.Create(2147483648.0);
+        return new(Vector128.Narrow(formula.Apply(aLow, jLow + offset, cLow, default), formula.Apply(aHigh, jHigh + offset, cHigh, default)));
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static (Vector128<double> Low, Vector128<double> High) ToDouble(Vector128<int> v) => Sse2.IsSupported
+        ? (Sse2.ConvertToVector128Double(v), Sse2.ConvertToVector128Double(Sse2.UnpackHigh(v.AsInt64(), v.AsInt64()).AsInt32()))
+        : (Vector128.ConvertToDouble(Vector128.WidenLower(v)), Vector128.ConvertToDouble(Vector128.WidenUpper(v)));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 ReverseBits(Lanes128 bits)
     {
         if (Ssse3.IsSupported)

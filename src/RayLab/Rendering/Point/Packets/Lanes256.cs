@@ -147,6 +147,22 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 InDoubleFromBits<TF>(in TF formula, Lanes256 a, Lanes256 jitter, Lanes256 c)
+        where TF : struct, IDoubleFormula
+    {
+        (Vector256<double> aLow, Vector256<double> aHigh) = ToDouble(a.V.AsInt32());
+        (Vector256<double> jLow, Vector256<double> jHigh) = ToDouble((jitter.V.AsUInt32() ^ Vector256.Create(0x80000000u)).AsInt32());
+        (Vector256<double> cLow, Vector256<double> cHigh) = ToDouble(c.V.AsInt32());
+        Vector256<double> offset = Vector256.Create(2147483648.0);
+        return new(Vector256.Narrow(formula.Apply(aLow, jLow + offset, cLow, default), formula.Apply(aHigh, jHigh + offset, cHigh, default)));
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static (Vector256<double> Low, Vector256<double> High) ToDouble(Vector256<int> v) => Avx.IsSupported
+        ? (Avx.ConvertToVector256Double(v.GetLower()), Avx.ConvertToVector256Double(v.GetUpper()))
+        : (Vector256.ConvertToDouble(Vector256.WidenLower(v)), Vector256.ConvertToDouble(Vector256.WidenUpper(v)));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 ReverseBits(Lanes256 bits)
     {
         if (Avx2.IsSupported)

@@ -147,6 +147,22 @@ internal readonly record struct Lanes512(Vector512<float> V) : ILanes<Lanes512>
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 InDoubleFromBits<TF>(in TF formula, Lanes512 a, Lanes512 jitter, Lanes512 c)
+        where TF : struct, IDoubleFormula
+    {
+        (Vector512<double> aLow, Vector512<double> aHigh) = ToDouble(a.V.AsInt32());
+        (Vector512<double> jLow, Vector512<double> jHigh) = ToDouble((jitter.V.AsUInt32() ^ Vector512.Create(0x80000000u)).AsInt32());
+        (Vector512<double> cLow, Vector512<double> cHigh) = ToDouble(c.V.AsInt32());
+        Vector512<double> offset = Vector512.Create(2147483648.0);
+        return new(Vector512.Narrow(formula.Apply(aLow, jLow + offset, cLow, default), formula.Apply(aHigh, jHigh + offset, cHigh, default)));
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static (Vector512<double> Low, Vector512<double> High) ToDouble(Vector512<int> v) => Avx512F.IsSupported
+        ? (Avx512F.ConvertToVector512Double(v.GetLower()), Avx512F.ConvertToVector512Double(v.GetUpper()))
+        : (Vector512.ConvertToDouble(Vector512.WidenLower(v)), Vector512.ConvertToDouble(Vector512.WidenUpper(v)));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 ReverseBits(Lanes512 bits)
     {
         if (Avx512BW.IsSupported)

@@ -204,6 +204,9 @@ internal readonly struct CellFormula : IDoubleFormula
     private readonly double _scale, _inner, _outer;
     private readonly bool _innerByMultiply, _outerByMultiply, _outerIsOne;
 
+    /// <summary>The jitter's scale.</summary>
+    public double Scale => _scale;
+
     /// <summary>The formula with jitter scale <paramref name="scale"/> and divisors d₁ = <paramref name="inner"/>, d₂ = <paramref name="outer"/>.</summary>
     /// <param name="scale">The jitter's scale.</param>
     /// <param name="inner">d₁, a whole number ≥ 1.</param>
@@ -220,30 +223,64 @@ internal readonly struct CellFormula : IDoubleFormula
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector128<double> Apply(Vector128<double> a, Vector128<double> bHigh, Vector128<double> c, Vector128<double> bLow)
+    public Vector128<double> Apply(Vector128<double> a, Vector128<double> bHigh, Vector128<double> c, Vector128<double> bLow) =>
+        Cell(a, ((bHigh * 256.0) + bLow) * _scale, c);
+
+    /// <summary>The formula with the jitter <paramref name="jitter"/> already scaled.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector128<double> Cell(Vector128<double> a, Vector128<double> jitter, Vector128<double> c)
     {
-        Vector128<double> jitter = ((bHigh * 256.0) + bLow) * _scale;
         Vector128<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector128.Create(_inner);
         return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector128.Create(_outer);
     }
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector256<double> Apply(Vector256<double> a, Vector256<double> bHigh, Vector256<double> c, Vector256<double> bLow)
+    public Vector256<double> Apply(Vector256<double> a, Vector256<double> bHigh, Vector256<double> c, Vector256<double> bLow) =>
+        Cell(a, ((bHigh * 256.0) + bLow) * _scale, c);
+
+    /// <summary>The formula with the jitter <paramref name="jitter"/> already scaled.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector256<double> Cell(Vector256<double> a, Vector256<double> jitter, Vector256<double> c)
     {
-        Vector256<double> jitter = ((bHigh * 256.0) + bLow) * _scale;
         Vector256<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector256.Create(_inner);
         return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector256.Create(_outer);
     }
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector512<double> Apply(Vector512<double> a, Vector512<double> bHigh, Vector512<double> c, Vector512<double> bLow)
+    public Vector512<double> Apply(Vector512<double> a, Vector512<double> bHigh, Vector512<double> c, Vector512<double> bLow) =>
+        Cell(a, ((bHigh * 256.0) + bLow) * _scale, c);
+
+    /// <summary>The formula with the jitter <paramref name="jitter"/> already scaled.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector512<double> Cell(Vector512<double> a, Vector512<double> jitter, Vector512<double> c)
     {
-        Vector512<double> jitter = ((bHigh * 256.0) + bLow) * _scale;
         Vector512<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector512.Create(_inner);
         return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector512.Create(_outer);
     }
+}
+
+/// <summary>
+/// <see cref="CellFormula"/> for <see cref="ILanes{TSelf}.InDoubleFromBits"/>: the jitter's whole 32-bit hash comes as
+/// one exact double b, and j = b · scale (the same double as (bHi·256 + bLo) · scale).
+/// </summary>
+/// <param name="cell">The formula.</param>
+internal readonly struct WholeHashCellFormula(CellFormula cell) : IDoubleFormula
+{
+    private readonly CellFormula _cell = cell;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector128<double> Apply(Vector128<double> a, Vector128<double> b, Vector128<double> c, Vector128<double> d) => _cell.Cell(a, b * _cell.Scale, c);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector256<double> Apply(Vector256<double> a, Vector256<double> b, Vector256<double> c, Vector256<double> d) => _cell.Cell(a, b * _cell.Scale, c);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector512<double> Apply(Vector512<double> a, Vector512<double> b, Vector512<double> c, Vector512<double> d) => _cell.Cell(a, b * _cell.Scale, c);
 }
 
 /// <summary>
@@ -480,8 +517,11 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
     private readonly LaneLength<TL> _all, _columns, _rows;
     private readonly TL _inverseColumns, _columnCount;
     private readonly int _columnShift;
-    private readonly CellFormula _x, _y;
+    private readonly WholeHashCellFormula _x, _y;
     private readonly uint[] _scratch = new uint[TL.Count];
+    private readonly TL[] _columnTable, _rowTable;
+    private readonly int _m, _n, _columnLevels, _rowLevels;
+    private readonly bool _tabled;
     private LanePermutation<TL> _index, _column, _row;
     private TL _jx, _jxMultiplier, _jy, _jyMultiplier;
 
@@ -497,9 +537,25 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         _columnCount = TL.BroadcastBits((uint)sampler.Columns);
         _columnShift = BitOperations.Log2((uint)sampler.Columns);
         const double Kensler = 1.0 / 4294967808.0;
-        _x = new CellFormula(Kensler, sampler.Rows, sampler.Columns);
-        _y = new CellFormula(Kensler, count, 1);
+        _x = new WholeHashCellFormula(new CellFormula(Kensler, sampler.Rows, sampler.Columns));
+        _y = new WholeHashCellFormula(new CellFormula(Kensler, count, 1));
+
+        // The column and row permutations have only m and n elements per pixel, where a pixel has N = m·n samples:
+        // made once per packet into a table, each sample picks its lanes' entries with a tree of selects.
+        _m = sampler.Columns;
+        _n = sampler.Rows;
+        _columnLevels = TableLevels(_m);
+        _rowLevels = TableLevels(_n);
+        _tabled = Math.Max(_columnLevels, _rowLevels) <= MaxTableLevels;
+        _columnTable = new TL[_tabled ? 1 << _columnLevels : 0];
+        _rowTable = new TL[_tabled ? 1 << _rowLevels : 0];
     }
+
+    /// <summary>
+    /// The largest table, 2⁴ = 16 entries (m and n up to 16: up to 256 spp, and every count below 289): a pick from it
+    /// is 15 selects, about what one round of Kensler's hash costs, so past it the per-sample permutation is kept.
+    /// </summary>
+    private const int MaxTableLevels = 4;
 
     /// <inheritdoc />
     public void BeginPacket(int x0, int row)
@@ -508,6 +564,12 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         _index.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x51633e2du)), _all, _scratch);
         _column.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x68bc21ebu)), _columns, _scratch);
         _row.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x02e5be93u)), _rows, _scratch);
+        if (_tabled)
+        {
+            Tabulate(_column, _columns, _m, _columnTable);
+            Tabulate(_row, _rows, _n, _rowTable);
+        }
+
         _jx = TL.MultiplyBits(p, TL.BroadcastBits(0x967a889bu));
         _jxMultiplier = TL.ShiftRightBits(_jx, 18) | TL.BroadcastBits(1);
         _jy = TL.MultiplyBits(p, TL.BroadcastBits(0x368cc8b7u));
@@ -549,19 +611,88 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
             (quotient, remainder) = DivideByColumns(s);
         }
 
-        (b, c) = LanePermutation<TL>.Pair(_column, remainder, _columns, _row, quotient, _rows);
+        if (_tabled)
+        {
+            (b, c) = PickCell(remainder, quotient);
+        }
+        else
+        {
+            (b, c) = LanePermutation<TL>.Pair(_column, remainder, _columns, _row, quotient, _rows);
+        }
     }
+
+    /// <summary>
+    /// The column and row permutations' entries from the packet's tables, in a call of its own: inlined into the
+    /// stage beside the divide, the select trees would use up the JIT's inlining budget (measured: the lane
+    /// operations became calls).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    private readonly (TL Column, TL Row) PickCell(TL column, TL row) =>
+        (Pick(_columnTable, _columnLevels, column), Pick(_rowTable, _rowLevels, row));
+
+    /// <summary>The number of select levels for a table of <paramref name="length"/> entries: ⌈log₂ length⌉.</summary>
+    private static int TableLevels(int length) => BitOperations.Log2((uint)length - 1) + (length > 1 ? 1 : 0);
+
+    /// <summary>Entries 0 … <paramref name="length"/> − 1 of each lane's permutation; the rest (never picked) 0.</summary>
+    private static void Tabulate(in LanePermutation<TL> permutation, in LaneLength<TL> lanes, int length, TL[] table)
+    {
+        for (int k = 0; k < table.Length; k++)
+        {
+            table[k] = k < length ? permutation.Element(TL.BroadcastBits((uint)k), lanes) : default;
+        }
+    }
+
+    /// <summary>
+    /// Each lane's entry <c>table[index]</c>, by a tree of selects on the bits of the index, lowest bit first
+    /// (<paramref name="levels"/> ≤ <see cref="MaxTableLevels"/>; the table has 2^levels entries).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL Pick(TL[] table, int levels, TL index)
+    {
+        ref TL t = ref MemoryMarshal.GetArrayDataReference(table);
+        switch (levels)
+        {
+            case 0:
+                return t;
+            case 1:
+                return Pick2(ref t, Bit(index, 0));
+            case 2:
+                return Pick4(ref t, Bit(index, 0), Bit(index, 1));
+            case 3:
+            {
+                TL b0 = Bit(index, 0), b1 = Bit(index, 1);
+                return TL.Select(Bit(index, 2), Pick4(ref Unsafe.Add(ref t, 4), b0, b1), Pick4(ref t, b0, b1));
+            }
+
+            default:
+            {
+                TL b0 = Bit(index, 0), b1 = Bit(index, 1), b2 = Bit(index, 2);
+                TL low = TL.Select(b2, Pick4(ref Unsafe.Add(ref t, 4), b0, b1), Pick4(ref t, b0, b1));
+                TL high = TL.Select(b2, Pick4(ref Unsafe.Add(ref t, 12), b0, b1), Pick4(ref Unsafe.Add(ref t, 8), b0, b1));
+                return TL.Select(Bit(index, 3), high, low);
+            }
+        }
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL Pick2(ref TL t, TL b0) => TL.Select(b0, Unsafe.Add(ref t, 1), t);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL Pick4(ref TL t, TL b0, TL b1) => TL.Select(b1, Pick2(ref Unsafe.Add(ref t, 2), b0), Pick2(ref t, b0));
+
+    /// <summary>All ones in the lanes whose <paramref name="index"/> has bit <paramref name="bit"/> set.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL Bit(TL index, int bit) => TL.LessThanBits(TL.ShiftLeftBits(index, 31 - bit), default);
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy)
     {
         TL s = a;
-        TL column = TL.BitsToFloat(b), row = TL.BitsToFloat(c);
         TL jx = RandomBits(s, _jx, _jxMultiplier);
         TL jy = RandomBits(s, _jy, _jyMultiplier);
-        sx = TL.InDouble(_x, row, TL.Top24(jx), column, LowByte(jx));
-        sy = TL.InDouble(_y, TL.BitsToFloat(s), TL.Top24(jy), default, LowByte(jy));
+        sx = TL.InDoubleFromBits(_x, c, jx, b);
+        sy = TL.InDoubleFromBits(_y, s, jy, default);
     }
 
     /// <summary>s div m and s mod m: a float quotient (s &lt; 2²⁴ is exact) truncated, then corrected by one either way.</summary>
@@ -578,10 +709,6 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         remainder = TL.Select(high, TL.SubtractBits(remainder, _columnCount), remainder);
         return (quotient, remainder);
     }
-
-    /// <summary>The low 8 bits of each lane as an exact float.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static TL LowByte(TL bits) => TL.BitsToFloat(bits & TL.BroadcastBits(0xffu));
 
     /// <summary>Kensler's <c>randfloat</c> hash before its scaling (<see cref="CorrelatedMultiJitteredSampler.RandFloat"/>).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
