@@ -121,6 +121,12 @@ internal interface ILanes<TSelf>
     /// <summary>Each lane's bits shifted right by <paramref name="count"/> (0 … 31), zeros shifted in (<c>uint</c>'s <c>&gt;&gt;</c>).</summary>
     static abstract TSelf ShiftRightBits(TSelf bits, int count);
 
+    /// <summary>
+    /// Each lane's bits shifted right by that lane's <paramref name="counts"/> (0 … 31), zeros shifted in (AVX2's
+    /// <c>vpsrlvd</c>; lane by lane where the hardware lacks it).
+    /// </summary>
+    static abstract TSelf ShiftRightBitsVariable(TSelf bits, TSelf counts);
+
     /// <summary>Mask of lanes where <c>a &lt; b</c>, the lanes' bits compared as signed 32-bit integers.</summary>
     static abstract TSelf LessThanBits(TSelf a, TSelf b);
 

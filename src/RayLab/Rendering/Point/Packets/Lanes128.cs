@@ -127,6 +127,15 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
     public static Lanes128 ShiftRightBits(Lanes128 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 ShiftRightBitsVariable(Lanes128 bits, Lanes128 counts)
+    {
+        Vector128<uint> b = bits.V.AsUInt32(), c = counts.V.AsUInt32();
+        return new((Avx2.IsSupported
+            ? Avx2.ShiftRightLogicalVariable(b, c)
+            : Vector128.Create(b[0] >> (int)c[0], b[1] >> (int)c[1], b[2] >> (int)c[2], b[3] >> (int)c[3])).AsSingle());
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 LessThanBits(Lanes128 a, Lanes128 b) => new(Vector128.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

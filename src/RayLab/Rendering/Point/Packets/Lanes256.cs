@@ -127,6 +127,14 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
     public static Lanes256 ShiftRightBits(Lanes256 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 ShiftRightBitsVariable(Lanes256 bits, Lanes256 counts) =>
+        Avx2.IsSupported
+            ? new(Avx2.ShiftRightLogicalVariable(bits.V.AsUInt32(), counts.V.AsUInt32()).AsSingle())
+            : new(Vector256.Create(
+                Lanes128.ShiftRightBitsVariable(new(bits.V.GetLower()), new(counts.V.GetLower())).V,
+                Lanes128.ShiftRightBitsVariable(new(bits.V.GetUpper()), new(counts.V.GetUpper())).V));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 LessThanBits(Lanes256 a, Lanes256 b) => new(Vector256.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

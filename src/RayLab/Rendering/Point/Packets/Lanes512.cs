@@ -127,6 +127,14 @@ internal readonly record struct Lanes512(Vector512<float> V) : ILanes<Lanes512>
     public static Lanes512 ShiftRightBits(Lanes512 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes512 ShiftRightBitsVariable(Lanes512 bits, Lanes512 counts) =>
+        Avx512F.IsSupported
+            ? new(Avx512F.ShiftRightLogicalVariable(bits.V.AsUInt32(), counts.V.AsUInt32()).AsSingle())
+            : new(Vector512.Create(
+                Lanes256.ShiftRightBitsVariable(new(bits.V.GetLower()), new(counts.V.GetLower())).V,
+                Lanes256.ShiftRightBitsVariable(new(bits.V.GetUpper()), new(counts.V.GetUpper())).V));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 LessThanBits(Lanes512 a, Lanes512 b) => new(Vector512.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

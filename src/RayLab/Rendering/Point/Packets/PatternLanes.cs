@@ -284,6 +284,47 @@ internal readonly struct WholeHashCellFormula(CellFormula cell) : IDoubleFormula
 }
 
 /// <summary>
+/// <see cref="WholeHashCellFormula"/> when d₁ and d₂ are both powers of two (1 included): <c>(c + (a + b·scale)·(1/d₁))·(1/d₂)</c>
+/// with no branch. Multiplying by 1 and adding a c of 0 are exact, so this is the same double as
+/// <see cref="CellFormula"/>'s for every such pair.
+/// </summary>
+internal readonly struct PowerOfTwoCellFormula : IDoubleFormula
+{
+    private readonly double _scale, _inner, _outer;
+
+    /// <summary>The formula with jitter scale <paramref name="scale"/> and divisors d₁ = <paramref name="inner"/>, d₂ = <paramref name="outer"/>.</summary>
+    /// <param name="scale">The jitter's scale.</param>
+    /// <param name="inner">d₁, a power of two.</param>
+    /// <param name="outer">d₂, a power of two.</param>
+    public PowerOfTwoCellFormula(double scale, int inner, int outer)
+    {
+        if (!int.IsPow2(inner) || !int.IsPow2(outer))
+        {
+            throw new ArgumentException($"The divisors {inner} and {outer} must be powers of two.", nameof(inner));
+        }
+
+        _scale = scale;
+        _inner = 1.0 / inner;
+        _outer = 1.0 / outer;
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector128<double> Apply(Vector128<double> a, Vector128<double> b, Vector128<double> c, Vector128<double> d) =>
+        (c + ((a + (b * _scale)) * _inner)) * _outer;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector256<double> Apply(Vector256<double> a, Vector256<double> b, Vector256<double> c, Vector256<double> d) =>
+        (c + ((a + (b * _scale)) * _inner)) * _outer;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Vector512<double> Apply(Vector512<double> a, Vector512<double> b, Vector512<double> c, Vector512<double> d) =>
+        (c + ((a + (b * _scale)) * _inner)) * _outer;
+}
+
+/// <summary>
 /// A toroidal shift in double, as <see cref="HammersleySampler"/> writes it: <c>q + a·2⁻²⁴</c> wrapped into [0, 1),
 /// with <c>a</c> the top 24 bits of the shift's hash.
 /// </summary>
@@ -518,10 +559,12 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
     private readonly TL _inverseColumns, _columnCount;
     private readonly int _columnShift;
     private readonly WholeHashCellFormula _x, _y;
+    private readonly PowerOfTwoCellFormula _xPowerOfTwo, _yPowerOfTwo;
+    private readonly bool _powersOfTwo;
     private readonly uint[] _scratch = new uint[TL.Count];
-    private readonly TL[] _columnTable, _rowTable;
-    private readonly int _m, _n, _columnLevels, _rowLevels;
-    private readonly bool _tabled;
+    private readonly int _m, _n;
+    private readonly bool _tabled, _wideColumns, _wideRows;
+    private TL _columnsLow, _columnsHigh, _rowsLow, _rowsHigh;
     private LanePermutation<TL> _index, _column, _row;
     private TL _jx, _jxMultiplier, _jy, _jyMultiplier;
 
@@ -540,22 +583,27 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         _x = new WholeHashCellFormula(new CellFormula(Kensler, sampler.Rows, sampler.Columns));
         _y = new WholeHashCellFormula(new CellFormula(Kensler, count, 1));
 
-        // The column and row permutations have only m and n elements per pixel, where a pixel has N = m·n samples:
-        // made once per packet into a table, each sample picks its lanes' entries with a tree of selects.
+        // 4, 16, 64, 256, 1024 … spp: N, m and n all powers of two, the cell formulas without a branch.
+        _powersOfTwo = int.IsPow2(count) && int.IsPow2(sampler.Columns) && int.IsPow2(sampler.Rows);
+        if (_powersOfTwo)
+        {
+            _xPowerOfTwo = new PowerOfTwoCellFormula(Kensler, sampler.Rows, sampler.Columns);
+            _yPowerOfTwo = new PowerOfTwoCellFormula(Kensler, count, 1);
+        }
+
+        // The column and row permutations have only m and n elements per pixel, where a pixel has N ≈ m·n samples:
+        // made once per packet, 4 bits an entry, into one 32-bit word per lane (two past 8 entries), and each
+        // sample shifts its entry out (AVX2's per-lane shift): three or so instructions where a walk of Kensler's
+        // hash is a chain of five multiplies.
         _m = sampler.Columns;
         _n = sampler.Rows;
-        _columnLevels = TableLevels(_m);
-        _rowLevels = TableLevels(_n);
-        _tabled = Math.Max(_columnLevels, _rowLevels) <= MaxTableLevels;
-        _columnTable = new TL[_tabled ? 1 << _columnLevels : 0];
-        _rowTable = new TL[_tabled ? 1 << _rowLevels : 0];
+        _tabled = Math.Max(_m, _n) <= MaxTable;
+        _wideColumns = _m > 8;
+        _wideRows = _n > 8;
     }
 
-    /// <summary>
-    /// The largest table, 2⁴ = 16 entries (m and n up to 16: up to 256 spp, and every count below 289): a pick from it
-    /// is 15 selects, about what one round of Kensler's hash costs, so past it the per-sample permutation is kept.
-    /// </summary>
-    private const int MaxTableLevels = 4;
+    /// <summary>The largest permutation kept as a packed table: 16 entries of 4 bits (m and n ≤ 16: every count below 273).</summary>
+    private const int MaxTable = 16;
 
     /// <inheritdoc />
     public void BeginPacket(int x0, int row)
@@ -566,8 +614,8 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         _row.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x02e5be93u)), _rows, _scratch);
         if (_tabled)
         {
-            Tabulate(_column, _columns, _m, _columnTable);
-            Tabulate(_row, _rows, _n, _rowTable);
+            (_columnsLow, _columnsHigh) = Tabulate(_column, _columns, _m);
+            (_rowsLow, _rowsHigh) = Tabulate(_row, _rows, _n);
         }
 
         _jx = TL.MultiplyBits(p, TL.BroadcastBits(0x967a889bu));
@@ -613,7 +661,8 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
 
         if (_tabled)
         {
-            (b, c) = PickCell(remainder, quotient);
+            b = Pick(_columnsLow, _columnsHigh, _wideColumns, remainder);
+            c = Pick(_rowsLow, _rowsHigh, _wideRows, quotient);
         }
         else
         {
@@ -622,67 +671,36 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
     }
 
     /// <summary>
-    /// The column and row permutations' entries from the packet's tables, in a call of its own: inlined into the
-    /// stage beside the divide, the select trees would use up the JIT's inlining budget (measured: the lane
-    /// operations became calls).
+    /// Entries 0 … <paramref name="length"/> − 1 (≤ 16) of each lane's permutation, 4 bits each: entry k in bits
+    /// 4(k mod 8) of the low word (k &lt; 8) or the high one.
     /// </summary>
-    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
-    private readonly (TL Column, TL Row) PickCell(TL column, TL row) =>
-        (Pick(_columnTable, _columnLevels, column), Pick(_rowTable, _rowLevels, row));
-
-    /// <summary>The number of select levels for a table of <paramref name="length"/> entries: ⌈log₂ length⌉.</summary>
-    private static int TableLevels(int length) => BitOperations.Log2((uint)length - 1) + (length > 1 ? 1 : 0);
-
-    /// <summary>Entries 0 … <paramref name="length"/> − 1 of each lane's permutation; the rest (never picked) 0.</summary>
-    private static void Tabulate(in LanePermutation<TL> permutation, in LaneLength<TL> lanes, int length, TL[] table)
+    private static (TL Low, TL High) Tabulate(in LanePermutation<TL> permutation, in LaneLength<TL> lanes, int length)
     {
-        for (int k = 0; k < table.Length; k++)
+        TL low = default, high = default;
+        for (int k = 0; k < length; k++)
         {
-            table[k] = k < length ? permutation.Element(TL.BroadcastBits((uint)k), lanes) : default;
-        }
-    }
-
-    /// <summary>
-    /// Each lane's entry <c>table[index]</c>, by a tree of selects on the bits of the index, lowest bit first
-    /// (<paramref name="levels"/> ≤ <see cref="MaxTableLevels"/>; the table has 2^levels entries).
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static TL Pick(TL[] table, int levels, TL index)
-    {
-        ref TL t = ref MemoryMarshal.GetArrayDataReference(table);
-        switch (levels)
-        {
-            case 0:
-                return t;
-            case 1:
-                return Pick2(ref t, Bit(index, 0));
-            case 2:
-                return Pick4(ref t, Bit(index, 0), Bit(index, 1));
-            case 3:
+            TL entry = TL.ShiftLeftBits(permutation.Element(TL.BroadcastBits((uint)k), lanes), 4 * (k & 7));
+            if (k < 8)
             {
-                TL b0 = Bit(index, 0), b1 = Bit(index, 1);
-                return TL.Select(Bit(index, 2), Pick4(ref Unsafe.Add(ref t, 4), b0, b1), Pick4(ref t, b0, b1));
+                low |= entry;
             }
-
-            default:
+            else
             {
-                TL b0 = Bit(index, 0), b1 = Bit(index, 1), b2 = Bit(index, 2);
-                TL low = TL.Select(b2, Pick4(ref Unsafe.Add(ref t, 4), b0, b1), Pick4(ref t, b0, b1));
-                TL high = TL.Select(b2, Pick4(ref Unsafe.Add(ref t, 12), b0, b1), Pick4(ref Unsafe.Add(ref t, 8), b0, b1));
-                return TL.Select(Bit(index, 3), high, low);
+                high |= entry;
             }
         }
+
+        return (low, high);
     }
 
+    /// <summary>Each lane's entry <paramref name="index"/> (0 … 15) of its packed table (<see cref="Tabulate"/>).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static TL Pick2(ref TL t, TL b0) => TL.Select(b0, Unsafe.Add(ref t, 1), t);
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static TL Pick4(ref TL t, TL b0, TL b1) => TL.Select(b1, Pick2(ref Unsafe.Add(ref t, 2), b0), Pick2(ref t, b0));
-
-    /// <summary>All ones in the lanes whose <paramref name="index"/> has bit <paramref name="bit"/> set.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static TL Bit(TL index, int bit) => TL.LessThanBits(TL.ShiftLeftBits(index, 31 - bit), default);
+    private static TL Pick(TL low, TL high, bool wide, TL index)
+    {
+        TL seven = TL.BroadcastBits(7);
+        TL word = wide ? TL.Select(TL.LessThanBits(seven, index), high, low) : low;
+        return TL.ShiftRightBitsVariable(word, TL.ShiftLeftBits(index & seven, 2)) & TL.BroadcastBits(15);
+    }
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -691,9 +709,21 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         TL s = a;
         TL jx = RandomBits(s, _jx, _jxMultiplier);
         TL jy = RandomBits(s, _jy, _jyMultiplier);
-        sx = TL.InDoubleFromBits(_x, c, jx, b);
-        sy = TL.InDoubleFromBits(_y, s, jy, default);
+        if (_powersOfTwo)
+        {
+            sx = TL.InDoubleFromBits(_xPowerOfTwo, c, jx, b);
+            sy = TL.InDoubleFromBits(_yPowerOfTwo, s, jy, default);
+        }
+        else
+        {
+            (sx, sy) = InGeneral(s, jx, jy, b, c);
+        }
     }
+
+    /// <summary>The cell formulas with a divisor that is not a power of two, in a call of its own (the JIT's inlining budget).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    private readonly (TL X, TL Y) InGeneral(TL s, TL jx, TL jy, TL column, TL row) =>
+        (TL.InDoubleFromBits(_x, row, jx, column), TL.InDoubleFromBits(_y, s, jy, default));
 
     /// <summary>s div m and s mod m: a float quotient (s &lt; 2²⁴ is exact) truncated, then corrected by one either way.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
