@@ -143,7 +143,7 @@ public sealed class ExactRenderer
     {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
-        OutlineSet.Build(scene, camera.GetImagePlane(width, height));
+        OutlineSet.Build(scene, camera.GetImagePlane(width, height), withCrossings: false);
     }
 
     private static RenderStatistics Run(Scene scene, ImagePlane plane, RenderOptions options, Action<int, ExactRow> writeRow)

@@ -21,10 +21,11 @@ namespace RayLab.Rendering.Exact;
 /// </remarks>
 internal sealed class OutlineSet
 {
-    private OutlineSet(Outline[] outlines, double[] crossings)
+    private OutlineSet(Outline[] outlines, Crossing[] crossings)
     {
         Outlines = outlines;
-        CrossingHeights = crossings;
+        Crossings = crossings;
+        CrossingHeights = [.. crossings.Select(c => c.Y)];
     }
 
     /// <summary>The most spheres in view the exact renderer draws (above it, <see cref="Build"/> refuses the scene).</summary>
@@ -36,15 +37,19 @@ internal sealed class OutlineSet
     /// <summary>The heights Y, sorted, where two outlines cross (and, to be safe, where they nearly touch).</summary>
     public double[] CrossingHeights { get; }
 
+    /// <summary>The same crossings with the two outlines (indices into <see cref="Outlines"/>) that cross there, sorted by Y.</summary>
+    public Crossing[] Crossings { get; }
+
     /// <summary>Finds the outlines of <paramref name="scene"/> as <paramref name="plane"/> sees it.</summary>
     /// <param name="scene">The scene.</param>
     /// <param name="plane">The camera's image plane.</param>
+    /// <param name="withCrossings">False to skip finding where the outlines cross (for a check that draws nothing).</param>
     /// <exception cref="UnsupportedSceneException">
     /// A sphere that visible rays can reach extends behind a perspective camera's eye (or within 1e-4 of its
     /// radius of the plane through the eye): its outline is not an ellipse. Or the zoom is so high that double
     /// rounding alone moves its picture by more than 1e-6 of a pixel (<see cref="OutlineProjection.RoundingInPixels"/>).
     /// </exception>
-    public static OutlineSet Build(Scene scene, ImagePlane plane)
+    public static OutlineSet Build(Scene scene, ImagePlane plane, bool withCrossings = true)
     {
         var projection = new OutlineProjection(plane);
         double depthPerT = plane.DepthPerT;
@@ -108,7 +113,7 @@ internal sealed class OutlineSet
 
         Outline[] inImage = outlines.Where(o => (o.Hx > 0 || o.Hy > 0)
             && o.Right >= 0 && o.Left <= plane.Width && o.Bottom >= 0 && o.Top <= plane.Height).ToArray();
-        return new OutlineSet(inImage, Crossings(inImage, plane.Height));
+        return new OutlineSet(inImage, withCrossings ? FindCrossings(inImage, plane.Height) : []);
     }
 
     /// <summary>
@@ -179,9 +184,9 @@ internal sealed class OutlineSet
         return (a.Centre + (along * n), radius, n);
     }
 
-    private static double[] Crossings(Outline[] outlines, int height)
+    private static Crossing[] FindCrossings(Outline[] outlines, int height)
     {
-        var ys = new List<double>();
+        var ys = new List<Crossing>();
         Span<double> thetas = stackalloc double[4];
 
         // Only pairs whose heights overlap can cross: outlines by their top, each paired with those starting
@@ -206,7 +211,7 @@ internal sealed class OutlineSet
                     double y = walk.PointAt(thetas[k]).Y;
                     if (y >= 0 && y <= height)
                     {
-                        ys.Add(y);
+                        ys.Add(new Crossing(y, i, j));
                     }
                 }
             }
@@ -214,6 +219,17 @@ internal sealed class OutlineSet
 
         ys.Sort();
         return [.. ys];
+    }
+
+    /// <summary>A height where two outlines cross (or nearly touch).</summary>
+    /// <param name="Y">The height.</param>
+    /// <param name="First">The outline with the smaller index.</param>
+    /// <param name="Second">The other outline.</param>
+    internal readonly record struct Crossing(double Y, int First, int Second) : IComparable<Crossing>
+    {
+        /// <inheritdoc/>
+        public int CompareTo(Crossing other) =>
+            Y != other.Y ? Y.CompareTo(other.Y) : First != other.First ? First.CompareTo(other.First) : Second.CompareTo(other.Second);
     }
 
     // The angles θ of `walk` where it meets `fixedOne`, from g(θ) = 0 with g a trigonometric polynomial of degree ≤ 2.
