@@ -149,7 +149,7 @@ public sealed class ExactRenderer
     private static RenderStatistics Run(Scene scene, ImagePlane plane, RenderOptions options, Action<int, ExactRow> writeRow)
     {
         var clock = Stopwatch.StartNew();
-        OutlineSet outlines = OutlineSet.Build(scene, plane);
+        OutlineSet outlines = OutlineSet.Build(scene, plane, parallel: options.Parallel);
         options.Progress?.Start(plane.Height);
         Parallel.For(0, plane.Height, options.Parallel, () => new ExactRow(scene, plane, outlines), (row, _, worker) =>
         {
