@@ -410,7 +410,8 @@ internal sealed class ExactRow
             int k = outline < 0 ? 0 : Find(outline, sign, below);
             if (k < 0)
             {
-                continue; // taken out for good (its outline ended)
+                _broken = true; // cannot happen: every branch restarted is in the order
+                return;
             }
 
             ref Entry entry = ref _entries[k];
@@ -492,8 +493,11 @@ internal sealed class ExactRow
         Flush(k, cut);
         _carried.Add(new Carried(Id(k), RightId(k), _entries[k].Hit, _entries[k].Known));
         _entries[k].GapStart = double.NaN;
-        _restart.Add((_entries[k].Outline, _entries[k].Sign));
         _pendingStarts++;
+        if (k == 0 || !_dirty[_entries[k].Outline])
+        {
+            _restart.Add((_entries[k].Outline, _entries[k].Sign)); // a branch being moved is restarted where it is put back
+        }
     }
 
     // Puts a branch back at its place in the order at height ym (the same order as Compare on every branch's X there).
