@@ -38,7 +38,8 @@ internal sealed class ExactRow
     private readonly double[] _spans;
     private readonly List<double> _cuts = [];
     private readonly List<int> _present = [];
-    private readonly List<(double Y, int Outline)> _events = [];
+    private readonly List<(double Y, int Outline, bool Crossing)> _events = [];
+    private readonly List<int> _crossed = [];
     private readonly List<Carried> _carried = [];
     private readonly List<int> _moved = [];
     private readonly List<int> _found = [];
@@ -48,10 +49,12 @@ internal sealed class ExactRow
     private Entry[] _entries = new Entry[16];
     private int _count;
     private int _pendingStarts;
+    private readonly bool _sweep;
     private bool _broken;
 
-    public ExactRow(Scene scene, ImagePlane plane, OutlineSet outlines)
+    public ExactRow(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep = true)
     {
+        _sweep = sweep;
         _scene = scene;
         _plane = plane;
         _outlines = outlines;
@@ -95,7 +98,7 @@ internal sealed class ExactRow
                 outlines[i].AddBreaks(y0, y1, _width, _cuts);
                 for (int k = before; k < _cuts.Count; k++)
                 {
-                    _events.Add((_cuts[k], i));
+                    _events.Add((_cuts[k], i, false));
                 }
             }
         }
@@ -114,8 +117,8 @@ internal sealed class ExactRow
             if (crossings[at].Y > y0)
             {
                 _cuts.Add(crossings[at].Y);
-                _events.Add((crossings[at].Y, crossings[at].First));
-                _events.Add((crossings[at].Y, crossings[at].Second));
+                _events.Add((crossings[at].Y, crossings[at].First, true));
+                _events.Add((crossings[at].Y, crossings[at].Second, true));
             }
         }
 
@@ -124,13 +127,13 @@ internal sealed class ExactRow
         _cuts.Sort();
         Array.Clear(_values);
         Array.Clear(_spans);
-        if (!segment)
+        if (!segment && _sweep)
         {
             _events.Sort(static (p, q) => p.Y.CompareTo(q.Y));
             Sweep();
         }
 
-        if (segment || _broken)
+        if (segment || _broken || !_sweep)
         {
             // A horizontal segment (a circle seen edge-on) can change the colour without a branch, and a broken
             // order means a crossing was missed: cut every strip afresh, as the sweep's reference does.
@@ -301,8 +304,14 @@ internal sealed class ExactRow
                 _dirty[i] = true;
             }
 
+            _crossed.Clear();
             while (e < _events.Count && _events[e].Y <= cut)
             {
+                if (_events[e].Crossing)
+                {
+                    _crossed.Add(_events[e].Outline);
+                }
+
                 if (!_dirty[_events[e].Outline])
                 {
                     _dirty[_events[e].Outline] = true;
@@ -423,7 +432,7 @@ internal sealed class ExactRow
                 int left = Id(k), right = RightId(k);
                 foreach (Carried c in _carried)
                 {
-                    if (c.Left == left && c.Right == right)
+                    if (c.Left == left && c.Right == right && !(Crossed(left) && Crossed(right)))
                     {
                         entry.Hit = c.Hit;
                         entry.Known = c.Known;
@@ -482,7 +491,13 @@ internal sealed class ExactRow
         return -1;
     }
 
-        // 2·outline for a left branch, 2·outline + 1 for a right one; the image's left and right edge.
+        // True when the branch with this Id belongs to an outline that crosses or touches another at the current cut. Two
+    // such branches that are neighbours above and below the cut may touch there, and the two sides of a touching
+    // point need not have one colour (a meeting circle's picture touches a sphere's outline where the circle passes
+    // behind the sphere: on one side it is a border, on the other not), so their gap's colour is traced again.
+    private bool Crossed(int id) => id >= 0 && _crossed.Contains(id >> 1);
+
+    // 2·outline for a left branch, 2·outline + 1 for a right one; the image's left and right edge.
     private int Id(int k) => k == 0 ? -1 : (2 * _entries[k].Outline) + (_entries[k].Sign > 0 ? 1 : 0);
 
     private int RightId(int k) => k + 1 < _count ? Id(k + 1) : -2;
