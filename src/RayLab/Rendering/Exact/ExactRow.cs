@@ -21,15 +21,20 @@ namespace RayLab.Rendering.Exact;
 /// order down the row, and at a cut only the outlines with something there (their own break, or a crossing of
 /// theirs: <see cref="OutlineSet.Crossings"/> names the pair) are found, taken out and put back; a piece's area
 /// is added once for the whole height over which its two branches stay neighbours, and its colour is traced
-/// once, or carried when the same two branches are neighbours again just below a cut. So a row costs about
+/// once, or carried when the same two branches are neighbours again just below a cut (not where both their
+/// outlines cross or touch at that cut: the two sides of a touching point need not share a colour). So a row costs about
 /// O(log n) per event and one ray per piece that really begins, not a ray per piece per strip (on a field of
 /// spheres, tens of thousands of rays instead of millions). The pictures are the same bytes as cutting every strip afresh
-/// (golden set, <c>SphereHierarchyTests</c>), which the row still does where the sweep cannot be trusted: a
+/// (golden set, <c>SphereHierarchyTests</c>, <c>ExactSweepTests</c>), which the row still does with fewer than
+/// eight outlines (where the sweep does not pay) and where the sweep cannot be trusted: a
 /// horizontal segment (a circle seen edge-on, which changes the colour without a branch), or branches found
 /// out of order by more than rounding (a crossing missed).</para>
 /// </remarks>
 internal sealed class ExactRow
 {
+    // The fewest outlines in a row for the sweep (below, strip by strip).
+    private const int SweepFrom = 8;
+
     private readonly Scene _scene;
     private readonly ImagePlane _plane;
     private readonly OutlineSet _outlines;
@@ -127,13 +132,15 @@ internal sealed class ExactRow
         _cuts.Sort();
         Array.Clear(_values);
         Array.Clear(_spans);
-        if (!segment && _sweep)
+        // A row of a few outlines is cut strip by strip: there the sweep's bookkeeping costs more than it saves.
+        bool sweep = _sweep && !segment && _present.Count >= SweepFrom;
+        if (sweep)
         {
             _events.Sort(static (p, q) => p.Y.CompareTo(q.Y));
             Sweep();
         }
 
-        if (segment || _broken || !_sweep)
+        if (!sweep || _broken)
         {
             // A horizontal segment (a circle seen edge-on) can change the colour without a branch, and a broken
             // order means a crossing was missed: cut every strip afresh, as the sweep's reference does.

@@ -193,7 +193,13 @@ internal sealed class OutlineSet
         // above its bottom (a sweep down the image; every pair the all-pairs loop would find, as i < j). The pairs
         // are solved in parallel and the crossings sorted (by height, then the pair), so the order is always the same.
         int[] byTop = [.. Enumerable.Range(0, outlines.Length).OrderBy(k => outlines[k].Top)];
-        Parallel.For(0, byTop.Length, parallel ?? new ParallelOptions(), () => new List<Crossing>(), (s, _, found) =>
+        parallel ??= new ParallelOptions();
+        if (outlines.Length < 64)
+        {
+            parallel = new ParallelOptions { MaxDegreeOfParallelism = 1, CancellationToken = parallel.CancellationToken };
+        }
+
+        Parallel.For(0, byTop.Length, parallel, () => new List<Crossing>(), (s, _, found) =>
         {
             Span<double> thetas = stackalloc double[4];
             for (int u = s + 1; u < byTop.Length && outlines[byTop[u]].Top <= outlines[byTop[s]].Bottom; u++)
