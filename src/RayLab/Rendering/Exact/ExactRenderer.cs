@@ -77,7 +77,7 @@ public sealed class ExactRenderer
 
     /// <summary>The exact render into an 8-bit image, for <see cref="RenderMethod.Exact"/>.</summary>
     internal static RenderStatistics RenderPlane(Scene scene, ImagePlane plane, Image image, RenderOptions options) =>
-        Run(scene, plane, options, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (row, worker) =>
+        Run(scene, plane, options, sweep: true, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (row, worker) =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
             if (worker.IsUniform)
@@ -110,8 +110,17 @@ public sealed class ExactRenderer
         ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
+        return RenderLinear(scene, camera, width, height, sweep: true);
+    }
+
+    /// <summary>
+    /// <see cref="RenderLinear(Scene, Camera, int, int)"/> with the row sweep on, or off (every strip of every row
+    /// cut afresh, as before issue #20): for tests that the sweep changes nothing.
+    /// </summary>
+    internal Intensity[] RenderLinear(Scene scene, Camera camera, int width, int height, bool sweep)
+    {
         var result = new Intensity[(long)width * height];
-        Run(scene, camera.GetImagePlane(width, height), Options, (row, worker) =>
+        Run(scene, camera.GetImagePlane(width, height), Options, sweep, (row, worker) =>
         {
             Span<Intensity> pixels = result.AsSpan(row * width, width);
             if (worker.IsUniform)
@@ -143,15 +152,15 @@ public sealed class ExactRenderer
     {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
-        OutlineSet.Build(scene, camera.GetImagePlane(width, height));
+        OutlineSet.Build(scene, camera.GetImagePlane(width, height), withCrossings: false);
     }
 
-    private static RenderStatistics Run(Scene scene, ImagePlane plane, RenderOptions options, Action<int, ExactRow> writeRow)
+    private static RenderStatistics Run(Scene scene, ImagePlane plane, RenderOptions options, bool sweep, Action<int, ExactRow> writeRow)
     {
         var clock = Stopwatch.StartNew();
-        OutlineSet outlines = OutlineSet.Build(scene, plane);
+        OutlineSet outlines = OutlineSet.Build(scene, plane, parallel: options.Parallel);
         options.Progress?.Start(plane.Height);
-        Parallel.For(0, plane.Height, options.Parallel, () => new ExactRow(scene, plane, outlines), (row, _, worker) =>
+        Parallel.For(0, plane.Height, options.Parallel, () => new ExactRow(scene, plane, outlines, sweep), (row, _, worker) =>
         {
             worker.Integrate(row);
             writeRow(row, worker);

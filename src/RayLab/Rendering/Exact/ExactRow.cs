@@ -17,9 +17,24 @@ namespace RayLab.Rendering.Exact;
 /// strip, and inside a strip the min and max pick the same side everywhere: each pixel gets an exact integral
 /// of a branch (<see cref="Outline.Integral"/>) or of a pixel edge. Pixels wholly inside a piece are added as one
 /// span (a difference array summed once per row), so they cost nothing per pixel.</para>
+/// <para>3. The sweep (issue #20): the strips are not cut afresh. The branches are kept in their left-to-right
+/// order down the row, and at a cut only the outlines with something there (their own break, or a crossing of
+/// theirs: <see cref="OutlineSet.Crossings"/> names the pair) are found, taken out and put back; a piece's area
+/// is added once for the whole height over which its two branches stay neighbours, and its colour is traced
+/// once, or carried when the same two branches are neighbours again just below a cut (not where both their
+/// outlines cross or touch at that cut: the two sides of a touching point need not share a colour). So a row costs about
+/// O(log n) per event and one ray per piece that really begins, not a ray per piece per strip (on a field of
+/// spheres, tens of thousands of rays instead of millions). The pictures are the same bytes as cutting every strip afresh
+/// (golden set, <c>SphereHierarchyTests</c>, <c>ExactSweepTests</c>), which the row still does with fewer than
+/// eight outlines (where the sweep does not pay) and where the sweep cannot be trusted: a
+/// horizontal segment (a circle seen edge-on, which changes the colour without a branch), or branches found
+/// out of order by more than rounding (a crossing missed).</para>
 /// </remarks>
 internal sealed class ExactRow
 {
+    // The fewest outlines in a row for the sweep (below, strip by strip).
+    private const int SweepFrom = 8;
+
     private readonly Scene _scene;
     private readonly ImagePlane _plane;
     private readonly OutlineSet _outlines;
@@ -28,16 +43,30 @@ internal sealed class ExactRow
     private readonly double[] _spans;
     private readonly List<double> _cuts = [];
     private readonly List<int> _present = [];
+    private readonly List<(double Y, int Outline, bool Crossing)> _events = [];
+    private readonly List<int> _crossed = [];
+    private readonly List<Carried> _carried = [];
+    private readonly List<int> _moved = [];
+    private readonly List<int> _found = [];
+    private readonly List<(int Outline, int Sign)> _restart = [];
+    private readonly bool[] _dirty;
     private Branch[] _branches = new Branch[8];
+    private Entry[] _entries = new Entry[16];
+    private int _count;
+    private int _pendingStarts;
+    private readonly bool _sweep;
+    private bool _broken;
 
-    public ExactRow(Scene scene, ImagePlane plane, OutlineSet outlines)
+    public ExactRow(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep = true)
     {
+        _sweep = sweep;
         _scene = scene;
         _plane = plane;
         _outlines = outlines;
         _width = plane.Width;
         _values = new double[3 * _width];
         _spans = new double[3 * (_width + 1)];
+        _dirty = new bool[outlines.Outlines.Length];
     }
 
     /// <summary>
@@ -60,13 +89,22 @@ internal sealed class ExactRow
         double y0 = row, y1 = row + 1;
         _cuts.Clear();
         _present.Clear();
+        _events.Clear();
+        _broken = false;
+        bool segment = false;
         Outline[] outlines = _outlines.Outlines;
         for (int i = 0; i < outlines.Length; i++)
         {
             if (outlines[i].Bottom >= y0 && outlines[i].Top <= y1)
             {
                 _present.Add(i);
+                segment |= outlines[i].Hy == 0;
+                int before = _cuts.Count;
                 outlines[i].AddBreaks(y0, y1, _width, _cuts);
+                for (int k = before; k < _cuts.Count; k++)
+                {
+                    _events.Add((_cuts[k], i, false));
+                }
             }
         }
 
@@ -77,13 +115,15 @@ internal sealed class ExactRow
             return;
         }
 
-        double[] crossings = _outlines.CrossingHeights;
-        int at = Array.BinarySearch(crossings, y0);
-        for (at = at < 0 ? ~at : at; at < crossings.Length && crossings[at] < y1; at++)
+        OutlineSet.Crossing[] crossings = _outlines.Crossings;
+        int at = FirstCrossingFrom(crossings, y0);
+        for (; at < crossings.Length && crossings[at].Y < y1; at++)
         {
-            if (crossings[at] > y0)
+            if (crossings[at].Y > y0)
             {
-                _cuts.Add(crossings[at]);
+                _cuts.Add(crossings[at].Y);
+                _events.Add((crossings[at].Y, crossings[at].First, true));
+                _events.Add((crossings[at].Y, crossings[at].Second, true));
             }
         }
 
@@ -92,11 +132,26 @@ internal sealed class ExactRow
         _cuts.Sort();
         Array.Clear(_values);
         Array.Clear(_spans);
-        for (int k = 0; k + 1 < _cuts.Count; k++)
+        // A row of a few outlines is cut strip by strip: there the sweep's bookkeeping costs more than it saves.
+        bool sweep = _sweep && !segment && _present.Count >= SweepFrom;
+        if (sweep)
         {
-            if (_cuts[k + 1] > _cuts[k])
+            _events.Sort(static (p, q) => p.Y.CompareTo(q.Y));
+            Sweep();
+        }
+
+        if (!sweep || _broken)
+        {
+            // A horizontal segment (a circle seen edge-on) can change the colour without a branch, and a broken
+            // order means a crossing was missed: cut every strip afresh, as the sweep's reference does.
+            Array.Clear(_values);
+            Array.Clear(_spans);
+            for (int k = 0; k + 1 < _cuts.Count; k++)
             {
-                Strip(_cuts[k], _cuts[k + 1]);
+                if (_cuts[k + 1] > _cuts[k])
+                {
+                    Strip(_cuts[k], _cuts[k + 1]);
+                }
             }
         }
 
@@ -161,7 +216,7 @@ internal sealed class ExactRow
 
             if (rightX > leftX)
             {
-                Piece(leftX, leftIntegral, rightX, rightIntegral, ym, h);
+                Piece(leftX, leftIntegral, rightX, rightIntegral, h, Probe(0.5 * (leftX + rightX), ym));
                 leftX = rightX;
                 leftIntegral = rightIntegral;
             }
@@ -173,11 +228,10 @@ internal sealed class ExactRow
         }
     }
 
-    // The piece between boundaries at xl and xr (at mid-strip), with ∫X dY of each over the strip.
+    // The piece of colour c between boundaries at xl and xr (at mid-height), with ∫X dY of each over its height h.
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private void Piece(double xl, double il, double xr, double ir, double ym, double h)
+    private void Piece(double xl, double il, double xr, double ir, double h, Intensity c)
     {
-        Intensity c = Probe(0.5 * (xl + xr), ym);
         int a = Math.Min((int)xl, _width - 1), b = Math.Min((int)xr, _width - 1);
         if (a == b)
         {
@@ -198,11 +252,425 @@ internal sealed class ExactRow
         }
     }
 
+    // The sweep down the row: the branches are kept in their order left to right, and at each cut only the outlines
+    // with something there (their own breaks, or a crossing of theirs) are taken out and put back. A gap between two
+    // neighbouring branches is a piece of one colour for as long as both stay its neighbours and no pixel edge is
+    // crossed; its area is added once, over that whole height (Flush), and its colour is traced once, or carried
+    // when the same two branches are neighbours again just below the cut (nothing between them changed there).
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private void Sweep()
+    {
+        List<double> cuts = _cuts;
+        int m = 1;
+        for (int k = 1; k < cuts.Count; k++)
+        {
+            if (cuts[k] > cuts[m - 1])
+            {
+                cuts[m++] = cuts[k];
+            }
+        }
+
+        cuts.RemoveRange(m, cuts.Count - m);
+        Outline[] outlines = _outlines.Outlines;
+        double ym = 0.5 * (cuts[0] + cuts[1]);
+        int n = 0;
+        foreach (int i in _present)
+        {
+            Outline o = outlines[i];
+            if (o.Hy > 0 && Math.Abs(ym - o.Yc) < o.Hy)
+            {
+                if (n + 2 > _branches.Length)
+                {
+                    Array.Resize(ref _branches, 2 * _branches.Length);
+                }
+
+                (double left, double right) = o.At(ym);
+                _branches[n++] = new Branch(left, i, -1);
+                _branches[n++] = new Branch(right, i, +1);
+            }
+        }
+
+        Span<Branch> branches = _branches.AsSpan(0, n);
+        branches.Sort(static (p, q) => Compare(p, q));
+        EnsureRoom(n + 1);
+        _entries[0] = new Entry { Outline = -1, GapStart = cuts[0] };
+        for (int k = 0; k < n; k++)
+        {
+            _entries[k + 1] = new Entry { Outline = branches[k].Outline, Sign = branches[k].Sign, GapStart = cuts[0] };
+        }
+
+        _count = n + 1;
+        _pendingStarts = 0;
+        int e = 0;
+        _moved.Clear();
+        for (int k = 1; k + 1 < m; k++)
+        {
+            double cut = cuts[k];
+            foreach (int i in _moved)
+            {
+                _dirty[i] = true;
+            }
+
+            _crossed.Clear();
+            while (e < _events.Count && _events[e].Y <= cut)
+            {
+                if (_events[e].Crossing)
+                {
+                    _crossed.Add(_events[e].Outline);
+                }
+
+                if (!_dirty[_events[e].Outline])
+                {
+                    _dirty[_events[e].Outline] = true;
+                    _moved.Add(_events[e].Outline);
+                }
+
+                e++;
+            }
+
+            double below = 0.5 * (cut + cuts[k + 1]);
+            Update(cut, ym, below);
+            ym = below;
+            if (_broken)
+            {
+                return;
+            }
+
+            // Below a strip so thin that its middle is hardly apart from the cut (two events a few ulps apart),
+            // the order just found may be the crossing's own tie: put the same branches back again at the next cut.
+            if (cuts[k + 1] - cut > 1e-7)
+            {
+                _moved.Clear();
+            }
+        }
+
+        for (int k = 0; k < _count; k++)
+        {
+            Flush(k, cuts[m - 1]);
+        }
+    }
+
+    // At a cut: the branches of the outlines marked dirty are found in the order (as it was just above, at `above`),
+    // the gaps beside them end, they are taken out and put back at their places just below (at `below`), and the
+    // gaps that begin get their colour carried or left to be traced. Work: O(log n) per branch moved, plus the
+    // shifting of the entries after it.
+    private void Update(double cut, double above, double below)
+    {
+        _carried.Clear();
+        _restart.Clear();
+        _found.Clear();
+        Outline[] outlines = _outlines.Outlines;
+        foreach (int i in _moved)
+        {
+            Outline o = outlines[i];
+            if (o.Hy > 0 && Math.Abs(above - o.Yc) < o.Hy)
+            {
+                int left = Find(i, -1, above), right = Find(i, +1, above);
+                if (left < 0 || right < 0)
+                {
+                    _broken = true;
+                    return;
+                }
+
+                _found.Add(left);
+                _found.Add(right);
+            }
+        }
+
+        _found.Sort();
+        for (int f = 0; f < _found.Count; f++)
+        {
+            int k = _found[f];
+            if (f == 0 || _found[f - 1] != k - 1)
+            {
+                End(k - 1, cut);
+            }
+
+            End(k, cut);
+        }
+
+        // Take the found entries out, shifting each run between them left.
+        if (_found.Count > 0)
+        {
+            int w = _found[0];
+            for (int f = 0; f < _found.Count; f++)
+            {
+                int from = _found[f] + 1, to = f + 1 < _found.Count ? _found[f + 1] : _count;
+                if (!double.IsNaN(_entries[_found[f]].GapStart))
+                {
+                    _broken = true; // cannot happen: every found entry's gap was just ended
+                }
+
+                _pendingStarts--;
+                Array.Copy(_entries, from, _entries, w, to - from);
+                w += to - from;
+            }
+
+            _count = w;
+        }
+
+        foreach (int i in _moved)
+        {
+            _dirty[i] = false;
+            Outline o = outlines[i];
+            if (o.Hy > 0 && Math.Abs(below - o.Yc) < o.Hy)
+            {
+                (double left, double right) = o.At(below);
+                Insert(new Branch(left, i, -1), below, cut);
+                Insert(new Branch(right, i, +1), below, cut);
+            }
+        }
+
+        foreach ((int outline, int sign) in _restart)
+        {
+            int k = outline < 0 ? 0 : Find(outline, sign, below);
+            if (k < 0)
+            {
+                _broken = true; // cannot happen: every branch restarted is in the order
+                return;
+            }
+
+            ref Entry entry = ref _entries[k];
+            if (double.IsNaN(entry.GapStart))
+            {
+                entry.GapStart = cut;
+                entry.Known = false;
+                _pendingStarts--;
+                int left = Id(k), right = RightId(k);
+                foreach (Carried c in _carried)
+                {
+                    if (c.Left == left && c.Right == right && !(Crossed(left) && Crossed(right)))
+                    {
+                        entry.Hit = c.Hit;
+                        entry.Known = c.Known;
+                        break;
+                    }
+                }
+            }
+        }
+
+        // Every gap that ended has begun again (or left with its branch): otherwise the order is not what it seems.
+        _broken |= _pendingStarts != 0;
+    }
+
+    // The index of branch (outline, sign) in the order, found by its X at height y (where the order holds), or −1.
+    private int Find(int outline, int sign, double y)
+    {
+        Outline[] outlines = _outlines.Outlines;
+        var key = new Branch(BranchX(outlines[outline], sign, y), outline, sign);
+        int lo = 1, hi = _count;
+        while (lo < hi)
+        {
+            int mid = (lo + hi) >>> 1;
+            Entry other = _entries[mid];
+            if (Compare(key, new Branch(BranchX(outlines[other.Outline], other.Sign, y), other.Outline, other.Sign)) > 0)
+            {
+                lo = mid + 1;
+            }
+            else
+            {
+                hi = mid;
+            }
+        }
+
+        // Branches a few ulps apart may stand in either order (placed where they were apart): look nearby, then everywhere.
+        for (int d = 0; d <= 8; d++)
+        {
+            if (lo + d < _count && _entries[lo + d].Outline == outline && _entries[lo + d].Sign == sign)
+            {
+                return lo + d;
+            }
+
+            if (lo - d >= 1 && lo - d < _count && _entries[lo - d].Outline == outline && _entries[lo - d].Sign == sign)
+            {
+                return lo - d;
+            }
+        }
+
+        for (int k = 1; k < _count; k++)
+        {
+            if (_entries[k].Outline == outline && _entries[k].Sign == sign)
+            {
+                return k;
+            }
+        }
+
+        return -1;
+    }
+
+        // True when the branch with this Id belongs to an outline that crosses or touches another at the current cut. Two
+    // such branches that are neighbours above and below the cut may touch there, and the two sides of a touching
+    // point need not have one colour (a meeting circle's picture touches a sphere's outline where the circle passes
+    // behind the sphere: on one side it is a border, on the other not), so their gap's colour is traced again.
+    private bool Crossed(int id) => id >= 0 && _crossed.Contains(id >> 1);
+
+    // 2·outline for a left branch, 2·outline + 1 for a right one; the image's left and right edge.
+    private int Id(int k) => k == 0 ? -1 : (2 * _entries[k].Outline) + (_entries[k].Sign > 0 ? 1 : 0);
+
+    private int RightId(int k) => k + 1 < _count ? Id(k + 1) : -2;
+
+    // Ends the gap right of entry k at the cut, remembering its two branches and colour.
+    private void End(int k, double cut)
+    {
+        Flush(k, cut);
+        _carried.Add(new Carried(Id(k), RightId(k), _entries[k].Hit, _entries[k].Known));
+        _entries[k].GapStart = double.NaN;
+        _pendingStarts++;
+        if (k == 0 || !_dirty[_entries[k].Outline])
+        {
+            _restart.Add((_entries[k].Outline, _entries[k].Sign)); // a branch being moved is restarted where it is put back
+        }
+    }
+
+    // Puts a branch back at its place in the order at height ym (the same order as Compare on every branch's X there).
+    private void Insert(Branch branch, double ym, double cut)
+    {
+        Outline[] outlines = _outlines.Outlines;
+        int lo = 1, hi = _count;
+        while (lo < hi)
+        {
+            int mid = (lo + hi) >>> 1;
+            Entry other = _entries[mid];
+            double x = BranchX(outlines[other.Outline], other.Sign, ym);
+            if (Compare(branch, new Branch(x, other.Outline, other.Sign)) > 0)
+            {
+                lo = mid + 1;
+            }
+            else
+            {
+                hi = mid;
+            }
+        }
+
+        if (!double.IsNaN(_entries[lo - 1].GapStart))
+        {
+            End(lo - 1, cut); // the gap the branch splits
+        }
+
+        EnsureRoom(_count + 1);
+        Array.Copy(_entries, lo, _entries, lo + 1, _count - lo);
+        _entries[lo] = new Entry { Outline = branch.Outline, Sign = branch.Sign, GapStart = double.NaN };
+        _count++;
+        _restart.Add((branch.Outline, branch.Sign));
+        _pendingStarts++;
+    }
+
+    // Adds the piece right of entry k from where it began to `end`, tracing its colour if not known yet.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private void Flush(int k, double end)
+    {
+        ref Entry entry = ref _entries[k];
+        double ys = entry.GapStart;
+        if (!(end > ys))
+        {
+            return;
+        }
+
+        Outline[] outlines = _outlines.Outlines;
+        double h = end - ys, ym = 0.5 * (ys + end);
+        double xl = 0, il = 0;
+        if (k > 0)
+        {
+            Outline o = outlines[entry.Outline];
+            double x = BranchX(o, entry.Sign, ym);
+            if (x >= _width)
+            {
+                return;
+            }
+
+            if (x > 0)
+            {
+                xl = x;
+                il = o.Integral(entry.Sign, ys, end);
+            }
+        }
+
+        double xr = _width, ir = _width * h;
+        if (k + 1 < _count)
+        {
+            Entry next = _entries[k + 1];
+            Outline o = outlines[next.Outline];
+            double x = BranchX(o, next.Sign, ym);
+            if (x <= 0)
+            {
+                return;
+            }
+
+            if (x < _width)
+            {
+                xr = x;
+                ir = o.Integral(next.Sign, ys, end);
+            }
+        }
+
+        if (!(xr > xl))
+        {
+            // Out of order by more than rounding: a crossing was missed, and the row is cut afresh.
+            _broken |= xl - xr > 1e-9 * (1 + xl);
+            return;
+        }
+
+        if (!entry.Known)
+        {
+            // Traced in a piece of some size, the colour is the piece's for sure and may be carried on; in a sliver
+            // (at a crossing, its two branches a few ulps apart) it may be a neighbour's, which matters for its
+            // own tiny area only.
+            entry.Hit = Hit(0.5 * (xl + xr), ym);
+            entry.Known = h > 1e-7 && xr - xl > 1e-7;
+        }
+
+        Piece(xl, il, xr, ir, h, _scene.ColourOf(entry.Hit));
+    }
+
+    private static double BranchX(Outline o, int sign, double y)
+    {
+        (double left, double right) = o.At(y);
+        return sign < 0 ? left : right;
+    }
+
+    private void EnsureRoom(int count)
+    {
+        if (count > _entries.Length)
+        {
+            Array.Resize(ref _entries, Math.Max(count, 2 * _entries.Length));
+        }
+    }
+
+    // By X; equal X by outline index, then left before right (the order a sort of the whole strip gives).
+    private static int Compare(Branch p, Branch q) =>
+        p.X != q.X ? p.X.CompareTo(q.X) : (p.Outline != q.Outline ? p.Outline.CompareTo(q.Outline) : p.Sign.CompareTo(q.Sign));
+
+    private static int FirstCrossingFrom(OutlineSet.Crossing[] crossings, double y)
+    {
+        int lo = 0, hi = crossings.Length;
+        while (lo < hi)
+        {
+            int mid = (lo + hi) >>> 1;
+            if (crossings[mid].Y < y)
+            {
+                lo = mid + 1;
+            }
+            else
+            {
+                hi = mid;
+            }
+        }
+
+        return lo;
+    }
+
     private void Add(int x, Intensity c, double area)
     {
         _values[3 * x] += c.R * area;
         _values[(3 * x) + 1] += c.G * area;
         _values[(3 * x) + 2] += c.B * area;
+    }
+
+    // What the ray at pixel coordinates (X, Y) hits: a sphere's index, or −1.
+    private int Hit(double x, double y)
+    {
+        Ray ray = _plane.GetRayAt(x, y);
+        return _scene.Nearest(ray, _plane.TMin, _plane.TMax);
     }
 
     // The colour at pixel coordinates (X, Y): the ColourOf what the ray there hits (flat shading).
@@ -213,4 +681,17 @@ internal sealed class ExactRow
     }
 
     private readonly record struct Branch(double X, int Outline, int Sign);
+
+    // A branch in the sweep's order and the gap (piece) right of it: where the gap began and its colour if traced.
+    private struct Entry
+    {
+        public int Outline;
+        public int Sign;
+        public double GapStart;
+        public int Hit;
+        public bool Known;
+    }
+
+    // A gap ended at a cut: its left and right branch (Id) and its colour.
+    private readonly record struct Carried(int Left, int Right, int Hit, bool Known);
 }

@@ -21,10 +21,11 @@ namespace RayLab.Rendering.Exact;
 /// </remarks>
 internal sealed class OutlineSet
 {
-    private OutlineSet(Outline[] outlines, double[] crossings)
+    private OutlineSet(Outline[] outlines, Crossing[] crossings)
     {
         Outlines = outlines;
-        CrossingHeights = crossings;
+        Crossings = crossings;
+        CrossingHeights = [.. crossings.Select(c => c.Y)];
     }
 
     /// <summary>The most spheres in view the exact renderer draws (above it, <see cref="Build"/> refuses the scene).</summary>
@@ -36,15 +37,20 @@ internal sealed class OutlineSet
     /// <summary>The heights Y, sorted, where two outlines cross (and, to be safe, where they nearly touch).</summary>
     public double[] CrossingHeights { get; }
 
+    /// <summary>The same crossings with the two outlines (indices into <see cref="Outlines"/>) that cross there, sorted by Y.</summary>
+    public Crossing[] Crossings { get; }
+
     /// <summary>Finds the outlines of <paramref name="scene"/> as <paramref name="plane"/> sees it.</summary>
     /// <param name="scene">The scene.</param>
     /// <param name="plane">The camera's image plane.</param>
+    /// <param name="withCrossings">False to skip finding where the outlines cross (for a check that draws nothing).</param>
+    /// <param name="parallel">The threads to find the crossings with (and the cancellation); null for the defaults.</param>
     /// <exception cref="UnsupportedSceneException">
     /// A sphere that visible rays can reach extends behind a perspective camera's eye (or within 1e-4 of its
     /// radius of the plane through the eye): its outline is not an ellipse. Or the zoom is so high that double
     /// rounding alone moves its picture by more than 1e-6 of a pixel (<see cref="OutlineProjection.RoundingInPixels"/>).
     /// </exception>
-    public static OutlineSet Build(Scene scene, ImagePlane plane)
+    public static OutlineSet Build(Scene scene, ImagePlane plane, bool withCrossings = true, ParallelOptions? parallel = null)
     {
         var projection = new OutlineProjection(plane);
         double depthPerT = plane.DepthPerT;
@@ -108,7 +114,7 @@ internal sealed class OutlineSet
 
         Outline[] inImage = outlines.Where(o => (o.Hx > 0 || o.Hy > 0)
             && o.Right >= 0 && o.Left <= plane.Width && o.Bottom >= 0 && o.Top <= plane.Height).ToArray();
-        return new OutlineSet(inImage, Crossings(inImage, plane.Height));
+        return new OutlineSet(inImage, withCrossings ? FindCrossings(inImage, plane.Height, parallel) : []);
     }
 
     /// <summary>
@@ -179,16 +185,23 @@ internal sealed class OutlineSet
         return (a.Centre + (along * n), radius, n);
     }
 
-    private static double[] Crossings(Outline[] outlines, int height)
+    private static Crossing[] FindCrossings(Outline[] outlines, int height, ParallelOptions? parallel)
     {
-        var ys = new List<double>();
-        Span<double> thetas = stackalloc double[4];
+        var ys = new List<Crossing>();
 
         // Only pairs whose heights overlap can cross: outlines by their top, each paired with those starting
-        // above its bottom (a sweep down the image; every pair the all-pairs loop would find, as i < j).
+        // above its bottom (a sweep down the image; every pair the all-pairs loop would find, as i < j). The pairs
+        // are solved in parallel and the crossings sorted (by height, then the pair), so the order is always the same.
         int[] byTop = [.. Enumerable.Range(0, outlines.Length).OrderBy(k => outlines[k].Top)];
-        for (int s = 0; s < byTop.Length; s++)
+        parallel ??= new ParallelOptions();
+        if (outlines.Length < 64)
         {
+            parallel = new ParallelOptions { MaxDegreeOfParallelism = 1, CancellationToken = parallel.CancellationToken };
+        }
+
+        Parallel.For(0, byTop.Length, parallel, () => new List<Crossing>(), (s, _, found) =>
+        {
+            Span<double> thetas = stackalloc double[4];
             for (int u = s + 1; u < byTop.Length && outlines[byTop[u]].Top <= outlines[byTop[s]].Bottom; u++)
             {
                 int i = Math.Min(byTop[s], byTop[u]), j = Math.Max(byTop[s], byTop[u]);
@@ -206,14 +219,33 @@ internal sealed class OutlineSet
                     double y = walk.PointAt(thetas[k]).Y;
                     if (y >= 0 && y <= height)
                     {
-                        ys.Add(y);
+                        found.Add(new Crossing(y, i, j));
                     }
                 }
             }
-        }
+
+            return found;
+        }, found =>
+        {
+            lock (ys)
+            {
+                ys.AddRange(found);
+            }
+        });
 
         ys.Sort();
         return [.. ys];
+    }
+
+    /// <summary>A height where two outlines cross (or nearly touch).</summary>
+    /// <param name="Y">The height.</param>
+    /// <param name="First">The outline with the smaller index.</param>
+    /// <param name="Second">The other outline.</param>
+    internal readonly record struct Crossing(double Y, int First, int Second) : IComparable<Crossing>
+    {
+        /// <inheritdoc/>
+        public int CompareTo(Crossing other) =>
+            Y != other.Y ? Y.CompareTo(other.Y) : First != other.First ? First.CompareTo(other.First) : Second.CompareTo(other.Second);
     }
 
     // The angles θ of `walk` where it meets `fixedOne`, from g(θ) = 0 with g a trigonometric polynomial of degree ≤ 2.

@@ -88,6 +88,7 @@ internal static class TrigRoots
             z[k] = Complex.FromPolarCoordinates(1 + (0.05 * k), 0.4 + (1.6 * k));
         }
 
+        double previousStep = double.PositiveInfinity;
         for (int iteration = 0; iteration < 200; iteration++)
         {
             double largestStep = 0;
@@ -116,10 +117,14 @@ internal static class TrigRoots
                 largestStep = Math.Max(largestStep, step.Magnitude / Math.Max(1, z[k].Magnitude));
             }
 
-            if (largestStep < 1e-16)
+            // Done when the steps are below double's resolution, or when they have stopped shrinking at the level
+            // of rounding (they then wander by an ulp or two for ever: the remaining iterations changed nothing).
+            if (largestStep < 1e-16 || (largestStep < 1e-13 && largestStep >= previousStep))
             {
                 break;
             }
+
+            previousStep = largestStep;
         }
     }
 
