@@ -56,7 +56,7 @@ internal static partial class PacketKernel
         TL minusHalf = TL.Broadcast(-0.5f), oneAndHalf = TL.Broadcast(1.5f);
         TL left = WindowMapping.PacketLeft(x0, invWidth);
         TL rowTop = WindowMapping.RowTop<TL>(row, frame.Height);
-        var start = new LaneHit<TL>(TL.Broadcast(float.NegativeInfinity), TL.Broadcast(background.X), TL.Broadcast(background.Y), TL.Broadcast(background.Z), default, default);
+        var start = new LaneHit<TL>(TL.Broadcast(float.NegativeInfinity), TL.Broadcast(background.X), TL.Broadcast(background.Y), TL.Broadcast(background.Z), default, default, default);
         TL accumulatedRed = default, accumulatedGreen = default, accumulatedBlue = default;
         for (int index = 0; index < samplesPerPixel; index++)
         {
@@ -66,14 +66,14 @@ internal static partial class PacketKernel
             TP.GetRays(window, alpha, beta, out Lanes3<TL> origin, out Lanes3<TL> ray);
             TL dd = TL.MultiplyAdd(ray.X, ray.X, TL.MultiplyAdd(ray.Y, ray.Y, ray.Z * ray.Z));
             TL rdd = one / dd;
-            TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
+            TL inverseLength = TL.Sqrt(rdd);
 
             // The packet's leaves hold every box its rays can reach while each sample stays within half a pixel
             // of its pixel (the samplers' [0, 1)); a sample outside that traverses from the root.
             uint stray = TL.MaskBits(TL.LessThan(sx, minusHalf) | TL.LessThan(sy, minusHalf) | TL.LessThan(oneAndHalf, sx) | TL.LessThan(oneAndHalf, sy));
             LaneHit<TL> found = stray == 0
-                ? PacketHierarchy.NearestInLeaves<TL, TP>(hierarchy, leaves, origin, ray, dd, rdd, depthTolerance, checkOrder, start)
-                : PacketHierarchy.Nearest<TL, TP>(hierarchy, origin, ray, dd, rdd, depthTolerance, checkOrder, start);
+                ? PacketHierarchy.NearestInLeaves<TL, TP>(hierarchy, leaves, origin, ray, dd, rdd, inverseLength, checkOrder, start)
+                : PacketHierarchy.Nearest<TL, TP>(hierarchy, origin, ray, dd, rdd, inverseLength, checkOrder, start);
             (TL red, TL green, TL blue) = (found.R, found.G, found.B);
             uint uncertain = TL.MaskBits(found.Unsure | TL.LessThanOrEqual(found.Closest, one));
             if (uncertain != 0)
