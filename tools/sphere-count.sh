@@ -1,8 +1,9 @@
 #!/bin/sh
 # Cost against sphere count (docs/performance.md): random scenes (tools/sphere-scenes.py random N) at 320×240,
 # 2 threads, renderMs (the median of 3 runs; one run where a render takes over 5 s) of jittered 16, adaptive at its
-# defaults and exact, each with the hierarchy ("auto") and with "acceleration": "none"; a render over 60 s is cut
-# off ("> 60 s"), and a column stops at its first cut-off. Writes docs/sphere-count.csv, docs/sphere-count.md (the
+# defaults and exact, each with the hierarchy ("auto") and with "acceleration": "none"; a run whose process (start-up,
+# the JIT build's warm-up render and the timed one: about 2 × renderMs) takes over 60 s is cut off ("> 60 s"), and
+# a column stops at its first cut-off. Writes docs/sphere-count.csv, docs/sphere-count.md (the
 # table) and the log-log chart docs/sphere-count.png + .svg (raylab's hidden `chart` command, the library's
 # LogLogChart). Usage, from the repository's folder after a Release build:
 #   sh tools/sphere-count.sh [RAYLAB] [COUNTS]      e.g. sh tools/sphere-count.sh "" "1 10 100"

@@ -92,17 +92,80 @@ internal sealed class PacketHierarchy
     /// [−½, 1½) and traverses from the root for a sample outside it). Tested in double against the float boxes.
     /// </summary>
     /// <param name="x0">The packet's first column.</param>
-    /// <param name="lanes">The packet's width.</param>
+    /// <param name="lanes">The packet's width (or a span of several packets': see <see cref="FilterLeaves"/>).</param>
     /// <param name="row">The row.</param>
     /// <param name="leaves">Receives the leaves' node indices; as long as <see cref="Nodes"/>.</param>
     /// <returns>The number of leaves.</returns>
     public int CollectLeaves(int x0, int lanes, int row, Span<int> leaves)
     {
+        Span<Plane> planes = stackalloc Plane[5];
+        int negative = Frustum(x0, lanes, row, planes);
+        PacketNode[] nodes = Nodes;
+        Span<int> stack = stackalloc int[Depth + 1];
+        int top = 0, count = 0;
+        stack[top++] = 0;
+        while (top > 0)
+        {
+            int index = stack[--top];
+            ref readonly PacketNode node = ref nodes[index];
+            if (Outside(node, planes))
+            {
+                continue;
+            }
+
+            if (node.Count > 0)
+            {
+                leaves[count++] = index;
+                continue;
+            }
+
+            bool rightFirst = ((negative >> node.Axis) & 1) != 0;
+            stack[top++] = rightFirst ? index + 1 : node.Start;
+            stack[top++] = rightFirst ? node.Start : index + 1;
+        }
+
+        return count;
+    }
+
+    /// <summary>
+    /// The leaves of <paramref name="span"/> (collected by <see cref="CollectLeaves"/> for pixels that include this
+    /// packet's) that the packet's own frustum reaches, in the same order: the same set <see cref="CollectLeaves"/>
+    /// gives the packet (a leaf its frustum reaches lies in the wider one too), for a test per leaf instead of a walk.
+    /// </summary>
+    /// <param name="x0">The packet's first column.</param>
+    /// <param name="lanes">The packet's width.</param>
+    /// <param name="row">The row.</param>
+    /// <param name="span">The leaves of a span of pixels that contains the packet's.</param>
+    /// <param name="leaves">Receives the packet's leaves; at least as long as <paramref name="span"/>.</param>
+    /// <returns>The number of leaves.</returns>
+    public int FilterLeaves(int x0, int lanes, int row, ReadOnlySpan<int> span, Span<int> leaves)
+    {
+        Span<Plane> planes = stackalloc Plane[5];
+        Frustum(x0, lanes, row, planes);
+        PacketNode[] nodes = Nodes;
+        int count = 0;
+        foreach (int index in span)
+        {
+            if (!Outside(nodes[index], planes))
+            {
+                leaves[count++] = index;
+            }
+        }
+
+        return count;
+    }
+
+    /// <summary>
+    /// The five half-spaces (relative to the fixed point) that bound the rays of pixels <paramref name="x0"/> − 1 …
+    /// <paramref name="x0"/> + <paramref name="lanes"/> of rows <paramref name="row"/> − 1 … <paramref name="row"/> + 1;
+    /// returns the octant of the frustum's centre direction (bit k: axis k negative), for a near-first walk.
+    /// </summary>
+    private int Frustum(int x0, int lanes, int row, Span<Plane> planes)
+    {
         ImagePlane plane = _plane;
         double alpha0 = (x0 - 1.0) / plane.Width, alpha1 = (x0 + lanes + 1.0) / plane.Width;
         double beta0 = 1 - ((row + 2.0) / plane.Height), beta1 = 1 - ((row - 1.0) / plane.Height);
         Double3 a = plane.A, b = plane.B, c = plane.C, gaze = -plane.W;
-        Span<Plane> planes = stackalloc Plane[5];
         if (plane.IsOrthographic)
         {
             // Origins α a + β b (from e + c), direction −w: four planes along −w through the window's edges.
@@ -122,48 +185,26 @@ internal sealed class PacketHierarchy
 
         planes[4] = new Plane(gaze, 0); // nothing behind the eye (or the orthographic window's plane)
         Double3 centre = plane.IsOrthographic ? gaze : c + (0.5 * (alpha0 + alpha1) * a) + (0.5 * (beta0 + beta1) * b);
-        int negative = (centre.X < 0 ? 1 : 0) | (centre.Y < 0 ? 2 : 0) | (centre.Z < 0 ? 4 : 0);
-        PacketNode[] nodes = Nodes;
-        Span<int> stack = stackalloc int[Depth + 1];
-        int top = 0, count = 0;
-        stack[top++] = 0;
-        while (top > 0)
+        return (centre.X < 0 ? 1 : 0) | (centre.Y < 0 ? 2 : 0) | (centre.Z < 0 ? 4 : 0);
+    }
+
+    /// <summary>True when the node's box lies wholly outside one of the half-spaces.</summary>
+    private static bool Outside(in PacketNode node, ReadOnlySpan<Plane> planes)
+    {
+        // The box relative to the fixed point is [−Lo, −Hi] (the node stores fixed point − corner).
+        Double3 lo = new(-(double)node.Lo.X, -(double)node.Lo.Y, -(double)node.Lo.Z);
+        Double3 hi = new(-(double)node.Hi.X, -(double)node.Hi.Y, -(double)node.Hi.Z);
+        foreach (Plane side in planes)
         {
-            int index = stack[--top];
-            ref readonly PacketNode node = ref nodes[index];
-
-            // The box relative to the fixed point is [−Lo, −Hi] (the node stores fixed point − corner).
-            Double3 lo = new(-(double)node.Lo.X, -(double)node.Lo.Y, -(double)node.Lo.Z);
-            Double3 hi = new(-(double)node.Hi.X, -(double)node.Hi.Y, -(double)node.Hi.Z);
-            bool outside = false;
-            foreach (Plane side in planes)
+            Double3 n = side.Normal;
+            double farthest = ((n.X >= 0 ? hi.X : lo.X) * n.X) + ((n.Y >= 0 ? hi.Y : lo.Y) * n.Y) + ((n.Z >= 0 ? hi.Z : lo.Z) * n.Z);
+            if (farthest + side.Offset < 0)
             {
-                Double3 n = side.Normal;
-                double farthest = ((n.X >= 0 ? hi.X : lo.X) * n.X) + ((n.Y >= 0 ? hi.Y : lo.Y) * n.Y) + ((n.Z >= 0 ? hi.Z : lo.Z) * n.Z);
-                if (farthest + side.Offset < 0)
-                {
-                    outside = true;
-                    break;
-                }
+                return true;
             }
-
-            if (outside)
-            {
-                continue;
-            }
-
-            if (node.Count > 0)
-            {
-                leaves[count++] = index;
-                continue;
-            }
-
-            bool rightFirst = ((negative >> node.Axis) & 1) != 0;
-            stack[top++] = rightFirst ? index + 1 : node.Start;
-            stack[top++] = rightFirst ? node.Start : index + 1;
         }
 
-        return count;
+        return false;
     }
 
     /// <summary>The half-space n·x + d ≥ 0 with n = ±<paramref name="normal"/> pointing along <paramref name="inward"/>, through <paramref name="point"/>.</summary>

@@ -13,6 +13,9 @@ namespace RayLab.Rendering.Point.Packets;
 /// </summary>
 internal static partial class PacketKernel
 {
+    /// <summary>Packets whose leaves one walk of the tree collects (each then filters them by its own frustum).</summary>
+    private const int PacketsPerSpan = 4;
+
     /// <summary>
     /// Renders one row through the hierarchy: per packet the leaves its rays can reach, per sample those leaves'
     /// boxes and spheres in lanes; uncertain lanes are traced again in double at once (traversal costs more than
@@ -29,14 +32,24 @@ internal static partial class PacketKernel
         int retraced = 0;
         TL scale = TL.Broadcast(256f / samplesPerPixel);
         int[] leafBuffer = ArrayPool<int>.Shared.Rent(hierarchy.Nodes.Length);
+        int[] spanBuffer = ArrayPool<int>.Shared.Rent(hierarchy.Nodes.Length);
+        int spanCount = 0;
         for (int x0 = 0; x0 < frame.Width; x0 += lanes)
         {
             sampler.BeginPacket(x0, row);
-            ReadOnlySpan<int> leaves = leafBuffer.AsSpan(0, hierarchy.CollectLeaves(x0, lanes, row, leafBuffer));
+
+            // One walk of the tree per span of packets; each packet then keeps the span's leaves its own frustum reaches.
+            if (x0 % (lanes * PacketsPerSpan) == 0)
+            {
+                spanCount = hierarchy.CollectLeaves(x0, lanes * PacketsPerSpan, row, spanBuffer);
+            }
+
+            ReadOnlySpan<int> leaves = leafBuffer.AsSpan(0, hierarchy.FilterLeaves(x0, lanes, row, spanBuffer.AsSpan(0, spanCount), leafBuffer));
             LaneColour<TL> sum = SumPacketThroughHierarchy<TL, TS, TP>(frame, hierarchy, ref sampler, samplesPerPixel, x0, row, leaves, ref retraced);
             EightBit.WriteLanes(sum.R, sum.G, sum.B, scale, pixels.Slice(x0, Math.Min(lanes, frame.Width - x0)));
         }
 
+        ArrayPool<int>.Shared.Return(spanBuffer);
         ArrayPool<int>.Shared.Return(leafBuffer);
         return retraced;
     }
