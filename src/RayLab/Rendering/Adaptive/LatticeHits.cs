@@ -75,14 +75,16 @@ internal sealed class LatticeHits
         {
             // The lattice's own copy of the hierarchy: its bounds cover the ray's rounding too, and each sphere
             // carries its index + 1 as the integer bits of the red lane (the kernel only selects it, bit for bit).
-            var byIndex = new Dictionary<int, HitSphere>(spheres.Count);
-            foreach (HitSphere sphere in spheres)
+            var position = new int[scene.Spheres.Count];
+            double largestRadius = 0;
+            for (int i = 0; i < spheres.Count; i++)
             {
-                byIndex[(int)sphere.Id - 1] = sphere;
+                int index = (int)spheres[i].Id - 1;
+                position[index] = i;
+                largestRadius = Math.Max(largestRadius, scene.Spheres[index].Radius);
             }
 
-            double largestRadius = spheres.Count == 0 ? 0 : spheres.Max(sphere => scene.Spheres[(int)sphere.Id - 1].Radius);
-            Hierarchy = PacketHierarchy.Create(hierarchy, plane, index => byIndex[index].ToConstants(), largestRadius);
+            Hierarchy = PacketHierarchy.Create(hierarchy, plane, index => spheres[position[index]].ToConstants(), largestRadius);
         }
     }
 
