@@ -121,13 +121,14 @@ public static class Program
         var scenes = new Command("scenes", "List the scenes raylab carries; render one by name from any folder: raylab render two-spheres -o out.png.");
         scenes.SetAction(_ => CarriedScenes.List(stdout, stderr));
         var patterns = PatternsCommand.Create(stdout, stderr, cancellation);
+        var chart = ChartCommand.Create(stdout, stderr);
 
         var root = new RootCommand(
             "RayLab: the photorealistic-rendering lab's ray tracer. With no command, renders the two-sphere scene "
             + "with the orthographic and the perspective camera, adaptive antialiasing, into out/ (with heat maps). "
             + "'raylab render --help' lists the options of a render.")
         {
-            render, compare, scenes, patterns,
+            render, compare, scenes, patterns, chart,
         };
         root.HelpName = "raylab"; // not the host's name (dotnet, testhost) in the usage lines
         root.SetAction(_ => RenderJob.RunDefault(stdout, stderr, cancellation));

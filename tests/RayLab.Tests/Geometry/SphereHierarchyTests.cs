@@ -134,6 +134,46 @@ public class SphereHierarchyTests
         Assert.True(scene.UsesHierarchy);
     }
 
+    /// <summary>
+    /// A dense cluster of overlapping spheres (hits a hair apart along many rays, the case the per-lane depth
+    /// tolerance decides): the packet kernel and the adaptive lattice through the hierarchy give the double
+    /// path's bytes, and they did retrace samples (the float path ran and found close hits).
+    /// </summary>
+    [Theory]
+    [InlineData("perspective")]
+    [InlineData("orthographic")]
+    public void OverlappingSpheresThroughTheHierarchyGiveTheDoublePathsBytes(string cameraName)
+    {
+        var random = new Random(17);
+        var spheres = new Sphere[600];
+        for (int i = 0; i < spheres.Length; i++)
+        {
+            var centre = new Double3((random.NextDouble() * 6) - 3, (random.NextDouble() * 4) - 2, -6 - (random.NextDouble() * 4));
+            spheres[i] = new Sphere(centre, 0.3 + (0.4 * random.NextDouble()), new Intensity(random.NextDouble(), random.NextDouble(), random.NextDouble()));
+        }
+
+        // Pairs a float rounding apart or a little more: their hits' order along a ray is what float may get wrong.
+        double[] shifts = [1e-7, 1e-6, 3e-6, 1e-5, 3e-5, 1e-4];
+        for (int k = 0; k < 40; k++)
+        {
+            var direction = new Double3(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5);
+            Double3 shift = shifts[k % shifts.Length] / direction.Length * direction;
+            spheres[(2 * k) + 1] = new Sphere(spheres[2 * k].Center + shift, spheres[2 * k].Radius, new Intensity(random.NextDouble(), random.NextDouble(), random.NextDouble()));
+        }
+
+        Camera camera = CameraOf(cameraName);
+        Scene scene = SceneOf(spheres, SceneAcceleration.Hierarchy);
+        foreach (RenderMethod method in new[] { RenderMethod.Sampled(new JitteredSampler(16, seed: 2)), RenderMethod.Adaptive(new AdaptiveSampler(maxDepth: 2)) })
+        {
+            byte[] reference = Render(scene, camera, method, RenderKernel.Scalar);
+            var image = new Image(53, 37);
+            RenderStatistics stats = new Renderer { Kernel = RenderKernel.Auto }.Render(scene, camera, method, image);
+            Assert.True(reference.AsSpan().SequenceEqual(image.PixelBytes), $"{method}: {cameraName}");
+            Assert.NotEqual(RenderKernel.Scalar, stats.Kernel);
+            Assert.InRange(stats.RetracedSamples, 1, stats.PrimaryRays / 4);
+        }
+    }
+
     [Fact]
     public void NearestIsTheLoopsAnswerForRandomRaysIncludingTiesAndRaysAlongAnAxis()
     {

@@ -22,8 +22,11 @@ namespace RayLab.Rendering.Adaptive;
 /// (perspective) is off by δ turns by at most <c>δ/s</c> about the eye, moving its distance from the centre by at
 /// most <c>L δ / s</c> and Δ by at most <c>3 L² δ / s</c>; one whose origin (orthographic) is off by δ moves
 /// Δ by at most <c>3 L δ</c>. With δ ≤ 8 ε (|c| + |a| + |b|) (resp. |e + c − C| + |a| + |b| + L), twice those
-/// terms are added. Lanes within the bound, and lanes whose two nearest hits are within the packet kernel's depth
-/// tolerance of each other, are traced again in double.</para>
+/// terms are added. Lanes within the bound, and lanes with two hits closer along the ray than their error bounds
+/// (<see cref="LaneSphere.Test{TL}"/>, with this bound), are traced again in double.</para>
+/// <para>In a scene with a hierarchy a row's packets traverse the lattice's copy of it
+/// (<see cref="PacketHierarchy.Nearest{TL, TP}"/>) instead of testing every sphere: a sphere it skips is one the
+/// ray misses or one behind the nearest hit, so the answers and the retraced lanes' indices are the same.</para>
 /// </remarks>
 internal sealed class LatticeHits
 {
@@ -45,7 +48,6 @@ internal sealed class LatticeHits
         C = plane.C;
         Direction = plane.IsOrthographic ? -plane.W : Double3.Zero;
         CheckDepthOrder = frame.CheckDepthOrder;
-        DepthTolerance = frame.DepthTolerance;
         var spheres = new List<HitSphere>();
         double rayError = 8 * Epsilon * (plane.C.Length + plane.A.Length + plane.B.Length);
         for (int k = 0; k < scene.Spheres.Count; k++)
@@ -65,11 +67,29 @@ internal sealed class LatticeHits
             double ray = plane.IsOrthographic
                 ? 2 * ((3 * largest * 8 * Epsilon * (offset.Length + plane.A.Length + plane.B.Length + largest)) + (3 * largest * largest * 8 * Epsilon))
                 : 2 * 3 * largest * largest * rayError / plane.Distance;
-            spheres.Add(new HitSphere(offset, (float)r2, (float)(1 / (arithmetic + ray)), k + 1));
+            spheres.Add(new HitSphere(offset, (float)r2, (float)(1 / (arithmetic + ray)), k + 1, DepthBound.Of(arithmetic + ray, sphere.Radius, largest)));
         }
 
         _spheres = [.. spheres];
+        if (scene.Hierarchy is { } hierarchy)
+        {
+            // The lattice's own copy of the hierarchy: its bounds cover the ray's rounding too, and each sphere
+            // carries its index + 1 as the integer bits of the red lane (the kernel only selects it, bit for bit).
+            var position = new int[scene.Spheres.Count];
+            double largestRadius = 0;
+            for (int i = 0; i < spheres.Count; i++)
+            {
+                int index = (int)spheres[i].Id - 1;
+                position[index] = i;
+                largestRadius = Math.Max(largestRadius, scene.Spheres[index].Radius);
+            }
+
+            Hierarchy = PacketHierarchy.Create(hierarchy, plane, index => spheres[position[index]].ToConstants(), largestRadius);
+        }
     }
+
+    /// <summary>The scene's hierarchy with this lattice's bounds, when the scene uses one: rows then traverse it instead of testing every sphere.</summary>
+    public PacketHierarchy? Hierarchy { get; }
 
     /// <summary>The lab's a, b, c in float.</summary>
     public Float3 A { get; }
@@ -85,9 +105,6 @@ internal sealed class LatticeHits
 
     /// <summary>True when two spheres are close enough that float could order their hits wrongly.</summary>
     public bool CheckDepthOrder { get; }
-
-    /// <summary>With <see cref="CheckDepthOrder"/>: hits closer than this (world units) along a ray are uncertain.</summary>
-    public float DepthTolerance { get; }
 
     /// <summary>The SIMD tracer for this frame, or null when float cannot serve it (see <see cref="PacketFrame.TryCreate"/>).</summary>
     public static LatticeHits? TryCreate(Scene scene, ImagePlane plane, long size, PacketFrame? frame) =>
@@ -117,6 +134,8 @@ internal sealed class LatticeHits
         TL beta = TL.Broadcast((float)WindowMapping.Beta(ly, _latticeHeight));
         TL start = TL.Broadcast((float)WindowMapping.Alpha(lxStart, _latticeWidth)), step = TL.Broadcast((float)(lxStep / _latticeWidth));
         ReadOnlySpan<HitSphere> spheres = _spheres;
+        PacketHierarchy? hierarchy = Hierarchy;
+        var background = new LaneHit<TL>(TL.Broadcast(float.NegativeInfinity), default, default, default, default, default, default);
         bool checkOrder = CheckDepthOrder;
         int retraced = 0;
         for (int k0 = 0; k0 < ids.Length; k0 += lanes)
@@ -126,26 +145,28 @@ internal sealed class LatticeHits
             (TL dx, TL dy, TL dz) = (ray.X, ray.Y, ray.Z);
             TL dd = TL.MultiplyAdd(dx, dx, TL.MultiplyAdd(dy, dy, dz * dz));
             TL rdd = one / dd;
-            TL nearest = TL.Broadcast(float.NegativeInfinity);
-            TL id = default;
-            TL closest = TL.Broadcast(float.PositiveInfinity);
-            TL unsure = default;
-            TL depthTolerance = checkOrder ? TL.Broadcast(DepthTolerance) / TL.Sqrt(dd) : default;
-            foreach (ref readonly HitSphere sphere in spheres)
+            TL inverseLength = TL.Sqrt(rdd);
+            TL id, closest, unsure;
+            if (hierarchy is not null)
             {
-                TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
-                TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
-                TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
-                TL negatedT = LaneSphere.NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(sphere.RadiusSquared), out TL disc);
-                TL hit = TL.LessThan(nearest, negatedT);
-                closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
-                if (checkOrder)
+                LaneHit<TL> found = PacketHierarchy.Nearest<TL, TP>(hierarchy, origin, ray, dd, rdd, inverseLength, checkOrder, background);
+                (id, closest, unsure) = (found.R, found.Closest, found.Unsure);
+            }
+            else
+            {
+                TL nearest = TL.Broadcast(float.NegativeInfinity);
+                TL nearestError = default;
+                id = default;
+                closest = TL.Broadcast(float.PositiveInfinity);
+                unsure = default;
+                foreach (ref readonly HitSphere sphere in spheres)
                 {
-                    unsure |= TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);   // either order, as the packet kernel: a farther sphere tested later may be the nearer one in double
+                    TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
+                    TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
+                    TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
+                    TL hit = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, sphere.RadiusSquared, sphere.InverseBound, sphere.Bound, checkOrder, ref nearest, ref nearestError, ref closest, ref unsure);
+                    id = TL.Select(hit, TL.BroadcastBits(sphere.Id), id);
                 }
-
-                nearest = TL.Select(hit, negatedT, nearest);
-                id = TL.Select(hit, TL.BroadcastBits(sphere.Id), id);
             }
 
             uint uncertain = TL.MaskBits(unsure | TL.LessThanOrEqual(closest, one));
@@ -172,8 +193,8 @@ internal sealed class LatticeHits
         return retraced;
     }
 
-    /// <summary>One sphere's constants: o − C at α = β = 0, r², 1 / the error bound of Δ, and its index + 1.</summary>
-    private readonly struct HitSphere(Double3 offset, float radiusSquared, float inverseBound, int id)
+    /// <summary>One sphere's constants: o − C at α = β = 0, r², 1 / the error bound of Δ, its index + 1 and its depth error constants.</summary>
+    private readonly struct HitSphere(Double3 offset, float radiusSquared, float inverseBound, int id, DepthBound bound)
     {
         public Float3 Offset { get; } = offset;
 
@@ -182,5 +203,11 @@ internal sealed class LatticeHits
         public float InverseBound { get; } = inverseBound;
 
         public uint Id { get; } = (uint)id;
+
+        public DepthBound Bound { get; } = bound;
+
+        /// <summary>The packet kernel's constants with the index + 1 as the bits of the colour's red.</summary>
+        public (SphereConstants Constants, DepthBound Bound) ToConstants() =>
+            (new SphereConstants(Offset, RadiusSquared, InverseBound, new Float3(BitConverter.UInt32BitsToSingle(Id), 0, 0)), Bound);
     }
 }

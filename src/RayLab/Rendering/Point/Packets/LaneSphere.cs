@@ -22,6 +22,23 @@ internal static class LaneSphere
     /// <param name="disc">Δ per lane.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static TL NegatedNearRoot<TL>(TL fx, TL fy, TL fz, TL dx, TL dy, TL dz, TL dd, TL rdd, TL radiusSquared, out TL disc)
+        where TL : struct, ILanes<TL> =>
+        NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, radiusSquared, out disc, out _);
+
+    /// <summary>The near root, negated, Δ in <paramref name="disc"/> and √(Δ·d·d) in <paramref name="root"/>.</summary>
+    /// <param name="fx">o − C, x, per lane.</param>
+    /// <param name="fy">o − C, y.</param>
+    /// <param name="fz">o − C, z.</param>
+    /// <param name="dx">The direction d, x.</param>
+    /// <param name="dy">d, y.</param>
+    /// <param name="dz">d, z.</param>
+    /// <param name="dd">d·d.</param>
+    /// <param name="rdd">1 / d·d.</param>
+    /// <param name="radiusSquared">r², broadcast.</param>
+    /// <param name="disc">Δ per lane.</param>
+    /// <param name="root">√(Δ·d·d) per lane (NaN where the ray misses).</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL NegatedNearRoot<TL>(TL fx, TL fy, TL fz, TL dx, TL dy, TL dz, TL dd, TL rdd, TL radiusSquared, out TL disc, out TL root)
         where TL : struct, ILanes<TL>
     {
         TL half = TL.MultiplyAdd(fx, dx, TL.MultiplyAdd(fy, dy, fz * dz));   // (o − C)·d
@@ -30,6 +47,78 @@ internal static class LaneSphere
         TL py = TL.NegatedMultiplyAdd(dy, along, fy);
         TL pz = TL.NegatedMultiplyAdd(dz, along, fz);
         disc = radiusSquared - TL.MultiplyAdd(px, px, TL.MultiplyAdd(py, py, pz * pz));
-        return (half + TL.Sqrt(disc * dd)) * rdd;                           // −(near root); NaN when Δ < 0
+        root = TL.Sqrt(disc * dd);
+        return (half + root) * rdd;                                         // −(near root); NaN when Δ < 0
     }
+
+    /// <summary>
+    /// One sphere against a packet of rays, the nearest hit so far kept per lane: the step the hierarchy's leaves
+    /// (<see cref="PacketHierarchy"/>) and the adaptive lattice repeat per sphere. Returns the lanes where this
+    /// sphere is the new nearest hit (the caller takes its colour or index there).
+    /// </summary>
+    /// <remarks>
+    /// <para>Besides the hit, each lane keeps the smallest |Δ| / bound (<paramref name="closest"/>: ≤ 1 means the
+    /// float answer may be wrong) and, when <paramref name="checkOrder"/>, whether two hits lie so close along the
+    /// ray that float may order them wrongly (<paramref name="unsure"/>). That tolerance is per lane, from the
+    /// hits' own error, not one margin for the whole frame: where the lane is certain (|Δ| &gt; B, B the sphere's
+    /// bound of Δ's error), the true Δ is positive and √Δ is off by at most B / √Δ_float; the rest of the root is
+    /// a few roundings of |o − C| + r. So a hit's t is off by at most <c>K / √(Δ·d·d) + R / |d|</c>, with
+    /// <c>K = 2B</c> (twice the bound: also the float rounding of the ray itself) and <c>R = 16 ε (|o − C| + r)</c>
+    /// (<see cref="DepthBound"/>), and two hits whose t differ by less than the sum of their bounds are marked.</para>
+    /// <para>Near a silhouette (Δ just above B) the bound is the frame-wide √B-sized one the point kernel's
+    /// all-sphere loop uses (<see cref="PacketFrame.DepthTolerance"/>); through a sphere's middle it is hundreds of
+    /// times smaller, so overlapping spheres send far fewer samples to the double retrace.</para>
+    /// </remarks>
+    /// <param name="fx">o − C, x, per lane.</param>
+    /// <param name="fy">o − C, y.</param>
+    /// <param name="fz">o − C, z.</param>
+    /// <param name="dx">The direction d, x.</param>
+    /// <param name="dy">d, y.</param>
+    /// <param name="dz">d, z.</param>
+    /// <param name="dd">d·d.</param>
+    /// <param name="rdd">1 / d·d.</param>
+    /// <param name="inverseLength">1 / |d|.</param>
+    /// <param name="radiusSquared">The sphere's r².</param>
+    /// <param name="inverseBound">1 / the bound of Δ's error.</param>
+    /// <param name="bound">The sphere's depth error constants.</param>
+    /// <param name="checkOrder">Whether hits close in depth are marked (the frame has close spheres).</param>
+    /// <param name="nearest">−t of the nearest hit so far (−∞ before one).</param>
+    /// <param name="nearestError">The error bound of that hit's t.</param>
+    /// <param name="closest">The smallest |Δ| / bound so far.</param>
+    /// <param name="unsure">The lanes with two hits closer than their error bounds.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Test<TL>(TL fx, TL fy, TL fz, TL dx, TL dy, TL dz, TL dd, TL rdd, TL inverseLength, float radiusSquared, float inverseBound, DepthBound bound, bool checkOrder, ref TL nearest, ref TL nearestError, ref TL closest, ref TL unsure)
+        where TL : struct, ILanes<TL>
+    {
+        TL negatedT = NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(radiusSquared), out TL disc, out TL root);
+        TL hit = TL.LessThan(nearest, negatedT);                                 // t < best (false for NaN)
+        closest = TL.MinAbs(closest, disc * TL.Broadcast(inverseBound));
+        if (checkOrder)
+        {
+            TL error = TL.MultiplyAdd(TL.Broadcast(bound.Silhouette), TL.Broadcast(1f) / root, TL.Broadcast(bound.Rounding) * inverseLength);
+            unsure |= TL.LessThanOrEqual(TL.Abs(negatedT - nearest), error + nearestError);   // either order: a farther sphere tested later too
+            nearestError = TL.Select(hit, error, nearestError);
+        }
+
+        nearest = TL.Select(hit, negatedT, nearest);
+        return hit;
+    }
+}
+
+/// <summary>
+/// A sphere's constants for the per-lane depth tolerance of <see cref="LaneSphere.Test{TL}"/>: a hit's t is off
+/// by at most <see cref="Silhouette"/> / √(Δ·d·d) + <see cref="Rounding"/> / |d|.
+/// </summary>
+/// <param name="Silhouette">2 B, B the bound of Δ's float error (world units²).</param>
+/// <param name="Rounding">16 ε (|o − C| + r), the largest |o − C| over the window (world units).</param>
+internal readonly record struct DepthBound(float Silhouette, float Rounding)
+{
+    private const double Epsilon = 1.0 / (1 << 23);
+
+    /// <summary>The constants of a sphere of radius <paramref name="radius"/>, |o − C| ≤ <paramref name="largest"/>, Δ's error ≤ <paramref name="discBound"/>.</summary>
+    /// <param name="discBound">B, the bound of Δ's error.</param>
+    /// <param name="radius">The sphere's radius.</param>
+    /// <param name="largest">The largest |o − C| over the window.</param>
+    public static DepthBound Of(double discBound, double radius, double largest) =>
+        new((float)(2 * discBound * (1 + 1e-3)), (float)(16 * Epsilon * (largest + radius)));
 }

@@ -55,6 +55,7 @@ internal sealed class PacketFrame
         Background = Vector(scene.ColourOf(-1));
         Sphere[] spheres = [.. kept.Select(index => scene.Spheres[index])];
         Spheres = new SphereConstants[spheres.Length];
+        var depthBounds = new DepthBound[spheres.Length];
         double[] reach = new double[spheres.Length];
         var position = new Dictionary<int, int>(kept.Length);
         for (int k = 0; k < spheres.Length; k++)
@@ -63,6 +64,7 @@ internal sealed class PacketFrame
             (Double3 offset, double largest) = OffsetOf(sphere, plane);
             double bound = 32 * Epsilon * ((sphere.Radius * sphere.Radius) + (largest * largest));
             Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(scene.ColourOf(kept[k])));
+            depthBounds[k] = DepthBound.Of(bound, sphere.Radius, largest);
             reach[k] = 3e-3 * (sphere.Radius + largest);
             position[kept[k]] = k;
         }
@@ -78,7 +80,7 @@ internal sealed class PacketFrame
         if (hierarchy is not null)
         {
             double largestRadius = spheres.Length == 0 ? 0 : spheres.Max(sphere => sphere.Radius);
-            Hierarchy = PacketHierarchy.Create(hierarchy, plane, index => Spheres[position[index]], largestRadius);
+            Hierarchy = PacketHierarchy.Create(hierarchy, plane, index => (Spheres[position[index]], depthBounds[position[index]]), largestRadius);
         }
     }
 

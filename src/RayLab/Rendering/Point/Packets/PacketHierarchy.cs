@@ -26,10 +26,11 @@ internal sealed class PacketHierarchy
     /// <summary>The widening of each box, relative to its distance from the eye.</summary>
     private const double Widening = 1e-4;
 
-    private PacketHierarchy(PacketNode[] nodes, SphereConstants[] spheres, int depth, float radiusSlack, ImagePlane plane)
+    private PacketHierarchy(PacketNode[] nodes, SphereConstants[] spheres, DepthBound[] depthBounds, int depth, float radiusSlack, ImagePlane plane)
     {
         Nodes = nodes;
         Spheres = spheres;
+        DepthBounds = depthBounds;
         Depth = depth;
         RadiusSlack = radiusSlack;
         _plane = plane;
@@ -43,6 +44,9 @@ internal sealed class PacketHierarchy
     /// <summary>The spheres' constants in leaf order.</summary>
     public SphereConstants[] Spheres { get; }
 
+    /// <summary>The spheres' depth error constants in leaf order (<see cref="LaneSphere.Test{TL}"/>).</summary>
+    public DepthBound[] DepthBounds { get; }
+
     /// <summary>The hierarchy's depth (the traversal stack's size).</summary>
     public int Depth { get; }
 
@@ -52,9 +56,9 @@ internal sealed class PacketHierarchy
     /// <summary>The frame's copy of <paramref name="hierarchy"/>.</summary>
     /// <param name="hierarchy">The scene's hierarchy.</param>
     /// <param name="plane">The camera's image plane.</param>
-    /// <param name="constantsOf">A sphere's kernel constants, by its index in the scene.</param>
+    /// <param name="constantsOf">A sphere's kernel constants and depth error constants, by its index in the scene.</param>
     /// <param name="largestRadius">The largest radius in the scene.</param>
-    public static PacketHierarchy Create(SphereHierarchy hierarchy, ImagePlane plane, Func<int, SphereConstants> constantsOf, double largestRadius)
+    public static PacketHierarchy Create(SphereHierarchy hierarchy, ImagePlane plane, Func<int, (SphereConstants Constants, DepthBound Bound)> constantsOf, double largestRadius)
     {
         Double3 fixedPoint = plane.Eye + (plane.IsOrthographic ? plane.C : Double3.Zero);
         double window = plane.IsOrthographic ? plane.A.Length + plane.B.Length + plane.C.Length : 0;
@@ -72,12 +76,13 @@ internal sealed class PacketHierarchy
 
         ReadOnlySpan<int> order = hierarchy.Order;
         var spheres = new SphereConstants[order.Length];
+        var bounds = new DepthBound[order.Length];
         for (int i = 0; i < order.Length; i++)
         {
-            spheres[i] = constantsOf(order[i]);
+            (spheres[i], bounds[i]) = constantsOf(order[i]);
         }
 
-        return new PacketHierarchy(packetNodes, spheres, hierarchy.Depth, (float)(0.01 * largestRadius), plane);
+        return new PacketHierarchy(packetNodes, spheres, bounds, hierarchy.Depth, (float)(0.01 * largestRadius), plane);
     }
 
     /// <summary>
@@ -87,17 +92,80 @@ internal sealed class PacketHierarchy
     /// [−½, 1½) and traverses from the root for a sample outside it). Tested in double against the float boxes.
     /// </summary>
     /// <param name="x0">The packet's first column.</param>
-    /// <param name="lanes">The packet's width.</param>
+    /// <param name="lanes">The packet's width (or a span of several packets': see <see cref="FilterLeaves"/>).</param>
     /// <param name="row">The row.</param>
     /// <param name="leaves">Receives the leaves' node indices; as long as <see cref="Nodes"/>.</param>
     /// <returns>The number of leaves.</returns>
     public int CollectLeaves(int x0, int lanes, int row, Span<int> leaves)
     {
+        Span<Plane> planes = stackalloc Plane[5];
+        int negative = Frustum(x0, lanes, row, planes);
+        PacketNode[] nodes = Nodes;
+        Span<int> stack = stackalloc int[Depth + 1];
+        int top = 0, count = 0;
+        stack[top++] = 0;
+        while (top > 0)
+        {
+            int index = stack[--top];
+            ref readonly PacketNode node = ref nodes[index];
+            if (Outside(node, planes))
+            {
+                continue;
+            }
+
+            if (node.Count > 0)
+            {
+                leaves[count++] = index;
+                continue;
+            }
+
+            bool rightFirst = ((negative >> node.Axis) & 1) != 0;
+            stack[top++] = rightFirst ? index + 1 : node.Start;
+            stack[top++] = rightFirst ? node.Start : index + 1;
+        }
+
+        return count;
+    }
+
+    /// <summary>
+    /// The leaves of <paramref name="span"/> (collected by <see cref="CollectLeaves"/> for pixels that include this
+    /// packet's) that the packet's own frustum reaches, in the same order: the same set <see cref="CollectLeaves"/>
+    /// gives the packet (a leaf its frustum reaches lies in the wider one too), for a test per leaf instead of a walk.
+    /// </summary>
+    /// <param name="x0">The packet's first column.</param>
+    /// <param name="lanes">The packet's width.</param>
+    /// <param name="row">The row.</param>
+    /// <param name="span">The leaves of a span of pixels that contains the packet's.</param>
+    /// <param name="leaves">Receives the packet's leaves; at least as long as <paramref name="span"/>.</param>
+    /// <returns>The number of leaves.</returns>
+    public int FilterLeaves(int x0, int lanes, int row, ReadOnlySpan<int> span, Span<int> leaves)
+    {
+        Span<Plane> planes = stackalloc Plane[5];
+        Frustum(x0, lanes, row, planes);
+        PacketNode[] nodes = Nodes;
+        int count = 0;
+        foreach (int index in span)
+        {
+            if (!Outside(nodes[index], planes))
+            {
+                leaves[count++] = index;
+            }
+        }
+
+        return count;
+    }
+
+    /// <summary>
+    /// The five half-spaces (relative to the fixed point) that bound the rays of pixels <paramref name="x0"/> − 1 …
+    /// <paramref name="x0"/> + <paramref name="lanes"/> of rows <paramref name="row"/> − 1 … <paramref name="row"/> + 1;
+    /// returns the octant of the frustum's centre direction (bit k: axis k negative), for a near-first walk.
+    /// </summary>
+    private int Frustum(int x0, int lanes, int row, Span<Plane> planes)
+    {
         ImagePlane plane = _plane;
         double alpha0 = (x0 - 1.0) / plane.Width, alpha1 = (x0 + lanes + 1.0) / plane.Width;
         double beta0 = 1 - ((row + 2.0) / plane.Height), beta1 = 1 - ((row - 1.0) / plane.Height);
         Double3 a = plane.A, b = plane.B, c = plane.C, gaze = -plane.W;
-        Span<Plane> planes = stackalloc Plane[5];
         if (plane.IsOrthographic)
         {
             // Origins α a + β b (from e + c), direction −w: four planes along −w through the window's edges.
@@ -117,48 +185,26 @@ internal sealed class PacketHierarchy
 
         planes[4] = new Plane(gaze, 0); // nothing behind the eye (or the orthographic window's plane)
         Double3 centre = plane.IsOrthographic ? gaze : c + (0.5 * (alpha0 + alpha1) * a) + (0.5 * (beta0 + beta1) * b);
-        int negative = (centre.X < 0 ? 1 : 0) | (centre.Y < 0 ? 2 : 0) | (centre.Z < 0 ? 4 : 0);
-        PacketNode[] nodes = Nodes;
-        Span<int> stack = stackalloc int[Depth + 1];
-        int top = 0, count = 0;
-        stack[top++] = 0;
-        while (top > 0)
+        return (centre.X < 0 ? 1 : 0) | (centre.Y < 0 ? 2 : 0) | (centre.Z < 0 ? 4 : 0);
+    }
+
+    /// <summary>True when the node's box lies wholly outside one of the half-spaces.</summary>
+    private static bool Outside(in PacketNode node, ReadOnlySpan<Plane> planes)
+    {
+        // The box relative to the fixed point is [−Lo, −Hi] (the node stores fixed point − corner).
+        Double3 lo = new(-(double)node.Lo.X, -(double)node.Lo.Y, -(double)node.Lo.Z);
+        Double3 hi = new(-(double)node.Hi.X, -(double)node.Hi.Y, -(double)node.Hi.Z);
+        foreach (Plane side in planes)
         {
-            int index = stack[--top];
-            ref readonly PacketNode node = ref nodes[index];
-
-            // The box relative to the fixed point is [−Lo, −Hi] (the node stores fixed point − corner).
-            Double3 lo = new(-(double)node.Lo.X, -(double)node.Lo.Y, -(double)node.Lo.Z);
-            Double3 hi = new(-(double)node.Hi.X, -(double)node.Hi.Y, -(double)node.Hi.Z);
-            bool outside = false;
-            foreach (Plane side in planes)
+            Double3 n = side.Normal;
+            double farthest = ((n.X >= 0 ? hi.X : lo.X) * n.X) + ((n.Y >= 0 ? hi.Y : lo.Y) * n.Y) + ((n.Z >= 0 ? hi.Z : lo.Z) * n.Z);
+            if (farthest + side.Offset < 0)
             {
-                Double3 n = side.Normal;
-                double farthest = ((n.X >= 0 ? hi.X : lo.X) * n.X) + ((n.Y >= 0 ? hi.Y : lo.Y) * n.Y) + ((n.Z >= 0 ? hi.Z : lo.Z) * n.Z);
-                if (farthest + side.Offset < 0)
-                {
-                    outside = true;
-                    break;
-                }
+                return true;
             }
-
-            if (outside)
-            {
-                continue;
-            }
-
-            if (node.Count > 0)
-            {
-                leaves[count++] = index;
-                continue;
-            }
-
-            bool rightFirst = ((negative >> node.Axis) & 1) != 0;
-            stack[top++] = rightFirst ? index + 1 : node.Start;
-            stack[top++] = rightFirst ? node.Start : index + 1;
         }
 
-        return count;
+        return false;
     }
 
     /// <summary>The half-space n·x + d ≥ 0 with n = ±<paramref name="normal"/> pointing along <paramref name="inward"/>, through <paramref name="point"/>.</summary>
@@ -173,7 +219,7 @@ internal sealed class PacketHierarchy
     /// <see cref="CollectLeaves"/>): each leaf's box tested against the lanes first, as in <see cref="Nearest{TL, TP}"/>.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
-    public static LaneHit<TL> NearestInLeaves<TL, TP>(PacketHierarchy hierarchy, ReadOnlySpan<int> leaves, in Lanes3<TL> origin, in Lanes3<TL> direction, TL dd, TL rdd, TL depthTolerance, bool checkOrder, in LaneHit<TL> background)
+    public static LaneHit<TL> NearestInLeaves<TL, TP>(PacketHierarchy hierarchy, ReadOnlySpan<int> leaves, in Lanes3<TL> origin, in Lanes3<TL> direction, TL dd, TL rdd, TL inverseLength, bool checkOrder, in LaneHit<TL> background)
         where TL : struct, ILanes<TL>
         where TP : struct, IProjection
     {
@@ -184,15 +230,16 @@ internal sealed class PacketHierarchy
         TL ny = minusOne / TL.Select(TL.LessThan(TL.Abs(dy), tiny), tiny, dy);
         TL nz = minusOne / TL.Select(TL.LessThan(TL.Abs(dz), tiny), tiny, dz);
         TL slack = TL.Broadcast(hierarchy.RadiusSlack) * TL.Sqrt(rdd);
-        var state = new LaneHit<TL>(background.Nearest, background.R, background.G, background.B, TL.Broadcast(float.PositiveInfinity), default);
+        var state = new LaneHit<TL>(background.Nearest, background.R, background.G, background.B, TL.Broadcast(float.PositiveInfinity), default, default);
         PacketNode[] nodes = hierarchy.Nodes;
         SphereConstants[] spheres = hierarchy.Spheres;
+        DepthBound[] bounds = hierarchy.DepthBounds;
         foreach (int index in leaves)
         {
             ref readonly PacketNode node = ref nodes[index];
             if (Enters<TL, TP>(node, origin, nx, ny, nz, state.Nearest, slack))
             {
-                TestLeaf<TL, TP>(spheres, node, origin, dx, dy, dz, dd, rdd, depthTolerance, checkOrder, ref state);
+                TestLeaf<TL, TP>(spheres, bounds, node, origin, dx, dy, dz, dd, rdd, inverseLength, checkOrder, ref state);
             }
         }
 
@@ -215,42 +262,34 @@ internal sealed class PacketHierarchy
         return TL.MaskBits(inside) != 0;
     }
 
-    /// <summary>The kernel's per-sphere test over one leaf's spheres.</summary>
+    /// <summary>The kernel's per-sphere test (<see cref="LaneSphere.Test{TL}"/>) over one leaf's spheres.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void TestLeaf<TL, TP>(SphereConstants[] spheres, in PacketNode node, in Lanes3<TL> origin, TL dx, TL dy, TL dz, TL dd, TL rdd, TL depthTolerance, bool checkOrder, ref LaneHit<TL> state)
+    private static void TestLeaf<TL, TP>(SphereConstants[] spheres, DepthBound[] bounds, in PacketNode node, in Lanes3<TL> origin, TL dx, TL dy, TL dz, TL dd, TL rdd, TL inverseLength, bool checkOrder, ref LaneHit<TL> state)
         where TL : struct, ILanes<TL>
         where TP : struct, IProjection
     {
-        (TL nearest, TL red, TL green, TL blue, TL closest, TL unsure) = state;
+        (TL nearest, TL red, TL green, TL blue, TL closest, TL unsure, TL nearestError) = state;
         for (int i = node.Start; i < node.Start + node.Count; i++)
         {
             ref readonly SphereConstants sphere = ref spheres[i];
             TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
             TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
             TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
-            TL negatedT = LaneSphere.NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(sphere.RadiusSquared), out TL disc);
-            TL hit = TL.LessThan(nearest, negatedT);
-            closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
-            if (checkOrder)
-            {
-                unsure |= TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);
-            }
-
-            nearest = TL.Select(hit, negatedT, nearest);
+            TL hit = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, sphere.RadiusSquared, sphere.InverseBound, bounds[i], checkOrder, ref nearest, ref nearestError, ref closest, ref unsure);
             red = TL.Select(hit, TL.Broadcast(sphere.Colour.X), red);
             green = TL.Select(hit, TL.Broadcast(sphere.Colour.Y), green);
             blue = TL.Select(hit, TL.Broadcast(sphere.Colour.Z), blue);
         }
 
-        state = new LaneHit<TL>(nearest, red, green, blue, closest, unsure);
+        state = new LaneHit<TL>(nearest, red, green, blue, closest, unsure, nearestError);
     }
 
     /// <summary>
     /// The nearest hit per lane among the spheres whose boxes the packet's rays reach: the kernel's per-sphere
-    /// loop (<see cref="LaneSphere.NegatedNearRoot"/>) run over the leaves the packet enters, near child first.
+    /// loop (<see cref="LaneSphere.Test{TL}"/>) run over the leaves the packet enters, near child first.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
-    public static LaneHit<TL> Nearest<TL, TP>(PacketHierarchy hierarchy, in Lanes3<TL> origin, in Lanes3<TL> direction, TL dd, TL rdd, TL depthTolerance, bool checkOrder, in LaneHit<TL> background)
+    public static LaneHit<TL> Nearest<TL, TP>(PacketHierarchy hierarchy, in Lanes3<TL> origin, in Lanes3<TL> direction, TL dd, TL rdd, TL inverseLength, bool checkOrder, in LaneHit<TL> background)
         where TL : struct, ILanes<TL>
         where TP : struct, IProjection
     {
@@ -262,10 +301,11 @@ internal sealed class PacketHierarchy
         TL ny = minusOne / TL.Select(TL.LessThan(TL.Abs(dy), tiny), tiny, dy);
         TL nz = minusOne / TL.Select(TL.LessThan(TL.Abs(dz), tiny), tiny, dz);
         TL slack = TL.Broadcast(hierarchy.RadiusSlack) * TL.Sqrt(rdd);
-        var state = new LaneHit<TL>(background.Nearest, background.R, background.G, background.B, TL.Broadcast(float.PositiveInfinity), default);
+        var state = new LaneHit<TL>(background.Nearest, background.R, background.G, background.B, TL.Broadcast(float.PositiveInfinity), default, default);
         uint negative = (TL.MaskBits(TL.LessThan(dx, zero)) & 1) | ((TL.MaskBits(TL.LessThan(dy, zero)) & 1) << 1) | ((TL.MaskBits(TL.LessThan(dz, zero)) & 1) << 2);
         PacketNode[] nodes = hierarchy.Nodes;
         SphereConstants[] spheres = hierarchy.Spheres;
+        DepthBound[] bounds = hierarchy.DepthBounds;
         Span<int> stack = stackalloc int[hierarchy.Depth + 1];
         int top = 0;
         stack[top++] = 0;
@@ -286,7 +326,7 @@ internal sealed class PacketHierarchy
                 continue;
             }
 
-            TestLeaf<TL, TP>(spheres, node, origin, dx, dy, dz, dd, rdd, depthTolerance, checkOrder, ref state);
+            TestLeaf<TL, TP>(spheres, bounds, node, origin, dx, dy, dz, dd, rdd, inverseLength, checkOrder, ref state);
         }
 
         return state;
@@ -313,6 +353,6 @@ internal readonly record struct PacketNode(Float3 Lo, Float3 Hi, int Start, int 
 /// <param name="Offset">d.</param>
 internal readonly record struct Plane(Double3 Normal, double Offset);
 
-/// <summary>A packet's nearest hits: −t, colour, the smallest |Δ|/bound and the lanes uncertain in depth order.</summary>
-internal readonly record struct LaneHit<TL>(TL Nearest, TL R, TL G, TL B, TL Closest, TL Unsure)
+/// <summary>A packet's nearest hits: −t, colour, the smallest |Δ|/bound, the lanes uncertain in depth order and the error bound of each lane's t.</summary>
+internal readonly record struct LaneHit<TL>(TL Nearest, TL R, TL G, TL B, TL Closest, TL Unsure, TL NearestError)
     where TL : struct, ILanes<TL>;

@@ -13,6 +13,9 @@ namespace RayLab.Rendering.Point.Packets;
 /// </summary>
 internal static partial class PacketKernel
 {
+    /// <summary>Packets whose leaves one walk of the tree collects (each then filters them by its own frustum).</summary>
+    private const int PacketsPerSpan = 4;
+
     /// <summary>
     /// Renders one row through the hierarchy: per packet the leaves its rays can reach, per sample those leaves'
     /// boxes and spheres in lanes; uncertain lanes are traced again in double at once (traversal costs more than
@@ -29,14 +32,24 @@ internal static partial class PacketKernel
         int retraced = 0;
         TL scale = TL.Broadcast(256f / samplesPerPixel);
         int[] leafBuffer = ArrayPool<int>.Shared.Rent(hierarchy.Nodes.Length);
+        int[] spanBuffer = ArrayPool<int>.Shared.Rent(hierarchy.Nodes.Length);
+        int spanCount = 0;
         for (int x0 = 0; x0 < frame.Width; x0 += lanes)
         {
             sampler.BeginPacket(x0, row);
-            ReadOnlySpan<int> leaves = leafBuffer.AsSpan(0, hierarchy.CollectLeaves(x0, lanes, row, leafBuffer));
+
+            // One walk of the tree per span of packets; each packet then keeps the span's leaves its own frustum reaches.
+            if (x0 % (lanes * PacketsPerSpan) == 0)
+            {
+                spanCount = hierarchy.CollectLeaves(x0, lanes * PacketsPerSpan, row, spanBuffer);
+            }
+
+            ReadOnlySpan<int> leaves = leafBuffer.AsSpan(0, hierarchy.FilterLeaves(x0, lanes, row, spanBuffer.AsSpan(0, spanCount), leafBuffer));
             LaneColour<TL> sum = SumPacketThroughHierarchy<TL, TS, TP>(frame, hierarchy, ref sampler, samplesPerPixel, x0, row, leaves, ref retraced);
             EightBit.WriteLanes(sum.R, sum.G, sum.B, scale, pixels.Slice(x0, Math.Min(lanes, frame.Width - x0)));
         }
 
+        ArrayPool<int>.Shared.Return(spanBuffer);
         ArrayPool<int>.Shared.Return(leafBuffer);
         return retraced;
     }
@@ -56,7 +69,7 @@ internal static partial class PacketKernel
         TL minusHalf = TL.Broadcast(-0.5f), oneAndHalf = TL.Broadcast(1.5f);
         TL left = WindowMapping.PacketLeft(x0, invWidth);
         TL rowTop = WindowMapping.RowTop<TL>(row, frame.Height);
-        var start = new LaneHit<TL>(TL.Broadcast(float.NegativeInfinity), TL.Broadcast(background.X), TL.Broadcast(background.Y), TL.Broadcast(background.Z), default, default);
+        var start = new LaneHit<TL>(TL.Broadcast(float.NegativeInfinity), TL.Broadcast(background.X), TL.Broadcast(background.Y), TL.Broadcast(background.Z), default, default, default);
         TL accumulatedRed = default, accumulatedGreen = default, accumulatedBlue = default;
         for (int index = 0; index < samplesPerPixel; index++)
         {
@@ -66,14 +79,14 @@ internal static partial class PacketKernel
             TP.GetRays(window, alpha, beta, out Lanes3<TL> origin, out Lanes3<TL> ray);
             TL dd = TL.MultiplyAdd(ray.X, ray.X, TL.MultiplyAdd(ray.Y, ray.Y, ray.Z * ray.Z));
             TL rdd = one / dd;
-            TL depthTolerance = checkOrder ? TL.Broadcast(frame.DepthTolerance) / TL.Sqrt(dd) : default;
+            TL inverseLength = TL.Sqrt(rdd);
 
             // The packet's leaves hold every box its rays can reach while each sample stays within half a pixel
             // of its pixel (the samplers' [0, 1)); a sample outside that traverses from the root.
             uint stray = TL.MaskBits(TL.LessThan(sx, minusHalf) | TL.LessThan(sy, minusHalf) | TL.LessThan(oneAndHalf, sx) | TL.LessThan(oneAndHalf, sy));
             LaneHit<TL> found = stray == 0
-                ? PacketHierarchy.NearestInLeaves<TL, TP>(hierarchy, leaves, origin, ray, dd, rdd, depthTolerance, checkOrder, start)
-                : PacketHierarchy.Nearest<TL, TP>(hierarchy, origin, ray, dd, rdd, depthTolerance, checkOrder, start);
+                ? PacketHierarchy.NearestInLeaves<TL, TP>(hierarchy, leaves, origin, ray, dd, rdd, inverseLength, checkOrder, start)
+                : PacketHierarchy.Nearest<TL, TP>(hierarchy, origin, ray, dd, rdd, inverseLength, checkOrder, start);
             (TL red, TL green, TL blue) = (found.R, found.G, found.B);
             uint uncertain = TL.MaskBits(found.Unsure | TL.LessThanOrEqual(found.Closest, one));
             if (uncertain != 0)
