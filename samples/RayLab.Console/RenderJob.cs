@@ -129,8 +129,9 @@ public static class RenderJob
         // the same picture scaled down, so it meets the same edges and compiles the paths the render takes there.
         // The native build (Native AOT) has nothing to compile, so it skips the warm-up and reports no warmupMs.
         // Either way the image's memory is committed before the clock, as the anchors' zero-filled buffer is.
+        // RAYLAB_WARMUP=1 makes the native build warm up too (to measure what a first render costs beyond the JIT).
         double? warmupMs = null;
-        if (RuntimeFeature.IsDynamicCodeCompiled)
+        if (RuntimeFeature.IsDynamicCodeCompiled || Environment.GetEnvironmentVariable(WarmupVariable) == "1")
         {
             var warmupClock = Stopwatch.StartNew();
             prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
@@ -288,6 +289,9 @@ public static class RenderJob
             }
         }
     }
+
+    /// <summary>Set to 1 to make the native build render the warm-up too (for measurements: docs/performance.md).</summary>
+    public const string WarmupVariable = "RAYLAB_WARMUP";
 
     /// <summary>The most samples the warm-up render takes: about 1/16 of the 1080p, 16 spp benchmark.</summary>
     public const double WarmupSamples = 1 << 21;

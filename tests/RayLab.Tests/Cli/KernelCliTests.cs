@@ -36,6 +36,20 @@ public sealed class KernelCliTests : IDisposable
         Assert.True(stats.GetProperty("retracedSamples").GetInt64() >= 0);
     }
 
+    /// <summary>
+    /// The built app started on its own (raylab.dll with its own runtimeconfig.json, as <c>dotnet run</c> and the JIT tool
+    /// start it) is the JIT build and warms up: Native AOT's feature switches (IsDynamicCodeSupported false) must not
+    /// reach its runtimeconfig.json, where the native build's project settings could put them.
+    /// </summary>
+    [Fact]
+    public async Task TheBuiltAppStartedOnItsOwnIsTheJitBuildAndWarmsUp()
+    {
+        string stats = Path.Combine(_dir, "child.json");
+        var r = await ConsoleRunner.RunChildAsync(_dir, "render", Scene, "-o", "child.png", "--width", "48", "--height", "32", "--stats", stats);
+        Assert.True(r.Code == 0, r.Err);
+        Assert.True(JsonDocument.Parse(File.ReadAllText(stats)).RootElement.GetProperty("warmupMs").GetDouble() > 0);
+    }
+
     [Theory]
     [InlineData(1920, 1080, 16, 480, 270)]   // the benchmark: 1/16 of its samples
     [InlineData(3840, 2160, 1024, 60, 33)]

@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using System.Diagnostics;
+using System.Runtime.InteropServices;
 using System.Text;
 using System.Text.RegularExpressions;
 using RayLab.Tests.Imaging;
@@ -12,7 +13,8 @@ namespace RayLab.Tests.Packaging;
 /// tool (<c>RayLab.Tool</c>) into a folder feed; build and run a fresh console app whose Program.cs is the README's
 /// "The library in ten lines" example, referencing the package; build and run the guide's own-method sample
 /// (samples/RayLab.OwnMethod) outside the repository against the package; build and run the README's test project, a copy of
-/// tests/RayLab.Tests/Examples, against the package; install the tool from the feed and run it.
+/// tests/RayLab.Tests/Examples, against the package; install the tool from the feed and run it (the native build on
+/// linux-x64, and the framework-dependent fallback through a pointer package that names no package for this platform).
 /// The children get an empty NUGET_PACKAGES folder, so no cached copy of an older RayLab package can stand in.
 /// </summary>
 [Trait("Category", "Packaging")]
@@ -42,10 +44,17 @@ public sealed partial class PackageTests : IDisposable
         string packages = Path.Combine(_dir, "nuget-packages");
         string artifacts = Path.Combine(_dir, "artifacts");
 
-        // 1. Pack both projects into the feed (bin/obj under the temp folder, not the repository's).
-        foreach (string project in new[] { "src/RayLab/RayLab.csproj", "samples/RayLab.Console/RayLab.Console.csproj" })
+        // 1. Pack both projects into the feed (bin/obj under the temp folder, not the repository's). The tool is .NET 10's
+        // RID-specific tool: RayLab.Tool points to RayLab.Tool.linux-x64 (Native AOT, packed where it can be compiled:
+        // on linux-x64) and RayLab.Tool.any (the framework-dependent build for every other platform).
+        string console = Path.Combine(repo, "samples", "RayLab.Console", "RayLab.Console.csproj");
+        await RunAsync(_dir, packages, "dotnet", "pack", Path.Combine(repo, "src", "RayLab", "RayLab.csproj"), "-c", "Release",
+            "-o", feed, "--artifacts-path", artifacts);
+        await RunAsync(_dir, packages, "dotnet", "pack", console, "-c", "Release", "-o", feed, "--artifacts-path", artifacts);
+        await RunAsync(_dir, packages, "dotnet", "pack", console, "-c", "Release", "-r", "any", "-o", feed, "--artifacts-path", artifacts);
+        if (NativeToolHere)
         {
-            await RunAsync(_dir, packages, "dotnet", "pack", Path.Combine(repo, project), "-c", "Release", "-o", feed,
+            await RunAsync(_dir, packages, "dotnet", "pack", console, "-c", "Release", "-r", "linux-x64", "-o", feed,
                 "--artifacts-path", artifacts);
         }
 
@@ -54,6 +63,7 @@ public sealed partial class PackageTests : IDisposable
         string version = Path.GetFileNameWithoutExtension(libraryPackage)["RayLab.".Length..];
         Assert.True(File.Exists(Path.Combine(feed, $"RayLab.{version}.snupkg")), "the symbols package is missing");
         Assert.True(File.Exists(Path.Combine(feed, $"RayLab.Tool.{version}.nupkg")), "the tool package is missing");
+        Assert.True(File.Exists(Path.Combine(feed, $"RayLab.Tool.any.{version}.nupkg")), "the framework-dependent tool package is missing");
 
         // 2. A fresh console app, outside the repository, whose Program.cs is exactly the README's example.
         string app = Directory.CreateDirectory(Path.Combine(_dir, "app")).FullName;
@@ -131,11 +141,12 @@ public sealed partial class PackageTests : IDisposable
         File.Copy(Path.Combine(app, "nuget.config"), Path.Combine(tests, "nuget.config"));
         await RunAsync(tests, packages, "dotnet", "test", "-c", "Release");
 
-        // 4. The tool, installed from the feed.
+        // 4. The tool, installed from the feed: on linux-x64 the native build, elsewhere the framework-dependent one.
         string tools = Path.Combine(_dir, "tools");
         await RunAsync(_dir, packages, "dotnet", "tool", "install", "RayLab.Tool", "--tool-path", tools,
             "--add-source", feed, "--version", version);
         string raylab = Path.Combine(tools, OperatingSystem.IsWindows() ? "raylab.exe" : "raylab");
+        AssertInstalledBuild(tools, raylab, native: NativeToolHere);
 
         string rendered = Path.Combine(_dir, "t.png");
         await RunAsync(_dir, packages, raylab, "render", Path.Combine(repo, "samples", "scenes", "two-spheres.json"),
@@ -146,6 +157,78 @@ public sealed partial class PackageTests : IDisposable
         string work = Directory.CreateDirectory(Path.Combine(_dir, "work")).FullName;
         await RunAsync(work, packages, raylab);
         AssertPng(Path.Combine(work, "out", "two-spheres-perspective.png"), 800, 600);
+
+        // The scenes it carries, listed and rendered by name from a folder outside the repository.
+        await AssertCarriedScenesAsync(work, packages, raylab, native: NativeToolHere);
+
+        // 5. The fallback: a pointer package that names a native package for another platform only (as RayLab.Tool
+        // does for linux-x64 on every other platform) installs RayLab.Tool.any, which renders with the JIT.
+        string otherFeed = Directory.CreateDirectory(Path.Combine(_dir, "feed-other")).FullName;
+        string otherPackages = Path.Combine(_dir, "nuget-packages-other"); // the first pointer package must not be reused
+        string otherRid = NativeToolHere ? "win-arm64" : "linux-x64";
+        await RunAsync(_dir, otherPackages, "dotnet", "pack", console, "-c", "Release", "-o", otherFeed,
+            "--artifacts-path", Path.Combine(_dir, "artifacts-other"), $"-p:RayLabNativeRid={otherRid}");
+        File.Copy(Path.Combine(feed, $"RayLab.Tool.any.{version}.nupkg"), Path.Combine(otherFeed, $"RayLab.Tool.any.{version}.nupkg"));
+        string fallbackTools = Path.Combine(_dir, "tools-fallback");
+        await RunAsync(_dir, otherPackages, "dotnet", "tool", "install", "RayLab.Tool", "--tool-path", fallbackTools,
+            "--add-source", otherFeed, "--version", version);
+        string fallback = Path.Combine(fallbackTools, OperatingSystem.IsWindows() ? "raylab.exe" : "raylab");
+        AssertInstalledBuild(fallbackTools, fallback, native: false);
+        await AssertCarriedScenesAsync(work, otherPackages, fallback, native: false);
+    }
+
+    /// <summary>Whether this machine gets the native tool package: RayLab.Tool has one for linux-x64 only.</summary>
+    private static bool NativeToolHere => OperatingSystem.IsLinux() && RuntimeInformation.OSArchitecture == Architecture.X64;
+
+    /// <summary>
+    /// Which package <c>dotnet tool install</c> put into <paramref name="toolPath"/>: the native one is a single ELF
+    /// executable that the command links to, with no assembly beside it; the framework-dependent one runs raylab.dll.
+    /// </summary>
+    private static void AssertInstalledBuild(string toolPath, string command, bool native)
+    {
+        Assert.True(File.Exists(command), $"{command} was not installed");
+        string[] assemblies = Directory.GetFiles(Path.Combine(toolPath, ".store"), "raylab.dll", SearchOption.AllDirectories);
+        // The pointer package's folder is raylab.tool; the package it chose, raylab.tool.RID.
+        string[] packageFolders = [.. Directory.GetDirectories(Path.Combine(toolPath, ".store"), "*", SearchOption.AllDirectories)
+            .Select(d => Path.GetFileName(d)!).Where(name => name.StartsWith("raylab.tool.", StringComparison.Ordinal))];
+        if (native)
+        {
+            Assert.Equal(["raylab.tool.linux-x64"], packageFolders);
+            Assert.Empty(assemblies);
+            FileSystemInfo? target = new FileInfo(command).ResolveLinkTarget(returnFinalTarget: true);
+            Assert.NotNull(target);
+            byte[] head = File.ReadAllBytes(target.FullName).AsSpan(0, 4).ToArray();
+            Assert.Equal(new byte[] { 0x7F, (byte)'E', (byte)'L', (byte)'F' }, head);
+            Assert.Equal("raylab", target.Name);
+        }
+        else
+        {
+            Assert.Equal(["raylab.tool.any"], packageFolders);
+            Assert.Single(assemblies);
+        }
+    }
+
+    /// <summary>
+    /// <c>raylab scenes</c> lists the scenes the tool carries, and <c>raylab render two-spheres</c> renders one of them
+    /// by name in <paramref name="work"/>, a folder without scene files; the PNG decodes. The native build makes no
+    /// warm-up render (its <c>--stats</c> has no <c>warmupMs</c>), the JIT build does.
+    /// </summary>
+    private static async Task AssertCarriedScenesAsync(string work, string packages, string raylab, bool native)
+    {
+        string list = await RunAsync(work, packages, raylab, "scenes");
+        foreach (string scene in new[] { "two-spheres", "off-axis", "low-contrast", "sphere-field" })
+        {
+            Assert.Contains(scene, list, StringComparison.Ordinal);
+        }
+
+        string png = Path.Combine(work, native ? "by-name-native.png" : "by-name-jit.png");
+        string stats = Path.ChangeExtension(png, ".json");
+        await RunAsync(work, packages, raylab, "render", "two-spheres", "-o", png, "--width", "96", "--height", "72",
+            "--stats", stats);
+        SkiaDecode.Result decoded = SkiaDecode.Load(png);
+        Assert.Equal((96, 72, SKEncodedImageFormat.Png), (decoded.Width, decoded.Height, decoded.Format));
+        Assert.Contains(decoded.Rgb, b => b != decoded.Rgb[0]); // a picture, not one flat colour
+        Assert.Equal(native, !File.ReadAllText(stats).Contains("\"warmupMs\"", StringComparison.Ordinal));
     }
 
     /// <summary>The C# block under the README's "## The library in ten lines" heading.</summary>
@@ -197,7 +280,8 @@ public sealed partial class PackageTests : IDisposable
     }
 
     /// <summary>Runs a child process to completion; fails with its command line, stdout and stderr unless it exits 0.</summary>
-    private static async Task RunAsync(string workingDirectory, string nugetPackages, string fileName, params string[] args)
+    /// <returns>What the child wrote to stdout.</returns>
+    private static async Task<string> RunAsync(string workingDirectory, string nugetPackages, string fileName, params string[] args)
     {
         var psi = new ProcessStartInfo(fileName)
         {
@@ -247,5 +331,6 @@ public sealed partial class PackageTests : IDisposable
         process.WaitForExit(); // drains the redirected streams
         Assert.True(process.ExitCode == 0,
             $"exit code {process.ExitCode}: {command}\n--- stdout\n{stdout}\n--- stderr\n{stderr}");
+        return stdout.ToString();
     }
 }
