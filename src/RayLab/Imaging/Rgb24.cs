@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 
 namespace RayLab.Imaging;
@@ -11,6 +12,7 @@ public readonly record struct Rgb24(byte R, byte G, byte B)
 {
     /// <summary>Converts an intensity by the lab's rule <c>int(256·I)</c> clamped to 0..255 (<see cref="EightBit.Level"/>).</summary>
     /// <param name="intensity">The intensity.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Rgb24 FromIntensity(Intensity intensity) =>
         new(EightBit.Level(intensity.R), EightBit.Level(intensity.G), EightBit.Level(intensity.B));
 }
