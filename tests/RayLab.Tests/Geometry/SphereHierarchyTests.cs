@@ -116,6 +116,16 @@ public class SphereHierarchyTests
             methods.Add(("exact", RenderMethod.Exact, RenderKernel.Auto));
         }
 
+        // Every point sampler through the packet kernel: the permutation samplers and Sobol' make their points in
+        // blocks (ILaneSampler.Prepare), which the hierarchy's sample loop must ask for as the flat one does; 100
+        // samples span two blocks.
+        foreach (string name in Samplers.Names)
+        {
+            methods.Add(($"{name} 16, packets", RenderMethod.Sampled(Samplers.Create(name, 16, 7)), RenderKernel.Auto));
+        }
+
+        methods.Add(("cmj 100, packets", RenderMethod.Sampled(Samplers.Create("cmj", 100, 7)), RenderKernel.Auto));
+
         foreach ((string name, RenderMethod method, RenderKernel kernel) in methods)
         {
             byte[] expected = Render(without, camera, method, kernel);

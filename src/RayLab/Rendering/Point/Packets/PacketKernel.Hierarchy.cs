@@ -71,34 +71,40 @@ internal static partial class PacketKernel
         TL rowTop = WindowMapping.RowTop<TL>(row, frame.Height);
         var start = new LaneHit<TL>(TL.Broadcast(float.NegativeInfinity), TL.Broadcast(background.X), TL.Broadcast(background.Y), TL.Broadcast(background.Z), default, default, default);
         TL accumulatedRed = default, accumulatedGreen = default, accumulatedBlue = default;
-        for (int index = 0; index < samplesPerPixel; index++)
+
+        // The points come in blocks (ILaneSampler.Prepare): a permutation sampler makes them ahead of the samples.
+        for (int first = 0, end; first < samplesPerPixel; first = end)
         {
-            sampler.Sample(index, out TL sx, out TL sy);
-            TL alpha = WindowMapping.Alpha(sx, invWidth, left);
-            TL beta = WindowMapping.Beta(sy, invHeight, rowTop);
-            TP.GetRays(window, alpha, beta, out Lanes3<TL> origin, out Lanes3<TL> ray);
-            TL dd = TL.MultiplyAdd(ray.X, ray.X, TL.MultiplyAdd(ray.Y, ray.Y, ray.Z * ray.Z));
-            TL rdd = one / dd;
-            TL inverseLength = TL.Sqrt(rdd);
-
-            // The packet's leaves hold every box its rays can reach while each sample stays within half a pixel
-            // of its pixel (the samplers' [0, 1)); a sample outside that traverses from the root.
-            uint stray = TL.MaskBits(TL.LessThan(sx, minusHalf) | TL.LessThan(sy, minusHalf) | TL.LessThan(oneAndHalf, sx) | TL.LessThan(oneAndHalf, sy));
-            LaneHit<TL> found = stray == 0
-                ? PacketHierarchy.NearestInLeaves<TL, TP>(hierarchy, leaves, origin, ray, dd, rdd, inverseLength, checkOrder, start)
-                : PacketHierarchy.Nearest<TL, TP>(hierarchy, origin, ray, dd, rdd, inverseLength, checkOrder, start);
-            (TL red, TL green, TL blue) = (found.R, found.G, found.B);
-            uint uncertain = TL.MaskBits(found.Unsure | TL.LessThanOrEqual(found.Closest, one));
-            if (uncertain != 0)
+            end = sampler.Prepare(first, samplesPerPixel);
+            for (int index = first; index < end; index++)
             {
-                LaneColour<TL> exact = Retrace<TL, TP>(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertain));
-                (red, green, blue) = (exact.R, exact.G, exact.B);
-                retracedCount += BitOperations.PopCount(exact.Unsure);
-            }
+                sampler.Sample(index, out TL sx, out TL sy);
+                TL alpha = WindowMapping.Alpha(sx, invWidth, left);
+                TL beta = WindowMapping.Beta(sy, invHeight, rowTop);
+                TP.GetRays(window, alpha, beta, out Lanes3<TL> origin, out Lanes3<TL> ray);
+                TL dd = TL.MultiplyAdd(ray.X, ray.X, TL.MultiplyAdd(ray.Y, ray.Y, ray.Z * ray.Z));
+                TL rdd = one / dd;
+                TL inverseLength = TL.Sqrt(rdd);
 
-            accumulatedRed += red;
-            accumulatedGreen += green;
-            accumulatedBlue += blue;
+                // The packet's leaves hold every box its rays can reach while each sample stays within half a pixel
+                // of its pixel (the samplers' [0, 1)); a sample outside that traverses from the root.
+                uint stray = TL.MaskBits(TL.LessThan(sx, minusHalf) | TL.LessThan(sy, minusHalf) | TL.LessThan(oneAndHalf, sx) | TL.LessThan(oneAndHalf, sy));
+                LaneHit<TL> found = stray == 0
+                    ? PacketHierarchy.NearestInLeaves<TL, TP>(hierarchy, leaves, origin, ray, dd, rdd, inverseLength, checkOrder, start)
+                    : PacketHierarchy.Nearest<TL, TP>(hierarchy, origin, ray, dd, rdd, inverseLength, checkOrder, start);
+                (TL red, TL green, TL blue) = (found.R, found.G, found.B);
+                uint uncertain = TL.MaskBits(found.Unsure | TL.LessThanOrEqual(found.Closest, one));
+                if (uncertain != 0)
+                {
+                    LaneColour<TL> exact = Retrace<TL, TP>(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertain));
+                    (red, green, blue) = (exact.R, exact.G, exact.B);
+                    retracedCount += BitOperations.PopCount(exact.Unsure);
+                }
+
+                accumulatedRed += red;
+                accumulatedGreen += green;
+                accumulatedBlue += blue;
+            }
         }
 
         return new LaneColour<TL>(accumulatedRed, accumulatedGreen, accumulatedBlue, 0);
