@@ -172,27 +172,8 @@ internal sealed class ExactRow
     {
         double ym = 0.5 * (ya + yb), h = yb - ya;
         Outline[] outlines = _outlines.Outlines;
-        int n = 0;
-        foreach (int i in _present)
-        {
-            Outline o = outlines[i];
-            if (o.Hy > 0 && Math.Abs(ym - o.Yc) < o.Hy)
-            {
-                if (n + 2 > _branches.Length)
-                {
-                    Array.Resize(ref _branches, 2 * _branches.Length);
-                }
-
-                (double left, double right) = o.At(ym);
-                _branches[n++] = new Branch(left, i, -1);
-                _branches[n++] = new Branch(right, i, +1);
-            }
-        }
-
-        // Sorted by X; equal X in the order they were added (outline index, then left before right), as
-        // insertion one by one would leave them: O(n log n) where a row of a field of spheres meets hundreds.
-        Span<Branch> branches = _branches.AsSpan(0, n);
-        branches.Sort(static (p, q) => p.X != q.X ? p.X.CompareTo(q.X) : (p.Outline != q.Outline ? p.Outline.CompareTo(q.Outline) : p.Sign.CompareTo(q.Sign)));
+        Span<Branch> branches = BranchesAt(ym);
+        int n = branches.Length;
 
         // Walk the pieces left to right; a branch outside the image stands for the image's edge.
         double leftX = 0, leftIntegral = 0;
@@ -271,27 +252,9 @@ internal sealed class ExactRow
         }
 
         cuts.RemoveRange(m, cuts.Count - m);
-        Outline[] outlines = _outlines.Outlines;
         double ym = 0.5 * (cuts[0] + cuts[1]);
-        int n = 0;
-        foreach (int i in _present)
-        {
-            Outline o = outlines[i];
-            if (o.Hy > 0 && Math.Abs(ym - o.Yc) < o.Hy)
-            {
-                if (n + 2 > _branches.Length)
-                {
-                    Array.Resize(ref _branches, 2 * _branches.Length);
-                }
-
-                (double left, double right) = o.At(ym);
-                _branches[n++] = new Branch(left, i, -1);
-                _branches[n++] = new Branch(right, i, +1);
-            }
-        }
-
-        Span<Branch> branches = _branches.AsSpan(0, n);
-        branches.Sort(static (p, q) => Compare(p, q));
+        Span<Branch> branches = BranchesAt(ym);
+        int n = branches.Length;
         EnsureRoom(n + 1);
         _entries[0] = new Entry { Outline = -1, GapStart = cuts[0] };
         for (int k = 0; k < n; k++)
@@ -637,6 +600,36 @@ internal sealed class ExactRow
     }
 
     // By X; equal X by outline index, then left before right (the order a sort of the whole strip gives).
+    /// <summary>
+    /// The two branches (left and right) of every present outline that spans height <paramref name="ym"/>, sorted by
+    /// x; equal x in the order they were added (outline index, then left before right), as insertion one by one
+    /// would leave them: O(n log n) where a row of a field of spheres meets hundreds.
+    /// </summary>
+    private Span<Branch> BranchesAt(double ym)
+    {
+        Outline[] outlines = _outlines.Outlines;
+        int n = 0;
+        foreach (int i in _present)
+        {
+            Outline o = outlines[i];
+            if (o.Hy > 0 && Math.Abs(ym - o.Yc) < o.Hy)
+            {
+                if (n + 2 > _branches.Length)
+                {
+                    Array.Resize(ref _branches, 2 * _branches.Length);
+                }
+
+                (double left, double right) = o.At(ym);
+                _branches[n++] = new Branch(left, i, -1);
+                _branches[n++] = new Branch(right, i, +1);
+            }
+        }
+
+        Span<Branch> branches = _branches.AsSpan(0, n);
+        branches.Sort(static (p, q) => Compare(p, q));
+        return branches;
+    }
+
     private static int Compare(Branch p, Branch q) =>
         p.X != q.X ? p.X.CompareTo(q.X) : (p.Outline != q.Outline ? p.Outline.CompareTo(q.Outline) : p.Sign.CompareTo(q.Sign));
 
