@@ -5,7 +5,7 @@ namespace RayLab.Cli;
 /// <summary>
 /// What <c>raylab render --stats</c> writes: the render's settings and counts, and its times — <c>renderMs</c> the
 /// render loop alone, <c>warmupMs</c> the JIT's warm-up render (absent in the native build, which has none),
-/// <c>encodeMs</c> the image file. Fields that do not apply to the sampler are left out.
+/// <c>commitMs</c> the image's memory first touched, <c>encodeMs</c> the image file. Fields that do not apply to the sampler are left out.
 /// </summary>
 public sealed record RenderStatsFile
 {
@@ -62,6 +62,12 @@ public sealed record RenderStatsFile
 
     /// <summary>The JIT build's warm-up render in milliseconds; absent in the native build.</summary>
     public double? WarmupMs { get; init; }
+
+    /// <summary>
+    /// Committing the image's memory before the render, in milliseconds: its pages first touched, on every render
+    /// thread (the render's clock starts after it, as the native anchors' does after they zero their buffer).
+    /// </summary>
+    public double CommitMs { get; init; }
 
     /// <summary>Writing the image file, in milliseconds.</summary>
     public double EncodeMs { get; init; }
