@@ -15,6 +15,8 @@ public static class Program
             PngSizes.Print(Console.Out);
             Console.Out.WriteLine();
             SkiaSizes.Print(Console.Out);
+            Console.Out.WriteLine();
+            ZlibLevels.Print(Console.Out);
             return 0;
         }
 

@@ -19,7 +19,7 @@ public sealed class PngBandTests
         { 7, 1 },
         { 1, 7 },
         { 333, 19 },
-        { 1001, 601 },                                    // 174 rows a band: 4 bands, the last one short
+        { 1001, 601 },                                    // 174 rows a band: 4 bands, the last one short; 21 rows a 64 KiB chunk
         { 1, (2 * PngEncoder.RowsPerBand(1)) + 1 },        // one column, 3 bands
         { (PngEncoder.BandBytes / 3) + 5, 1 },            // one row wider than a band
         { (PngEncoder.BandBytes / 3) + 5, 3 },            // three such rows: a band each
@@ -85,6 +85,47 @@ public sealed class PngBandTests
         {
             Assert.All(png.RowFilters, f => Assert.Equal((byte)filter, f));
         }
+    }
+
+    [Theory]
+    [InlineData(CompressionLevel.NoCompression, 0, 0)]
+    [InlineData(CompressionLevel.Fastest, 1, 0)]
+    [InlineData(CompressionLevel.Optimal, 4, 1)]
+    [InlineData(CompressionLevel.SmallestSize, 9, 3)]
+    public void Each_level_is_its_zlib_level_and_the_header_says_its_class(CompressionLevel level, int zlibLevel, int levelClass)
+    {
+        Image image = TestImages.Varied(333, 19, seed: 7); // one band: its DEFLATE data is one whole stream
+        byte[] zlib = IdatData(Encode(image, threads: 1, PngFilter.None, level));
+
+        // With the None filter the filtered bytes are each row's 0 and its pixels (19 rows: one 64 KiB chunk, written at
+        // once); compressing them at the zlib level the level stands for must give the same DEFLATE bytes.
+        int rowBytes = image.Width * 3;
+        byte[] filtered = new byte[image.Height * (rowBytes + 1)];
+        for (int y = 0; y < image.Height; y++)
+        {
+            image.PixelBytes.Slice(y * rowBytes, rowBytes).CopyTo(filtered.AsSpan((y * (rowBytes + 1)) + 1));
+        }
+
+        using var expected = new MemoryStream();
+        using (var deflate = new DeflateStream(expected, new ZLibCompressionOptions { CompressionLevel = zlibLevel }, leaveOpen: true))
+        {
+            deflate.Write(filtered);
+        }
+
+        Assert.Equal(levelClass, zlib[1] >> 6);
+        Assert.Equal(0, ((zlib[0] << 8) | zlib[1]) % 31);
+        Assert.Equal(expected.ToArray(), zlib.AsSpan(2, zlib.Length - 6).ToArray());
+    }
+
+    [Fact]
+    public void A_level_outside_the_enum_is_refused_by_name_before_anything_is_written()
+    {
+        using var stream = new MemoryStream();
+
+        var e = Assert.Throws<ArgumentOutOfRangeException>(() => PngEncoder.Write(stream, new Image(2, 2), (CompressionLevel)42));
+
+        Assert.Equal("level", e.ParamName);
+        Assert.Equal(0, stream.Length);
     }
 
     [Fact]
