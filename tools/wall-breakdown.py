@@ -9,6 +9,7 @@ run untraced, so the render is not slowed), and prints medians of the phases tho
   start        execve → the scene file's openat (loader, runtime start, command-line parsing)
   to render    scene openat → start of the render (scene load, preparation, image allocation), from the traced
                span scene-open → PNG-open minus renderMs
+  commitMs     of "to render", the image's pages first touched on every render thread (--stats' commitMs)
   encode       PNG temp file openat → its rename returns (PNG encoding, write, fsync, rename = encodeMs)
   after        PNG rename → exit_group (the --stats JSON, the summary line)
   exit         exit_group → the last thread gone (strace's "+++ exited")
@@ -19,7 +20,11 @@ With RAYLAB_WARMUP=1 in a third run per round (--warmup), the native build rende
 as the JIT build does, so renderMs after a warm-up can be compared with the cold one.
 
 Build first: dotnet publish samples/RayLab.Console -c Release -r linux-x64 -o artifacts/native
-Usage: python3 tools/wall-breakdown.py [ROUNDS] [--binary PATH] [--warmup]   (needs strace and ../shared)
+With --faults, one more run per sampler under `perf record -e page-faults -c 1 -g` counts every page fault (a few µs
+each on the lab's VM: the kernel finds, zeroes and charges a page) by the first RayLab, runtime, zlib or loader
+frame on its stack.
+
+Usage: python3 tools/wall-breakdown.py [ROUNDS] [--binary PATH] [--warmup] [--faults]   (needs strace and ../shared)
 """
 import argparse, json, os, re, statistics, subprocess, tempfile, time
 
@@ -29,6 +34,8 @@ parser = argparse.ArgumentParser()
 parser.add_argument("rounds", nargs="?", type=int, default=9)
 parser.add_argument("--binary", default=os.path.join(root, "artifacts", "native", "raylab"))
 parser.add_argument("--warmup", action="store_true")
+parser.add_argument("--faults", action="store_true",
+                    help="also count the page faults of one run of each sampler by who took them (needs perf)")
 args = parser.parse_args()
 if not os.access(args.binary, os.X_OK):
     raise SystemExit(f"wall-breakdown.py: {args.binary} is missing; publish it first (see the docstring)")
@@ -87,6 +94,7 @@ for _ in range(args.rounds):
         r.setdefault("wall", []).append(wall)
         r.setdefault("renderMs", []).append(s["renderMs"])
         r.setdefault("encodeMs", []).append(s["encodeMs"])
+        r.setdefault("commitMs", []).append(s.get("commitMs", float("nan")))
         _, s = run(options, traced=True)
         for k, v in phases(s["renderMs"]).items():
             r.setdefault(k, []).append(v)
@@ -94,7 +102,7 @@ for _ in range(args.rounds):
             _, s = run(options, env={**os.environ, "RAYLAB_WARMUP": "1"})
             r.setdefault("renderMs after warm-up", []).append(s["renderMs"])
 
-columns = ["wall", "start", "to render", "renderMs", "encodeMs", "encode", "after", "exit", "rest"]
+columns = ["wall", "start", "to render", "commitMs", "renderMs", "encodeMs", "encode", "after", "exit", "rest"]
 if args.warmup:
     columns.append("renderMs after warm-up")
 print(f"Medians of {args.rounds} rounds (`python3 tools/wall-breakdown.py {args.rounds}"
@@ -105,3 +113,23 @@ med = statistics.median
 for label, r in rows.items():
     r["rest"] = [med(r["wall"]) - sum(med(r[k]) for k in ("start", "to render", "renderMs", "encodeMs", "after", "exit"))]
     print(f"| {label} | " + " | ".join(f"{med(r[c]):.1f}" for c in columns) + " |")
+
+if args.faults:
+    import collections
+    data = os.path.join(tmp, "faults.perf")
+    owners = ("RayLab", "raylab_", "Compression", "System_", "S_P_", "WKS::", "Rhp", "_dl_", "pthread", "deflate")
+    for label, options in samplers:
+        subprocess.run(["perf", "record", "-q", "-e", "page-faults", "-c", "1", "-g", "-o", data, "--", args.binary,
+                        "render", scene, *options, "--threads", "2", "-o", png], check=True, cwd=tmp,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        script = subprocess.run(["perf", "script", "-i", data, "-F", "ip,sym"], check=True, capture_output=True, text=True).stdout
+        counts = collections.Counter()
+        for stack in script.split("\n\n"):
+            frames = [f.strip().split(" ", 1)[-1] for f in stack.strip().splitlines() if f.strip()]
+            if frames:
+                counts[next((f for f in frames if any(o in f for o in owners)), frames[-1])[:100]] += 1
+        print(f"\nPage faults of one {label} run: {sum(counts.values())}, by who took them:\n")
+        print("| faults | first RayLab, runtime, zlib or loader frame |")
+        print("|---:|---|")
+        for owner, n in counts.most_common(8):
+            print(f"| {n} | `{owner}` |")

@@ -36,8 +36,8 @@ public static class PngEncoder
     /// <param name="image">The image.</param>
     /// <param name="level">
     /// The DEFLATE compression level. <see cref="CompressionLevel.Optimal"/>, the balance of speed and size, is zlib
-    /// level 4 here rather than the runtime's 6: on rendered pictures (the 1080p two-sphere picture, its exact image and
-    /// the sphere field) level 6 took 1.7–4.7× the time for 1–10 % fewer bytes (docs/performance.md, "PNG encoding").
+    /// level 4 here rather than the runtime's 6: on the rendered 1080p two-sphere pictures (jittered and exact) level 6
+    /// took 1.5–1.6× the time for 1–2 % fewer bytes (docs/performance.md, "PNG encoding": ZlibLevelBenchmarks).
     /// <see cref="CompressionLevel.Fastest"/> is level 1, <see cref="CompressionLevel.SmallestSize"/> level 9.
     /// </param>
     /// <param name="filter">
