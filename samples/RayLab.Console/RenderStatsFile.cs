@@ -82,8 +82,8 @@ public sealed record RenderStatsFile
     public string? ScalarReason { get; init; }
 }
 
-/// <summary>The stats file's JSON, generated at compile time (no reflection, so the native build can write it).</summary>
-[JsonSourceGenerationOptions(WriteIndented = true, PropertyNamingPolicy = JsonKnownNamingPolicy.CamelCase,
+/// <summary>The stats file's JSON, generated at compile time (no reflection, so the native build can write it; the serializing code alone, without the metadata that reading would need).</summary>
+[JsonSourceGenerationOptions(GenerationMode = JsonSourceGenerationMode.Serialization, WriteIndented = true, PropertyNamingPolicy = JsonKnownNamingPolicy.CamelCase,
     DefaultIgnoreCondition = JsonIgnoreCondition.WhenWritingNull)]
 [JsonSerializable(typeof(RenderStatsFile))]
 internal sealed partial class RenderStatsJson : JsonSerializerContext;
