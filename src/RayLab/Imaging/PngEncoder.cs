@@ -87,7 +87,10 @@ public static class PngEncoder
         }
         else
         {
-            Parallel.For(0, bandCount, new ParallelOptions { MaxDegreeOfParallelism = maxDegreeOfParallelism },
+            // −1 is one band per core at a time: left unlimited, Parallel.For takes every thread-pool thread it finds
+            // (three workers on two cores after a render), and each thread's zlib state costs fresh pages.
+            int threads = maxDegreeOfParallelism == -1 ? Environment.ProcessorCount : maxDegreeOfParallelism;
+            Parallel.For(0, bandCount, new ParallelOptions { MaxDegreeOfParallelism = threads },
                 i => bands[i] = EncodeBand(image, i, rowsPerBand, bandCount, zlibLevel, filter, zlibHeader));
         }
 
