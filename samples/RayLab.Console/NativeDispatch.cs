@@ -44,6 +44,8 @@ internal static partial class NativeDispatch
                 {
                     Exec(sibling, args);
                 }
+
+                // Still here: that build cannot be started; the next narrower one, or this binary itself, runs the command.
             }
         }
     }
