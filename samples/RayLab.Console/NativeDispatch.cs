@@ -1,6 +1,7 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics.X86;
+using System.Runtime.Versioning;
 
 namespace RayLab.Cli;
 
@@ -10,7 +11,11 @@ namespace RayLab.Cli;
 /// there is AVX2. <c>tools/publish-native.sh</c> therefore publishes an x86-64-v2 <c>raylab</c> (runs on any
 /// x64 of the last 15 years) with <c>raylab-x86-64-v3</c> (AVX2, FMA) and <c>raylab-x86-64-v4</c> (AVX-512) beside
 /// it; at start-up <c>raylab</c> asks the CPU (CPUID) and replaces itself (<c>execv</c>, same process id, same
-/// arguments) with the widest of those its CPU runs. A binary published alone never finds a sibling and just runs.
+/// arguments) with the widest of those its CPU runs. The .NET tool's native package <c>RayLab.Tool.linux-x64</c> has
+/// the same layout (<c>dotnet pack -r linux-x64</c>). A binary published alone never finds a sibling and just runs.
+/// A sibling that cannot be started (no execute permission that this user can add, a file system mounted noexec) is
+/// passed over for the next narrower one, down to this binary itself: slower, never failing; <c>--stats</c> then
+/// names the kernel that ran.
 /// </summary>
 internal static partial class NativeDispatch
 {
@@ -34,8 +39,13 @@ internal static partial class NativeDispatch
             string sibling = Path.Combine(AppContext.BaseDirectory, $"raylab-x86-64-v{level}");
             if (File.Exists(sibling))
             {
-                Exec(sibling, args); // returns only if execv failed: then this binary runs the command itself
-                return;
+                Exec(sibling, args); // returns only if execv failed
+                if (AllowExecute(sibling))
+                {
+                    Exec(sibling, args);
+                }
+
+                // Still here: that build cannot be started; the next narrower one, or this binary itself, runs the command.
             }
         }
     }
@@ -52,6 +62,34 @@ internal static partial class NativeDispatch
         // v4: AVX-512 F, DQ, CD, BW, VL.
         bool v4 = v3 && Bit(ebx7, 16) && Bit(ebx7, 17) && Bit(ebx7, 28) && Bit(ebx7, 30) && Bit(ebx7, 31);
         return v4 ? 4 : v3 ? 3 : 2;
+    }
+
+    /// <summary>
+    /// Adds execute permission wherever the file grants read permission (u+x for its owner, and g+x, o+x as its read
+    /// bits allow), for a package extractor that did not keep the bits; false when nothing changed or it is not ours.
+    /// </summary>
+    [UnsupportedOSPlatform("windows")]
+    private static bool AllowExecute(string path)
+    {
+        try
+        {
+            UnixFileMode mode = File.GetUnixFileMode(path);
+            UnixFileMode wanted = mode
+                | (mode.HasFlag(UnixFileMode.UserRead) ? UnixFileMode.UserExecute : 0)
+                | (mode.HasFlag(UnixFileMode.GroupRead) ? UnixFileMode.GroupExecute : 0)
+                | (mode.HasFlag(UnixFileMode.OtherRead) ? UnixFileMode.OtherExecute : 0);
+            if (wanted == mode)
+            {
+                return false; // already executable: execv failed for another reason
+            }
+
+            File.SetUnixFileMode(path, wanted);
+            return true;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return false;
+        }
     }
 
     private static unsafe void Exec(string path, string[] args)

@@ -1,7 +1,9 @@
 using System.Buffers.Binary;
 using System.Diagnostics;
 using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics.X86;
 using System.Text;
+using System.Text.Json;
 using System.Text.RegularExpressions;
 using RayLab.Tests.Imaging;
 using SkiaSharp;
@@ -20,6 +22,9 @@ namespace RayLab.Tests.Packaging;
 [Trait("Category", "Packaging")]
 public sealed partial class PackageTests : IDisposable
 {
+    /// <summary>The environment variable that keeps the native tool in the binary that was started (NativeDispatch).</summary>
+    private const string NoDispatchVariable = "RAYLAB_NO_DISPATCH";
+
     private static readonly TimeSpan ChildTimeout = TimeSpan.FromMinutes(5);
 
     private readonly string _dir = Directory.CreateTempSubdirectory("raylab-packaging-").FullName;
@@ -160,6 +165,10 @@ public sealed partial class PackageTests : IDisposable
 
         // The scenes it carries, listed and rendered by name from a folder outside the repository.
         await AssertCarriedScenesAsync(work, packages, raylab, native: NativeToolHere);
+        if (NativeToolHere)
+        {
+            await AssertDispatchAsync(work, packages, raylab);
+        }
 
         // 5. The fallback: a pointer package that names a native package for another platform only (as RayLab.Tool
         // does for linux-x64 on every other platform) installs RayLab.Tool.any, which renders with the JIT.
@@ -200,6 +209,17 @@ public sealed partial class PackageTests : IDisposable
             byte[] head = File.ReadAllBytes(target.FullName).AsSpan(0, 4).ToArray();
             Assert.Equal(new byte[] { 0x7F, (byte)'E', (byte)'L', (byte)'F' }, head);
             Assert.Equal("raylab", target.Name);
+
+            // The entry is the x86-64-v2 build; the wider builds it execs on a CPU that runs them lie beside it.
+            string folder = Path.GetDirectoryName(target.FullName)!;
+            string[] siblings = [.. Directory.GetFiles(folder, "raylab-*").Select(f => Path.GetFileName(f)!).Order(StringComparer.Ordinal)];
+            Assert.Equal(["raylab-x86-64-v3", "raylab-x86-64-v4"], siblings);
+            byte[][] builds = [File.ReadAllBytes(target.FullName), .. siblings.Select(s => File.ReadAllBytes(Path.Combine(folder, s)))];
+            foreach (byte[] build in builds)
+            {
+                Assert.Equal(head, build.AsSpan(0, 4).ToArray());
+                Assert.Single(builds, other => other.AsSpan().SequenceEqual(build)); // three different compilations
+            }
         }
         else
         {
@@ -229,6 +249,62 @@ public sealed partial class PackageTests : IDisposable
         Assert.Equal((96, 72, SKEncodedImageFormat.Png), (decoded.Width, decoded.Height, decoded.Format));
         Assert.Contains(decoded.Rgb, b => b != decoded.Rgb[0]); // a picture, not one flat colour
         Assert.Equal(native, !File.ReadAllText(stats).Contains("\"warmupMs\"", StringComparison.Ordinal));
+    }
+
+    /// <summary>
+    /// The installed native tool takes the widest render kernel this CPU runs: its x86-64-v2 entry execs the v3 (AVX2)
+    /// or v4 (AVX-512) build beside it when the CPU has that level, which <c>--stats</c> shows as the kernel
+    /// (expected from this test process's own checks of the same instruction sets); with
+    /// <see cref="NoDispatchVariable"/> set it stays in the entry, the <c>vector128</c> kernel, and writes the same PNG bytes.
+    /// The build it takes has lost its execute permission first (as a package extractor may leave it): the entry
+    /// gives it back and still takes it.
+    /// </summary>
+    private static async Task AssertDispatchAsync(string work, string packages, string raylab)
+    {
+        string expected = ExpectedNativeKernel();
+        string? widest = expected switch
+        {
+            "vector512" => "raylab-x86-64-v4",
+            "vector256" => "raylab-x86-64-v3",
+            _ => null,
+        };
+        string? widestPath = widest is null ? null : Path.Combine(Path.GetDirectoryName(new FileInfo(raylab).ResolveLinkTarget(returnFinalTarget: true)!.FullName)!, widest);
+        if (widestPath is not null && !OperatingSystem.IsWindows())
+        {
+            File.SetUnixFileMode(widestPath, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.GroupRead | UnixFileMode.OtherRead);
+        }
+
+        string[] render = ["render", "two-spheres", "--width", "96", "--height", "72", "--stats"];
+        string widestPng = Path.Combine(work, "dispatch-widest.png");
+        string entryPng = Path.Combine(work, "dispatch-entry.png");
+        await RunAsync(work, packages, raylab, [.. render, "widest.json", "-o", widestPng]);
+        if (widestPath is not null && !OperatingSystem.IsWindows())
+        {
+            Assert.True(File.GetUnixFileMode(widestPath).HasFlag(UnixFileMode.UserExecute), $"{widestPath} was not made executable");
+        }
+        await RunWithVariableAsync(work, packages, NoDispatchVariable, raylab, [.. render, "entry.json", "-o", entryPng]);
+
+        Assert.Equal(expected, Kernel(Path.Combine(work, "widest.json")));
+        Assert.Equal("vector128", Kernel(Path.Combine(work, "entry.json")));
+        Assert.Equal(File.ReadAllBytes(widestPng), File.ReadAllBytes(entryPng));
+
+        static string Kernel(string stats)
+        {
+            using JsonDocument json = JsonDocument.Parse(File.ReadAllText(stats));
+            return json.RootElement.GetProperty("kernel").GetString()!;
+        }
+    }
+
+    /// <summary>
+    /// The kernel of the build the native tool's dispatch should land in on this CPU, from the same instruction sets
+    /// this (JIT) process sees: x86-64-v4 (AVX-512 F, BW, CD, DQ, VL) renders with vector512, x86-64-v3 (AVX2, FMA,
+    /// BMI1, BMI2) with vector256, anything older with the entry's vector128.
+    /// </summary>
+    private static string ExpectedNativeKernel()
+    {
+        bool v3 = Avx2.IsSupported && Fma.IsSupported && Bmi1.IsSupported && Bmi2.IsSupported;
+        bool v4 = v3 && Avx512F.IsSupported && Avx512F.VL.IsSupported && Avx512BW.IsSupported && Avx512CD.IsSupported && Avx512DQ.IsSupported;
+        return v4 ? "vector512" : v3 ? "vector256" : "vector128";
     }
 
     /// <summary>The C# block under the README's "## The library in ten lines" heading.</summary>
@@ -281,7 +357,12 @@ public sealed partial class PackageTests : IDisposable
 
     /// <summary>Runs a child process to completion; fails with its command line, stdout and stderr unless it exits 0.</summary>
     /// <returns>What the child wrote to stdout.</returns>
-    private static async Task<string> RunAsync(string workingDirectory, string nugetPackages, string fileName, params string[] args)
+    private static Task<string> RunAsync(string workingDirectory, string nugetPackages, string fileName, params string[] args) =>
+        RunWithVariableAsync(workingDirectory, nugetPackages, null, fileName, args);
+
+    /// <summary>As <see cref="RunAsync(string, string, string, string[])"/>, with <paramref name="setVariable"/> (when not null) set to 1 in the child's environment.</summary>
+    /// <returns>What the child wrote to stdout.</returns>
+    private static async Task<string> RunWithVariableAsync(string workingDirectory, string nugetPackages, string? setVariable, string fileName, string[] args)
     {
         var psi = new ProcessStartInfo(fileName)
         {
@@ -305,6 +386,11 @@ public sealed partial class PackageTests : IDisposable
         psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
         psi.Environment["DOTNET_NOLOGO"] = "1";
         psi.Environment["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1";
+        psi.Environment.Remove(NoDispatchVariable); // the native tool chooses its build unless a test asks it not to
+        if (setVariable is not null)
+        {
+            psi.Environment[setVariable] = "1";
+        }
 
         using var process = new Process { StartInfo = psi };
         var stdout = new StringBuilder();
