@@ -50,6 +50,12 @@ internal sealed class ExactRow
     private readonly List<int> _found = [];
     private readonly List<(int Outline, int Sign)> _restart = [];
     private readonly bool[] _dirty;
+    // Per branch Id (2·outline for the left branch, 2·outline + 1 for the right): its index in the order, valid for
+    // indices below _positionsValid (the entries from there on have shifted since), and its X at height _xAt[id].
+    private readonly int[] _position;
+    private readonly double[] _x;
+    private readonly double[] _xAt;
+    private int _positionsValid;
     private Branch[] _branches = new Branch[8];
     private Entry[] _entries = new Entry[16];
     private int _count;
@@ -67,6 +73,10 @@ internal sealed class ExactRow
         _values = new double[3 * _width];
         _spans = new double[3 * (_width + 1)];
         _dirty = new bool[outlines.Outlines.Length];
+        _position = new int[2 * outlines.Outlines.Length];
+        _x = new double[2 * outlines.Outlines.Length];
+        _xAt = new double[2 * outlines.Outlines.Length];
+        _xAt.AsSpan().Fill(double.NaN);
     }
 
     /// <summary>
@@ -263,6 +273,7 @@ internal sealed class ExactRow
         }
 
         _count = n + 1;
+        _positionsValid = 1;
         _pendingStarts = 0;
         int e = 0;
         _moved.Clear();
@@ -328,7 +339,7 @@ internal sealed class ExactRow
             Outline o = outlines[i];
             if (o.Hy > 0 && Math.Abs(above - o.Yc) < o.Hy)
             {
-                int left = Find(i, -1, above), right = Find(i, +1, above);
+                int left = Find(i, -1), right = Find(i, +1);
                 if (left < 0 || right < 0)
                 {
                     _broken = true;
@@ -356,6 +367,7 @@ internal sealed class ExactRow
         if (_found.Count > 0)
         {
             int w = _found[0];
+            _positionsValid = Math.Min(_positionsValid, w);
             for (int f = 0; f < _found.Count; f++)
             {
                 int from = _found[f] + 1, to = f + 1 < _found.Count ? _found[f + 1] : _count;
@@ -386,7 +398,7 @@ internal sealed class ExactRow
 
         foreach ((int outline, int sign) in _restart)
         {
-            int k = outline < 0 ? 0 : Find(outline, sign, below);
+            int k = outline < 0 ? 0 : Find(outline, sign);
             if (k < 0)
             {
                 _broken = true; // cannot happen: every branch restarted is in the order
@@ -416,49 +428,29 @@ internal sealed class ExactRow
         _broken |= _pendingStarts != 0;
     }
 
-    // The index of branch (outline, sign) in the order, found by its X at height y (where the order holds), or −1.
-    private int Find(int outline, int sign, double y)
+    // The index of branch (outline, sign) in the order, or −1 when it is not there. Each branch's index is kept per
+    // Id and brought up to date (from the first entry that shifted) only when asked for: the same index that a search
+    // by X finds, as every branch is in the order once, without evaluating any outline.
+    private int Find(int outline, int sign)
     {
-        Outline[] outlines = _outlines.Outlines;
-        var key = new Branch(BranchX(outlines[outline], sign, y), outline, sign);
-        int lo = 1, hi = _count;
-        while (lo < hi)
+        int id = (2 * outline) + (sign > 0 ? 1 : 0);
+        int k = _position[id];
+        if (k < 1 || k >= _positionsValid || _entries[k].Outline != outline || _entries[k].Sign != sign)
         {
-            int mid = (lo + hi) >>> 1;
-            Entry other = _entries[mid];
-            if (Compare(key, new Branch(BranchX(outlines[other.Outline], other.Sign, y), other.Outline, other.Sign)) > 0)
+            for (int j = _positionsValid; j < _count; j++)
             {
-                lo = mid + 1;
+                _position[(2 * _entries[j].Outline) + (_entries[j].Sign > 0 ? 1 : 0)] = j;
             }
-            else
+
+            _positionsValid = _count;
+            k = _position[id];
+            if (k < 1 || k >= _count || _entries[k].Outline != outline || _entries[k].Sign != sign)
             {
-                hi = mid;
+                return -1;
             }
         }
 
-        // Branches a few ulps apart may stand in either order (placed where they were apart): look nearby, then everywhere.
-        for (int d = 0; d <= 8; d++)
-        {
-            if (lo + d < _count && _entries[lo + d].Outline == outline && _entries[lo + d].Sign == sign)
-            {
-                return lo + d;
-            }
-
-            if (lo - d >= 1 && lo - d < _count && _entries[lo - d].Outline == outline && _entries[lo - d].Sign == sign)
-            {
-                return lo - d;
-            }
-        }
-
-        for (int k = 1; k < _count; k++)
-        {
-            if (_entries[k].Outline == outline && _entries[k].Sign == sign)
-            {
-                return k;
-            }
-        }
-
-        return -1;
+        return k;
     }
 
         // True when the branch with this Id belongs to an outline that crosses or touches another at the current cut. Two
@@ -494,7 +486,7 @@ internal sealed class ExactRow
         {
             int mid = (lo + hi) >>> 1;
             Entry other = _entries[mid];
-            double x = BranchX(outlines[other.Outline], other.Sign, ym);
+            double x = CachedX(outlines, other.Outline, other.Sign, ym);
             if (Compare(branch, new Branch(x, other.Outline, other.Sign)) > 0)
             {
                 lo = mid + 1;
@@ -511,6 +503,7 @@ internal sealed class ExactRow
         }
 
         EnsureRoom(_count + 1);
+        _positionsValid = Math.Min(_positionsValid, lo);
         Array.Copy(_entries, lo, _entries, lo + 1, _count - lo);
         _entries[lo] = new Entry { Outline = branch.Outline, Sign = branch.Sign, GapStart = double.NaN };
         _count++;
@@ -585,6 +578,22 @@ internal sealed class ExactRow
         Piece(xl, il, xr, ir, h, _scene.ColourOf(entry.Hit));
     }
 
+    // BranchX of branch (outline, sign) at height y, remembered per branch for the last height asked (the insertions
+    // at a cut all search the order at the same height).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private double CachedX(Outline[] outlines, int outline, int sign, double y)
+    {
+        int id = (2 * outline) + (sign > 0 ? 1 : 0);
+        if (_xAt[id] != y)
+        {
+            _x[id] = BranchX(outlines[outline], sign, y);
+            _xAt[id] = y;
+        }
+
+        return _x[id];
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double BranchX(Outline o, int sign, double y)
     {
         (double left, double right) = o.At(y);
@@ -630,6 +639,7 @@ internal sealed class ExactRow
         return branches;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static int Compare(Branch p, Branch q) =>
         p.X != q.X ? p.X.CompareTo(q.X) : (p.Outline != q.Outline ? p.Outline.CompareTo(q.Outline) : p.Sign.CompareTo(q.Sign));
 
