@@ -48,6 +48,8 @@ internal sealed class ExactRow
     private readonly List<Carried> _carried = [];
     private readonly List<int> _moved = [];
     private readonly List<int> _found = [];
+    private readonly List<int> _removed = [];
+    private readonly bool[] _stays;
     private readonly List<(int Outline, int Sign)> _restart = [];
     private readonly bool[] _dirty;
     // Per branch Id (2·outline for the left branch, 2·outline + 1 for the right): its index in the order, valid for
@@ -73,6 +75,7 @@ internal sealed class ExactRow
         _values = new double[3 * _width];
         _spans = new double[3 * (_width + 1)];
         _dirty = new bool[outlines.Outlines.Length];
+        _stays = new bool[outlines.Outlines.Length];
         _position = new int[2 * outlines.Outlines.Length];
         _x = new double[2 * outlines.Outlines.Length];
         _xAt = new double[2 * outlines.Outlines.Length];
@@ -327,12 +330,15 @@ internal sealed class ExactRow
     // At a cut: the branches of the outlines marked dirty are found in the order (as it was just above, at `above`),
     // the gaps beside them end, they are taken out and put back at their places just below (at `below`), and the
     // gaps that begin get their colour carried or left to be traced. Work: O(log n) per branch moved, plus the
-    // shifting of the entries after it.
+    // shifting of the entries after it. An outline whose event is its own (a pixel edge or a turn, not a crossing)
+    // and whose branches stay clearly between the same neighbours below the cut is left where it is: taking it
+    // out and putting it back would give the same order (StaysInPlace).
     private void Update(double cut, double above, double below)
     {
         _carried.Clear();
         _restart.Clear();
         _found.Clear();
+        _removed.Clear();
         Outline[] outlines = _outlines.Outlines;
         foreach (int i in _moved)
         {
@@ -348,6 +354,12 @@ internal sealed class ExactRow
 
                 _found.Add(left);
                 _found.Add(right);
+                _stays[i] = Math.Abs(below - o.Yc) < o.Hy && !_crossed.Contains(i) && StaysInPlace(i, left, right, below);
+                if (!_stays[i])
+                {
+                    _removed.Add(left);
+                    _removed.Add(right);
+                }
             }
         }
 
@@ -363,15 +375,16 @@ internal sealed class ExactRow
             End(k, cut);
         }
 
-        // Take the found entries out, shifting each run between them left.
-        if (_found.Count > 0)
+        // Take the entries that move out, shifting each run between them left.
+        if (_removed.Count > 0)
         {
-            int w = _found[0];
+            _removed.Sort();
+            int w = _removed[0];
             _positionsValid = Math.Min(_positionsValid, w);
-            for (int f = 0; f < _found.Count; f++)
+            for (int f = 0; f < _removed.Count; f++)
             {
-                int from = _found[f] + 1, to = f + 1 < _found.Count ? _found[f + 1] : _count;
-                if (!double.IsNaN(_entries[_found[f]].GapStart))
+                int from = _removed[f] + 1, to = f + 1 < _removed.Count ? _removed[f + 1] : _count;
+                if (!double.IsNaN(_entries[_removed[f]].GapStart))
                 {
                     _broken = true; // cannot happen: every found entry's gap was just ended
                 }
@@ -388,7 +401,14 @@ internal sealed class ExactRow
         {
             _dirty[i] = false;
             Outline o = outlines[i];
-            if (o.Hy > 0 && Math.Abs(below - o.Yc) < o.Hy)
+            if (_stays[i])
+            {
+                // Left in place: its gaps ended above, and begin again as if it had been put back.
+                _stays[i] = false;
+                _restart.Add((i, -1));
+                _restart.Add((i, +1));
+            }
+            else if (o.Hy > 0 && Math.Abs(below - o.Yc) < o.Hy)
             {
                 (double left, double right) = o.At(below);
                 Insert(new Branch(left, i, -1), below, cut);
@@ -426,6 +446,41 @@ internal sealed class ExactRow
 
         // Every gap that ended has begun again (or left with its branch): otherwise the order is not what it seems.
         _broken |= _pendingStarts != 0;
+    }
+
+    // True when outline i's branches, at indices left < right, keep their places at height `below` with a margin:
+    // each of their neighbours in the order is a branch that does not move at this cut (or the image's edge, or the
+    // outline's other branch) and lies clearly on its side (more than 1e-9 pixel, relative). Then the order is sorted
+    // around them, and taking them out and putting them back by search would put them exactly there.
+    private bool StaysInPlace(int i, int left, int right, double below)
+    {
+        if (right <= left)
+        {
+            return false;
+        }
+
+        Outline[] outlines = _outlines.Outlines;
+        double xl = CachedX(outlines, i, -1, below), xr = CachedX(outlines, i, +1, below);
+        return Clear(left - 1, xl, -1) && (left + 1 == right || Clear(left + 1, xl, +1))
+            && (right - 1 == left || Clear(right - 1, xr, -1)) && Clear(right + 1, xr, +1);
+
+        // Entry k, on side `side` of a branch at x, is the image's edge or a branch that stays, clearly on that side.
+        bool Clear(int k, double x, int side)
+        {
+            if (k <= 0 || k >= _count)
+            {
+                return true;
+            }
+
+            Entry other = _entries[k];
+            if (_dirty[other.Outline])
+            {
+                return false;
+            }
+
+            double d = side * (CachedX(outlines, other.Outline, other.Sign, below) - x);
+            return d > 1e-9 * (1 + Math.Abs(x));
+        }
     }
 
     // The index of branch (outline, sign) in the order, or −1 when it is not there. Each branch's index is kept per
