@@ -343,6 +343,7 @@ internal sealed class ExactRow
         foreach (int i in _moved)
         {
             Outline o = outlines[i];
+            _stays[i] = false; // set for every outline moved, so that none is left over from a row given up
             if (o.Hy > 0 && Math.Abs(above - o.Yc) < o.Hy)
             {
                 int left = Find(i, -1), right = Find(i, +1);
