@@ -48,8 +48,16 @@ internal sealed class ExactRow
     private readonly List<Carried> _carried = [];
     private readonly List<int> _moved = [];
     private readonly List<int> _found = [];
+    private readonly List<int> _removed = [];
+    private readonly bool[] _stays;
     private readonly List<(int Outline, int Sign)> _restart = [];
     private readonly bool[] _dirty;
+    // Per branch Id (2·outline for the left branch, 2·outline + 1 for the right): its index in the order, valid for
+    // indices below _positionsValid (the entries from there on have shifted since), and its X at height _xAt[id].
+    private readonly int[] _position;
+    private readonly double[] _x;
+    private readonly double[] _xAt;
+    private int _positionsValid;
     private Branch[] _branches = new Branch[8];
     private Entry[] _entries = new Entry[16];
     private int _count;
@@ -67,6 +75,11 @@ internal sealed class ExactRow
         _values = new double[3 * _width];
         _spans = new double[3 * (_width + 1)];
         _dirty = new bool[outlines.Outlines.Length];
+        _stays = new bool[outlines.Outlines.Length];
+        _position = new int[2 * outlines.Outlines.Length];
+        _x = new double[2 * outlines.Outlines.Length];
+        _xAt = new double[2 * outlines.Outlines.Length];
+        _xAt.AsSpan().Fill(double.NaN);
     }
 
     /// <summary>
@@ -263,6 +276,7 @@ internal sealed class ExactRow
         }
 
         _count = n + 1;
+        _positionsValid = 1;
         _pendingStarts = 0;
         int e = 0;
         _moved.Clear();
@@ -316,19 +330,23 @@ internal sealed class ExactRow
     // At a cut: the branches of the outlines marked dirty are found in the order (as it was just above, at `above`),
     // the gaps beside them end, they are taken out and put back at their places just below (at `below`), and the
     // gaps that begin get their colour carried or left to be traced. Work: O(log n) per branch moved, plus the
-    // shifting of the entries after it.
+    // shifting of the entries after it. An outline whose event is its own (a pixel edge or a turn, not a crossing)
+    // and whose branches stay clearly between the same neighbours below the cut is left where it is: taking it
+    // out and putting it back would give the same order (StaysInPlace).
     private void Update(double cut, double above, double below)
     {
         _carried.Clear();
         _restart.Clear();
         _found.Clear();
+        _removed.Clear();
         Outline[] outlines = _outlines.Outlines;
         foreach (int i in _moved)
         {
             Outline o = outlines[i];
+            _stays[i] = false; // set for every outline moved, so that none is left over from a row given up
             if (o.Hy > 0 && Math.Abs(above - o.Yc) < o.Hy)
             {
-                int left = Find(i, -1, above), right = Find(i, +1, above);
+                int left = Find(i, -1), right = Find(i, +1);
                 if (left < 0 || right < 0)
                 {
                     _broken = true;
@@ -337,6 +355,12 @@ internal sealed class ExactRow
 
                 _found.Add(left);
                 _found.Add(right);
+                _stays[i] = Math.Abs(below - o.Yc) < o.Hy && !_crossed.Contains(i) && StaysInPlace(i, left, right, below);
+                if (!_stays[i])
+                {
+                    _removed.Add(left);
+                    _removed.Add(right);
+                }
             }
         }
 
@@ -352,14 +376,16 @@ internal sealed class ExactRow
             End(k, cut);
         }
 
-        // Take the found entries out, shifting each run between them left.
-        if (_found.Count > 0)
+        // Take the entries that move out, shifting each run between them left.
+        if (_removed.Count > 0)
         {
-            int w = _found[0];
-            for (int f = 0; f < _found.Count; f++)
+            _removed.Sort();
+            int w = _removed[0];
+            _positionsValid = Math.Min(_positionsValid, w);
+            for (int f = 0; f < _removed.Count; f++)
             {
-                int from = _found[f] + 1, to = f + 1 < _found.Count ? _found[f + 1] : _count;
-                if (!double.IsNaN(_entries[_found[f]].GapStart))
+                int from = _removed[f] + 1, to = f + 1 < _removed.Count ? _removed[f + 1] : _count;
+                if (!double.IsNaN(_entries[_removed[f]].GapStart))
                 {
                     _broken = true; // cannot happen: every found entry's gap was just ended
                 }
@@ -376,7 +402,14 @@ internal sealed class ExactRow
         {
             _dirty[i] = false;
             Outline o = outlines[i];
-            if (o.Hy > 0 && Math.Abs(below - o.Yc) < o.Hy)
+            if (_stays[i])
+            {
+                // Left in place: its gaps ended above, and begin again as if it had been put back.
+                _stays[i] = false;
+                _restart.Add((i, -1));
+                _restart.Add((i, +1));
+            }
+            else if (o.Hy > 0 && Math.Abs(below - o.Yc) < o.Hy)
             {
                 (double left, double right) = o.At(below);
                 Insert(new Branch(left, i, -1), below, cut);
@@ -386,7 +419,7 @@ internal sealed class ExactRow
 
         foreach ((int outline, int sign) in _restart)
         {
-            int k = outline < 0 ? 0 : Find(outline, sign, below);
+            int k = outline < 0 ? 0 : Find(outline, sign);
             if (k < 0)
             {
                 _broken = true; // cannot happen: every branch restarted is in the order
@@ -416,49 +449,64 @@ internal sealed class ExactRow
         _broken |= _pendingStarts != 0;
     }
 
-    // The index of branch (outline, sign) in the order, found by its X at height y (where the order holds), or −1.
-    private int Find(int outline, int sign, double y)
+    // True when outline i's branches, at indices left < right, keep their places at height `below` with a margin:
+    // each of their neighbours in the order is a branch that does not move at this cut (or the image's edge, or the
+    // outline's other branch) and lies clearly on its side (more than 1e-9 pixel, relative). Then the order is sorted
+    // around them, and taking them out and putting them back by search would put them exactly there.
+    private bool StaysInPlace(int i, int left, int right, double below)
     {
+        if (right <= left)
+        {
+            return false;
+        }
+
         Outline[] outlines = _outlines.Outlines;
-        var key = new Branch(BranchX(outlines[outline], sign, y), outline, sign);
-        int lo = 1, hi = _count;
-        while (lo < hi)
+        double xl = CachedX(outlines, i, -1, below), xr = CachedX(outlines, i, +1, below);
+        return Clear(left - 1, xl, -1) && (left + 1 == right || Clear(left + 1, xl, +1))
+            && (right - 1 == left || Clear(right - 1, xr, -1)) && Clear(right + 1, xr, +1);
+
+        // Entry k, on side `side` of a branch at x, is the image's edge or a branch that stays, clearly on that side.
+        bool Clear(int k, double x, int side)
         {
-            int mid = (lo + hi) >>> 1;
-            Entry other = _entries[mid];
-            if (Compare(key, new Branch(BranchX(outlines[other.Outline], other.Sign, y), other.Outline, other.Sign)) > 0)
+            if (k <= 0 || k >= _count)
             {
-                lo = mid + 1;
+                return true;
             }
-            else
+
+            Entry other = _entries[k];
+            if (_dirty[other.Outline])
             {
-                hi = mid;
+                return false;
+            }
+
+            double d = side * (CachedX(outlines, other.Outline, other.Sign, below) - x);
+            return d > 1e-9 * (1 + Math.Abs(x));
+        }
+    }
+
+    // The index of branch (outline, sign) in the order, or −1 when it is not there. Each branch's index is kept per
+    // Id and brought up to date (from the first entry that shifted) only when asked for: the same index that a search
+    // by X finds, as every branch is in the order once, without evaluating any outline.
+    private int Find(int outline, int sign)
+    {
+        int id = (2 * outline) + (sign > 0 ? 1 : 0);
+        int k = _position[id];
+        if (k < 1 || k >= _positionsValid || _entries[k].Outline != outline || _entries[k].Sign != sign)
+        {
+            for (int j = _positionsValid; j < _count; j++)
+            {
+                _position[(2 * _entries[j].Outline) + (_entries[j].Sign > 0 ? 1 : 0)] = j;
+            }
+
+            _positionsValid = _count;
+            k = _position[id];
+            if (k < 1 || k >= _count || _entries[k].Outline != outline || _entries[k].Sign != sign)
+            {
+                return -1;
             }
         }
 
-        // Branches a few ulps apart may stand in either order (placed where they were apart): look nearby, then everywhere.
-        for (int d = 0; d <= 8; d++)
-        {
-            if (lo + d < _count && _entries[lo + d].Outline == outline && _entries[lo + d].Sign == sign)
-            {
-                return lo + d;
-            }
-
-            if (lo - d >= 1 && lo - d < _count && _entries[lo - d].Outline == outline && _entries[lo - d].Sign == sign)
-            {
-                return lo - d;
-            }
-        }
-
-        for (int k = 1; k < _count; k++)
-        {
-            if (_entries[k].Outline == outline && _entries[k].Sign == sign)
-            {
-                return k;
-            }
-        }
-
-        return -1;
+        return k;
     }
 
         // True when the branch with this Id belongs to an outline that crosses or touches another at the current cut. Two
@@ -494,7 +542,7 @@ internal sealed class ExactRow
         {
             int mid = (lo + hi) >>> 1;
             Entry other = _entries[mid];
-            double x = BranchX(outlines[other.Outline], other.Sign, ym);
+            double x = CachedX(outlines, other.Outline, other.Sign, ym);
             if (Compare(branch, new Branch(x, other.Outline, other.Sign)) > 0)
             {
                 lo = mid + 1;
@@ -511,6 +559,7 @@ internal sealed class ExactRow
         }
 
         EnsureRoom(_count + 1);
+        _positionsValid = Math.Min(_positionsValid, lo);
         Array.Copy(_entries, lo, _entries, lo + 1, _count - lo);
         _entries[lo] = new Entry { Outline = branch.Outline, Sign = branch.Sign, GapStart = double.NaN };
         _count++;
@@ -585,6 +634,22 @@ internal sealed class ExactRow
         Piece(xl, il, xr, ir, h, _scene.ColourOf(entry.Hit));
     }
 
+    // BranchX of branch (outline, sign) at height y, remembered per branch for the last height asked (the insertions
+    // at a cut all search the order at the same height).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private double CachedX(Outline[] outlines, int outline, int sign, double y)
+    {
+        int id = (2 * outline) + (sign > 0 ? 1 : 0);
+        if (_xAt[id] != y)
+        {
+            _x[id] = BranchX(outlines[outline], sign, y);
+            _xAt[id] = y;
+        }
+
+        return _x[id];
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double BranchX(Outline o, int sign, double y)
     {
         (double left, double right) = o.At(y);
@@ -630,6 +695,7 @@ internal sealed class ExactRow
         return branches;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static int Compare(Branch p, Branch q) =>
         p.X != q.X ? p.X.CompareTo(q.X) : (p.Outline != q.Outline ? p.Outline.CompareTo(q.Outline) : p.Sign.CompareTo(q.Sign));
 

@@ -77,7 +77,7 @@ internal readonly struct Outline
 
     /// <summary>The left and right branch at height <paramref name="y"/> (clamped into the ellipse's height).</summary>
     /// <param name="y">The height; Hy must be &gt; 0.</param>
-    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public (double Left, double Right) At(double y)
     {
         (double c, double s) = CosSin(y);
@@ -165,6 +165,7 @@ internal readonly struct Outline
     public (double X, double Y) PointAt(double theta) =>
         (Xc + (P * Math.Cos(theta)) + (Q * Math.Sin(theta)), Yc + (Hy * Math.Cos(theta)));
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private (double C, double S) CosSin(double y)
     {
         double u = Math.Clamp(y - Yc, -Hy, Hy);

@@ -211,6 +211,11 @@ internal sealed class OutlineSet
                     continue; // a horizontal segment is a break at its own height already
                 }
 
+                if (ClearlyApart(a, b))
+                {
+                    continue; // no root near the unit circle: the quartic would give none
+                }
+
                 // Walk the smaller ellipse by its angle and substitute it into the larger one's equation.
                 (Outline walk, Outline fixedOne) = a.Hx + a.Hy <= b.Hx + b.Hy ? (a, b) : (b, a);
                 int count = CrossingAngles(walk, fixedOne, thetas);
@@ -246,6 +251,30 @@ internal sealed class OutlineSet
         /// <inheritdoc/>
         public int CompareTo(Crossing other) =>
             Y != other.Y ? Y.CompareTo(other.Y) : First != other.First ? First.CompareTo(other.First) : Second.CompareTo(other.Second);
+    }
+
+    // True when neither ellipse is nearly flat and their extents along the line through their centres leave a gap of
+    // 1 % of their sum: then every point of each lies outside the other by a margin (|L⁻¹ d| ≥ 1.01 for the ellipse
+    // |L⁻¹ d| = 1, as d·u ≤ |L⁻¹ d| |Lᵀ u|) some hundred times what moving θ off the real line by the root test's
+    // 1e-6 can change, so the quartic has no root that CrossingAngles would count and solving it can be skipped
+    // (on the 960-sphere field, a fifth of the pairs whose boxes overlap).
+    private static bool ClearlyApart(Outline a, Outline b)
+    {
+        if (!NotFlat(a) || !NotFlat(b))
+        {
+            return false;
+        }
+
+        // The extent of an ellipse along u (not normalised) is |Lᵀ u| = √((ux P + uy Hy)² + (ux Q)²), times |u|.
+        double ux = b.Xc - a.Xc, uy = b.Yc - a.Yc;
+        double ea = Math.Sqrt(Square((ux * a.P) + (uy * a.Hy)) + Square(ux * a.Q));
+        double eb = Math.Sqrt(Square((ux * b.P) + (uy * b.Hy)) + Square(ux * b.Q));
+        return (ux * ux) + (uy * uy) > 1.01 * (ea + eb);
+
+        // The smaller axis at least 1 % of the larger: λmin/λmax ≥ det Σ/(tr Σ)² ≥ 1e-4, with det Σ = (Q Hy)².
+        static bool NotFlat(Outline o) => Square(o.Q * o.Hy) >= 1e-4 * Square((o.Hx * o.Hx) + (o.Hy * o.Hy));
+
+        static double Square(double v) => v * v;
     }
 
     // The angles θ of `walk` where it meets `fixedOne`, from g(θ) = 0 with g a trigonometric polynomial of degree ≤ 2.
