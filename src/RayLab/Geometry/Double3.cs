@@ -26,7 +26,11 @@ public readonly record struct Double3(double X, double Y, double Z)
     public double Length => Math.Sqrt(LengthSquared);
 
     /// <summary>The squared Euclidean length.</summary>
-    public double LengthSquared => (X * X) + (Y * Y) + (Z * Z);
+    public double LengthSquared
+    {
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        get => (X * X) + (Y * Y) + (Z * Z);
+    }
 
     /// <summary>True when every component is finite (not NaN, not ±∞).</summary>
     public bool IsFinite => double.IsFinite(X) && double.IsFinite(Y) && double.IsFinite(Z);
@@ -35,21 +39,27 @@ public readonly record struct Double3(double X, double Y, double Z)
     public static implicit operator Double3(Vector3 v) => new(v.X, v.Y, v.Z);
 
     /// <summary>Component-wise sum.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Double3 operator +(Double3 a, Double3 b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z);
 
     /// <summary>Component-wise difference.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Double3 operator -(Double3 a, Double3 b) => new(a.X - b.X, a.Y - b.Y, a.Z - b.Z);
 
     /// <summary>Negation.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Double3 operator -(Double3 a) => new(-a.X, -a.Y, -a.Z);
 
     /// <summary>Scales by a scalar.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Double3 operator *(Double3 a, double s) => new(a.X * s, a.Y * s, a.Z * s);
 
     /// <summary>Scales by a scalar (scalar on the left).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Double3 operator *(double s, Double3 a) => new(a.X * s, a.Y * s, a.Z * s);
 
     /// <summary>Divides by a scalar.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Double3 operator /(Double3 a, double s) => new(a.X / s, a.Y / s, a.Z / s);
 
     /// <summary>The dot product.</summary>
