@@ -49,11 +49,12 @@ public static class ZlibLevels
         return image;
     }
 
-    /// <summary>The image's rows with PNG's Up filter (each row's filter byte, then its bytes minus the row above's), cut into the encoder's bands.</summary>
+    /// <summary>The image's rows with PNG's Up filter, cut into the encoder's bands (its own filter and band size).</summary>
     public static byte[][] Bands(Image image)
     {
         int rowBytes = image.Width * 3;
-        int rowsPerBand = Math.Max(1, (1 << 19) / (rowBytes + 1));
+        int rowsPerBand = PngEncoder.RowsPerBand(image.Width);
+        byte[] zeros = new byte[rowBytes]; // the row above the first
         var bands = new List<byte[]>();
         ReadOnlySpan<byte> pixels = image.PixelBytes;
         for (int y0 = 0; y0 < image.Height; y0 += rowsPerBand)
@@ -63,12 +64,8 @@ public static class ZlibLevels
             for (int r = 0; r < rows; r++)
             {
                 int y = y0 + r;
-                Span<byte> output = band.AsSpan(r * (rowBytes + 1), rowBytes + 1);
-                output[0] = 2; // Up
-                for (int x = 0; x < rowBytes; x++)
-                {
-                    output[x + 1] = (byte)(pixels[(y * rowBytes) + x] - (y == 0 ? 0 : pixels[((y - 1) * rowBytes) + x]));
-                }
+                ReadOnlySpan<byte> up = y == 0 ? zeros : pixels.Slice((y - 1) * rowBytes, rowBytes);
+                PngEncoder.Filter(PngFilter.Up, pixels.Slice(y * rowBytes, rowBytes), up, band.AsSpan(r * (rowBytes + 1), rowBytes + 1));
             }
 
             bands.Add(band);

@@ -76,7 +76,7 @@ public static class PngEncoder
         int rowBytes = image.Width * 3;
         int rowsPerBand = RowsPerBand(image.Width);
         int bandCount = (int)(((long)image.Height + rowsPerBand - 1) / rowsPerBand);
-        byte[] zlibHeader = [0x78, ZlibLevelFlags(level)];
+        byte[] zlibHeader = ZlibHeader(zlibLevel);
         var bands = new Band[bandCount];
         if (bandCount == 1 || maxDegreeOfParallelism == 1)
         {
@@ -135,16 +135,18 @@ public static class PngEncoder
     internal static int RowsPerBand(int width) => Math.Max(1, BandBytes / ((width * 3) + 1));
 
     /// <summary>
-    /// The zlib header's second byte (FLG) for a level, as zlib writes it: the level class in the top two bits
-    /// (informative only) and the check bits that make CMF·256 + FLG a multiple of 31.
+    /// The zlib header (CMF, FLG) for a zlib level, as zlib writes it: deflate with a 32 KiB window (0x78), then the
+    /// level's class in FLG's top two bits (0 for levels 0–1, 1 for 2–5, 2 for 6, 3 for 7–9; informative only) and
+    /// the check bits that make CMF·256 + FLG a multiple of 31.
     /// </summary>
-    private static byte ZlibLevelFlags(CompressionLevel level) => level switch
+    private static byte[] ZlibHeader(int zlibLevel)
     {
-        CompressionLevel.NoCompression or CompressionLevel.Fastest => 0x01,
-        CompressionLevel.SmallestSize => 0xDA,
-        CompressionLevel.Optimal => 0x5E,
-        _ => 0x9C,
-    };
+        const int cmf = 0x78;
+        int levelClass = zlibLevel < 2 ? 0 : zlibLevel < 6 ? 1 : zlibLevel == 6 ? 2 : 3;
+        int flags = levelClass << 6;
+        flags += (31 - (((cmf << 8) + flags) % 31)) % 31;
+        return [cmf, (byte)flags];
+    }
 
     /// <summary>The zlib level <paramref name="level"/> stands for here: <see cref="CompressionLevel.Optimal"/> is level 4 (see <see cref="Write"/>).</summary>
     internal static int ZlibLevel(CompressionLevel level) => level switch
@@ -186,10 +188,10 @@ public static class PngEncoder
             int length;
             using (var deflate = new DeflateStream(deflated, new ZLibCompressionOptions { CompressionLevel = zlibLevel }, leaveOpen: true))
             {
+                ReadOnlySpan<byte> pixels = image.PixelBytes;
                 for (int r0 = 0; r0 < rows; r0 += rowsPerChunk)
                 {
                     int count = Math.Min(rowsPerChunk, rows - r0);
-                    ReadOnlySpan<byte> pixels = image.PixelBytes;
                     for (int r = 0; r < count; r++)
                     {
                         int y = y0 + r0 + r;
@@ -281,7 +283,7 @@ public static class PngEncoder
     }
 
     /// <summary>Applies PNG filter <paramref name="type"/> to one row into <paramref name="output"/> (type byte first). One loop per filter type.</summary>
-    private static void Filter(PngFilter type, ReadOnlySpan<byte> row, ReadOnlySpan<byte> up, Span<byte> output)
+    internal static void Filter(PngFilter type, ReadOnlySpan<byte> row, ReadOnlySpan<byte> up, Span<byte> output)
     {
         const int Bpp = 3;
         output[0] = (byte)type;
