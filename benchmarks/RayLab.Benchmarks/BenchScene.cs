@@ -1,4 +1,3 @@
-using RayLab.Cameras;
 using RayLab.Scenes;
 
 namespace RayLab.Benchmarks;
@@ -22,7 +21,7 @@ public static class BenchScene
     /// <summary>The scene with <paramref name="count"/> spheres of radius 0.3 on a jittered grid in front of the camera (deterministic).</summary>
     public static Scene WithSpheres(int count)
     {
-        var spheres = new List<Geometry.Sphere>();
+        var spheres = new List<Sphere>();
         int side = (int)Math.Ceiling(Math.Sqrt(count));
         for (int i = 0; i < count; i++)
         {
@@ -31,7 +30,7 @@ public static class BenchScene
             double x = -2.4 + (4.8 * ((i % side) + 0.5 + (0.3 * jx)) / side);
             double y = -1.6 + (3.2 * ((i / side) + 0.5 + (0.3 * jy)) / side);
             double z = -(i % 3);
-            spheres.Add(new Geometry.Sphere(new Geometry.Double3(x, y, z), 0.35 * 4 / side, new Intensity(0.2 + (0.6 * (i % 2)), 0.8 - (0.6 * (i % 2)), 0.3)));
+            spheres.Add(new Sphere(new Double3(x, y, z), 0.35 * 4 / side, new Intensity(0.2 + (0.6 * (i % 2)), 0.8 - (0.6 * (i % 2)), 0.3)));
         }
 
         return new Scene(spheres, Scene.Background, Scene.Ambient);

@@ -1,9 +1,5 @@
 using BenchmarkDotNet.Attributes;
-using RayLab.Cameras;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
-using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Benchmarks;
 

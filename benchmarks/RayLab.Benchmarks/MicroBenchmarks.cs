@@ -1,8 +1,6 @@
 using BenchmarkDotNet.Attributes;
 using System.Runtime.Intrinsics;
 using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
 

@@ -1,7 +1,6 @@
 using System.IO.Compression;
 using BenchmarkDotNet.Attributes;
 using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
 
 namespace RayLab.Benchmarks;
@@ -22,8 +21,11 @@ public class PngBenchmarks : IDisposable
         GC.SuppressFinalize(this);
     }
 
-    [Params(PngFilter.None, PngFilter.Sub, PngFilter.Up, PngFilter.Paeth, PngFilter.Adaptive)]
-    public PngFilter Filter { get; set; }
+    /// <summary>The row filter, by name (the encoder's filter enum is internal).</summary>
+    [Params(nameof(PngFilter.None), nameof(PngFilter.Sub), nameof(PngFilter.Up), nameof(PngFilter.Paeth), nameof(PngFilter.Adaptive))]
+    public string FilterName { get; set; } = nameof(PngFilter.Up);
+
+    private PngFilter Filter => Enum.Parse<PngFilter>(FilterName);
 
     [Params(CompressionLevel.Fastest, CompressionLevel.Optimal, CompressionLevel.SmallestSize)]
     public CompressionLevel Level { get; set; }

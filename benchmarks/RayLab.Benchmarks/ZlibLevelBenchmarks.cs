@@ -1,7 +1,6 @@
 using System.IO.Compression;
 using BenchmarkDotNet.Attributes;
 using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
 
 namespace RayLab.Benchmarks;

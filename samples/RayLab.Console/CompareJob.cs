@@ -1,8 +1,7 @@
 using System.Globalization;
-using RayLab.Rendering;
+using RayLab.Sampling;
 using RayLab.Comparison;
 using RayLab.Scenes;
-using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Cli;
 

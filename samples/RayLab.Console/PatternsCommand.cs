@@ -1,4 +1,5 @@
 using System.CommandLine;
+using RayLab.Patterns;
 using RayLab.Sampling;
 
 namespace RayLab.Cli;

@@ -2,9 +2,8 @@ using System.CommandLine;
 using System.CommandLine.Help;
 using System.Globalization;
 using System.Runtime.InteropServices;
-using RayLab.Imaging;
+using RayLab.Sampling;
 using RayLab.Scenes;
-using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Cli;
 

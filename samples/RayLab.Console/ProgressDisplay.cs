@@ -1,6 +1,5 @@
 using System.Diagnostics;
 using System.Globalization;
-using RayLab.Rendering;
 using Spectre.Console;
 using Spectre.Console.Rendering;
 

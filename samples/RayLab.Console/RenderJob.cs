@@ -3,7 +3,6 @@ using System.Globalization;
 using System.Runtime.CompilerServices;
 using System.Text.Json;
 using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Scenes;
 
 namespace RayLab.Cli;

@@ -1,5 +1,3 @@
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Rendering.Exact;
 using RayLab.Sampling;
 using RayLab.Scenes;

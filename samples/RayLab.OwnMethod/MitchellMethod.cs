@@ -1,4 +1,3 @@
-using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 
 namespace RayLab.OwnMethod;

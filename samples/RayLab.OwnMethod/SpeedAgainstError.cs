@@ -1,5 +1,4 @@
 using RayLab.Comparison;
-using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Scenes;
 

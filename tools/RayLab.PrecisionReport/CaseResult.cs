@@ -18,7 +18,7 @@ public sealed record CaseResult(
     HardCase Case, int Pixels, int ExactHits, int NaiveFloatWrong, int RtgFloatWrong, IReadOnlyList<KernelRun> RayLab, int DoubleWrong,
     double NaiveFloatError, double RtgFloatError, double DoubleError, double AccurateError, double DoubleErrorUlps, double AccurateErrorUlps)
 {
-    /// <summary>Wrong pixels of the image users get (<see cref="Rendering.RenderKernel.Auto"/>).</summary>
+    /// <summary>Wrong pixels of the image users get (<see cref="RayLab.RenderKernel.Auto"/>).</summary>
     public int RayLabWrong => RayLab[0].Wrong;
 
     /// <summary>The most wrong pixels over every kernel setting.</summary>

@@ -1,4 +1,3 @@
-using RayLab.Geometry;
 
 namespace RayLab.PrecisionReport;
 

@@ -1,5 +1,3 @@
-using RayLab.Cameras;
-using RayLab.Geometry;
 
 namespace RayLab.PrecisionReport;
 

@@ -2,8 +2,6 @@ using System.Globalization;
 using System.Text;
 using RayLab.Cameras;
 using RayLab.Geometry;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
 
 namespace RayLab.PrecisionReport;

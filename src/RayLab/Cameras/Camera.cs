@@ -1,6 +1,6 @@
-using RayLab.Geometry;
+using RayLab.Cameras;
 
-namespace RayLab.Cameras;
+namespace RayLab;
 
 /// <summary>
 /// The lab's abstract camera (section 3): <see cref="Position"/>, <see cref="Target"/>, <see cref="Up"/>,

@@ -1,4 +1,3 @@
-using RayLab.Geometry;
 using RayLab.Rendering.Point.Packets;
 
 namespace RayLab.Cameras;

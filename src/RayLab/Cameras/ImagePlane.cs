@@ -1,5 +1,4 @@
 using System.Runtime.CompilerServices;
-using RayLab.Geometry;
 
 namespace RayLab.Cameras;
 

@@ -1,6 +1,6 @@
-using RayLab.Geometry;
+using RayLab.Cameras;
 
-namespace RayLab.Cameras;
+namespace RayLab;
 
 /// <summary>
 /// The lab's orthographic camera (section 3.1): parallel rays along the gaze, one per sample, starting on the
@@ -44,7 +44,7 @@ public sealed record OrthoCamera : Camera
             throw new ArgumentException($"ViewHeight {ViewHeight} × W/H overflows: the window would be infinite.", nameof(ViewHeight));
         }
 
-        return Cameras.Window.Centered(ViewHeight * aspectRatio, ViewHeight);
+        return RayLab.Window.Centered(ViewHeight * aspectRatio, ViewHeight);
     }
 
     /// <summary>The plane with the orthographic projection (<see cref="OrthographicProjection"/>); its distance s is 1 (unused).</summary>

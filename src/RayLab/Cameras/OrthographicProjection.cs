@@ -1,5 +1,4 @@
 using System.Runtime.CompilerServices;
-using RayLab.Geometry;
 using RayLab.Rendering.Point.Packets;
 
 namespace RayLab.Cameras;

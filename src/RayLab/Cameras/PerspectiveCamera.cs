@@ -1,6 +1,6 @@
-using RayLab.Geometry;
+using RayLab.Cameras;
 
-namespace RayLab.Cameras;
+namespace RayLab;
 
 /// <summary>
 /// The lab's perspective camera (section 3.2): rays from the eye e through the window on a plane at distance

@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace RayLab.Cameras;
+namespace RayLab;
 
 /// <summary>
 /// The window on the projection plane, in the plane's (u, v) coordinates: the lab's corners

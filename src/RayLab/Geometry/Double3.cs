@@ -2,7 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
-namespace RayLab.Geometry;
+namespace RayLab;
 
 /// <summary>
 /// A point or direction in 3-D with <see cref="double"/> components: the lab's point/vector type from lab I.

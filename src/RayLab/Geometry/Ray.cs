@@ -1,4 +1,4 @@
-namespace RayLab.Geometry;
+namespace RayLab;
 
 /// <summary>
 /// A ray <c>r(t) = Origin + t · Direction</c> (the lab's ray from lab I). The direction need not have

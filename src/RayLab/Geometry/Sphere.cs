@@ -1,4 +1,4 @@
-namespace RayLab.Geometry;
+namespace RayLab;
 
 /// <summary>A sphere with a flat colour (the lab's sphere from lab I, plus the colour this lab shows it in).</summary>
 public sealed class Sphere

@@ -3,7 +3,7 @@ using System.Buffers.Binary;
 namespace RayLab.Imaging;
 
 /// <summary>Writes 24-bit uncompressed BMP (BITMAPINFOHEADER, bottom-up rows, BGR, rows padded to 4 bytes).</summary>
-public static class BmpEncoder
+internal static class BmpEncoder
 {
     private const int HeaderSize = 14 + 40;
 

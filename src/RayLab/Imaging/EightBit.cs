@@ -3,7 +3,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Rendering.Point.Packets;
 
-namespace RayLab.Imaging;
+namespace RayLab;
 
 /// <summary>
 /// The lab's 8-bit rule (section 2.2), the one place for it: a component I becomes the level

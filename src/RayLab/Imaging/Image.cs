@@ -1,6 +1,7 @@
+using RayLab.Imaging;
 using System.Runtime.InteropServices;
 
-namespace RayLab.Imaging;
+namespace RayLab;
 
 /// <summary>
 /// The lab's image ("obraz", section 2.2): W×H pixels of 8-bit RGB, kept as tightly packed RGB24 rows, top
@@ -40,7 +41,7 @@ public sealed class Image
     /// <see cref="MaxBytes"/> (it names <c>size</c>).
     /// </exception>
     [System.Diagnostics.CodeAnalysis.SuppressMessage("Usage", "CA2208:Instantiate argument exceptions correctly", Justification = "Width and height are each valid; their product, the image's size, is too large.")]
-    public static void CheckSize(int width, int height)
+    internal static void CheckSize(int width, int height)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
         ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
@@ -96,7 +97,10 @@ public sealed class Image
     /// <param name="path">The output path.</param>
     /// <param name="quality">JPEG/WebP quality, 0–100 (90 by default; higher keeps more detail in a larger file).</param>
     /// <exception cref="ArgumentOutOfRangeException">The quality is outside 0–100.</exception>
-    /// <exception cref="NotSupportedException">The extension is not a supported format (the message names them).</exception>
+    /// <exception cref="NotSupportedException">
+    /// The extension is not a supported format (the message names them), or it is <c>.webp</c> and the app does not
+    /// reference <c>RayLab.Reports</c> (the message names the package).
+    /// </exception>
     /// <exception cref="DirectoryNotFoundException">The folder does not exist (the message names it).</exception>
     /// <exception cref="IOException">The folder cannot be written.</exception>
     public void Save(string path, int quality)
@@ -104,6 +108,11 @@ public sealed class Image
         ArgumentException.ThrowIfNullOrWhiteSpace(path);
         CheckQuality(quality);
         ImageFormat format = ImageFormat.FromPath(path);
+        if (format == ImageFormat.Webp)
+        {
+            _ = ImageEncoders.Get(format); // the package error before any file is made
+        }
+
         string full = Path.GetFullPath(path);
         string folder = Path.GetDirectoryName(full) ?? ".";
         if (!Directory.Exists(folder))
@@ -143,6 +152,7 @@ public sealed class Image
     /// <param name="format">The format.</param>
     /// <param name="quality">JPEG/WebP quality, 0–100; PNG and BMP ignore it.</param>
     /// <exception cref="ArgumentOutOfRangeException">The format is unknown or the quality is outside 0–100.</exception>
+    /// <exception cref="NotSupportedException">The format is WebP and the app does not reference <c>RayLab.Reports</c> (the message names it).</exception>
     public void Save(Stream stream, ImageFormat format, int quality)
     {
         ArgumentNullException.ThrowIfNull(stream);
@@ -157,7 +167,7 @@ public sealed class Image
                 break;
             case ImageFormat.Jpeg:
             case ImageFormat.Webp:
-                SkiaEncoder.Write(stream, this, format, quality);
+                ImageEncoders.Get(format)(stream, this, quality);
                 break;
             default:
                 throw new ArgumentOutOfRangeException(nameof(format), format, "Unknown image format.");

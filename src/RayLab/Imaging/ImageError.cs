@@ -1,4 +1,4 @@
-namespace RayLab.Imaging;
+namespace RayLab;
 
 /// <summary>
 /// How far an image is from the exact image, in 8-bit levels. The error of one channel of one pixel is its
@@ -50,7 +50,7 @@ public readonly record struct ImageError(double Rmse, double MeanAbsolute, int M
 
     /// <summary>
     /// The error image: for each pixel, the largest absolute per-channel error in levels, W·H, row 0 first
-    /// (draw it with <see cref="HeatMap"/>).
+    /// (the <c>RayLab.Reports</c> package draws it as a heat map).
     /// </summary>
     /// <param name="image">The image to judge.</param>
     /// <param name="exact">The exact image, of the same size.</param>

@@ -1,4 +1,4 @@
-namespace RayLab.Imaging;
+namespace RayLab;
 
 /// <summary>
 /// The file formats RayLab writes (the lab's "zapis obrazu"). PNG and BMP are written by RayLab's own encoders;

@@ -18,7 +18,7 @@ namespace RayLab.Imaging;
 /// Each band is written as one IDAT chunk. The bands depend only on the image's width, so the file is the same bytes
 /// whatever the thread count.
 /// </summary>
-public static class PngEncoder
+internal static class PngEncoder
 {
     /// <summary>
     /// About how many filtered bytes one band holds (whole rows, at least one): 512 KiB, 12 bands for a 1920×1080

@@ -5,7 +5,7 @@ namespace RayLab.Imaging;
 /// sees small numbers. <see cref="Adaptive"/> tries the five on every row and keeps the one whose bytes have
 /// the smallest sum as signed numbers.
 /// </summary>
-public enum PngFilter
+internal enum PngFilter
 {
     /// <summary>Bytes as they are.</summary>
     None = 0,

@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 
-namespace RayLab.Imaging;
+namespace RayLab;
 
 /// <summary>One 8-bit-per-channel pixel, laid out R, G, B in 3 bytes (ImageSharp's <c>Rgb24</c> layout).</summary>
 /// <param name="R">Red level.</param>

@@ -1,4 +1,4 @@
-namespace RayLab.Rendering;
+namespace RayLab;
 
 /// <summary>Which loop renders the pixels of a point-sampled image (see <see cref="Renderer.Kernel"/>).</summary>
 public enum RenderKernel

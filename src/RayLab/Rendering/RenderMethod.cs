@@ -1,12 +1,12 @@
+using RayLab.Rendering;
 using RayLab.Cameras;
-using RayLab.Imaging;
 using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
 using RayLab.Rendering.PixelMethods;
 using RayLab.Rendering.Point;
 using RayLab.Sampling;
 
-namespace RayLab.Rendering;
+namespace RayLab;
 
 /// <summary>
 /// How a pixel's value is found — the one choice between RayLab's renderers, made here and nowhere else:

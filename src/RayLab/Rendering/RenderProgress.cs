@@ -1,4 +1,4 @@
-namespace RayLab.Rendering;
+namespace RayLab;
 
 /// <summary>
 /// How far a render has got, for a progress bar: the renderer counts finished rows, and anyone may read the

@@ -1,4 +1,4 @@
-namespace RayLab.Rendering;
+namespace RayLab;
 
 /// <summary>What a render did: primary rays traced and the time spent rendering (not loading or encoding).</summary>
 /// <param name="PrimaryRays">Primary rays traced.</param>

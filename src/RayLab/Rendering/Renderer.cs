@@ -1,10 +1,9 @@
+using RayLab.Rendering;
 using RayLab.Cameras;
-using RayLab.Imaging;
-using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Point;
 using RayLab.Sampling;
 
-namespace RayLab.Rendering;
+namespace RayLab;
 
 /// <summary>
 /// Renders a scene through a camera into an image (the lab's render loop): the front door to RayLab's three

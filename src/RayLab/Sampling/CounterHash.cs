@@ -10,7 +10,7 @@ namespace RayLab.Sampling;
 /// The mixer is Chris Wellons' <c>lowbias32</c>, the one the native anchors in <c>shared/anchors</c> use:
 /// two rounds of xor-shift and multiply, a bijection on 32-bit integers.
 /// </remarks>
-public static class CounterHash
+internal static class CounterHash
 {
     /// <summary>The golden-ratio increment that spreads sample indices before hashing.</summary>
     public const uint Golden = 0x9e3779b9u;

@@ -1,5 +1,3 @@
-using RayLab.Rendering;
-using RayLab.Rendering.Adaptive;
 using RayLab.Sampling;
 
 namespace RayLab.Scenes;

@@ -1,6 +1,3 @@
-using RayLab.Cameras;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Rendering.Exact;
 
 namespace RayLab.Scenes;

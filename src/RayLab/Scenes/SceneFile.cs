@@ -1,6 +1,4 @@
 using System.Text.Json;
-using RayLab.Cameras;
-using RayLab.Geometry;
 
 namespace RayLab.Scenes;
 

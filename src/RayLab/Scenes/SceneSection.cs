@@ -16,7 +16,7 @@ internal sealed class SceneSection(string path, IReadOnlyList<string> fields, Fu
     /// <summary>The top-level fields of a scene file.</summary>
     public static IReadOnlyList<string> RootFields { get; } = ["image", "background", "ambient", "camera", "spheres", "sampler", "acceleration"];
 
-    /// <summary>The <c>image</c> object: <see cref="Imaging.Image.CheckSize"/> names <c>width</c> and <c>height</c>.</summary>
+    /// <summary>The <c>image</c> object: <see cref="RayLab.Image.CheckSize"/> names <c>width</c> and <c>height</c>.</summary>
     public static SceneSection Image { get; } = new("image", ["width", "height"]);
 
     /// <summary>The <c>camera</c> object, whose errors name camera properties (<see cref="CameraSettings.FieldOf"/>).</summary>

@@ -1,7 +1,4 @@
 using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Scenes;
 using RayLab.Tests.Imaging;
 

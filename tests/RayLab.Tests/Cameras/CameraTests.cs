@@ -1,8 +1,5 @@
 using System.Numerics;
 using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
 
 namespace RayLab.Tests.Cameras;

@@ -1,5 +1,4 @@
 using RayLab.Cameras;
-using RayLab.Geometry;
 using RayLab.Rendering.Point.Packets;
 
 namespace RayLab.Tests.Cameras;

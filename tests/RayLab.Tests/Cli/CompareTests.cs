@@ -3,8 +3,6 @@ using System.Text.RegularExpressions;
 using System.Xml.Linq;
 using RayLab.Cli;
 using RayLab.Comparison;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Tests.Imaging;

@@ -1,7 +1,6 @@
 using System.Buffers.Binary;
 using System.Text.Json;
 using RayLab.Cli;
-using RayLab.Imaging;
 
 namespace RayLab.Tests.Cli;
 

@@ -1,6 +1,5 @@
 using System.Text.Json;
 using RayLab.Cli;
-using RayLab.Imaging;
 using RayLab.Scenes;
 using RayLab.Tests.Imaging;
 using RayLab.Rendering.Exact;

@@ -1,7 +1,7 @@
 using System.Globalization;
+using RayLab.Sampling;
 using RayLab.Cli;
 using RayLab.Scenes;
-using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Tests.Cli;
 

@@ -1,6 +1,5 @@
 using RayLab.Cli;
 using System.Text.Json;
-using RayLab.Imaging;
 
 namespace RayLab.Tests.Cli;
 

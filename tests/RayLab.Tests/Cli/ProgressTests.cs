@@ -1,7 +1,5 @@
 using System.Text.RegularExpressions;
 using RayLab.Cli;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Scenes;
 using Spectre.Console;
 

@@ -1,8 +1,5 @@
 using RayLab.Comparison;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
-using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Tests.Comparison;
 

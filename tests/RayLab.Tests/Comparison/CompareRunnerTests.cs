@@ -1,7 +1,5 @@
 using RayLab.Comparison;
 using RayLab.OwnMethod;
-using RayLab.Rendering;
-using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 using RayLab.Scenes;
 

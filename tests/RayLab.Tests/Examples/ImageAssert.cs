@@ -2,7 +2,6 @@
 // package (see the README's quick start, "Tests"). ImageAssert needs only RayLab: it throws ImageAssertException,
 // which any test framework reports as a failure with its message.
 using System.Globalization;
-using RayLab.Imaging;
 
 namespace RayLab.Tests.Examples;
 

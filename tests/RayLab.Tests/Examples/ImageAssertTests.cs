@@ -1,5 +1,4 @@
 // Tests of the ImageAssert helper itself: it passes when it should and, when it fails, says where and by how much.
-using RayLab.Imaging;
 
 namespace RayLab.Tests.Examples;
 

@@ -2,10 +2,6 @@
 // package; the README's quick start ("Tests") shows the project file. These tests use only RayLab's public API and
 // ImageAssert from this folder: render a small scene in memory, then assert on pixels, on the rays traced and on
 // the difference from another render. Run them here with: dotnet test --filter "FullyQualifiedName~Examples"
-using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Rendering.Exact;

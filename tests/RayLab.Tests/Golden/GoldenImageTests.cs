@@ -1,10 +1,5 @@
 using System.Security.Cryptography;
-using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
-using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Golden;

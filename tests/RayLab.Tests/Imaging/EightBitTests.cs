@@ -1,4 +1,3 @@
-using RayLab.Imaging;
 using RayLab.Rendering.Point.Packets;
 
 namespace RayLab.Tests.Imaging;

@@ -1,5 +1,4 @@
 using System.Runtime.CompilerServices;
-using RayLab.Imaging;
 
 namespace RayLab.Tests.Imaging;
 

@@ -1,4 +1,3 @@
-using RayLab.Imaging;
 
 namespace RayLab.Tests.Imaging;
 

@@ -1,7 +1,6 @@
 using RayLab.Cli;
 using RayLab.Comparison;
 using RayLab.OwnMethod;
-using RayLab.Rendering;
 
 namespace RayLab.Tests.OwnMethod;
 

@@ -1,6 +1,4 @@
-using RayLab.Imaging;
 using RayLab.OwnMethod;
-using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Scenes;
 

@@ -1,6 +1,4 @@
-using RayLab.Imaging;
-using RayLab.Patterns;
-using RayLab.Rendering;
+using RayLab.Sampling;
 using RayLab.Rendering.Adaptive;
 using RayLab.Scenes;
 

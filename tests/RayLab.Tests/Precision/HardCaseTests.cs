@@ -1,5 +1,4 @@
 using RayLab.Cameras;
-using RayLab.Geometry;
 using RayLab.PrecisionReport;
 
 namespace RayLab.Tests.Precision;

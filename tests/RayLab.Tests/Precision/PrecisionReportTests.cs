@@ -1,5 +1,4 @@
 using RayLab.PrecisionReport;
-using RayLab.Rendering;
 using RayLab.Tests.Imaging;
 
 namespace RayLab.Tests.Precision;

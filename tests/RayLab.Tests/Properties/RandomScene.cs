@@ -1,10 +1,7 @@
 using System.Globalization;
 using FsCheck;
 using FsCheck.Fluent;
-using RayLab.Cameras;
-using RayLab.Geometry;
 using RayLab.Sampling;
-using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Tests.Properties;
 

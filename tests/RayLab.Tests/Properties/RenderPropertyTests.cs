@@ -1,6 +1,4 @@
 using RayLab.Cameras;
-using RayLab.Imaging;
-using RayLab.Rendering;
 
 namespace RayLab.Tests.Properties;
 

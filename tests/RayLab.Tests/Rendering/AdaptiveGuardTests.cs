@@ -1,8 +1,5 @@
+using RayLab.Sampling;
 using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
-using RayLab.Rendering;
-using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering;

@@ -1,8 +1,3 @@
-using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
-using RayLab.Rendering;
-using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
 using RayLab.Sampling;
 

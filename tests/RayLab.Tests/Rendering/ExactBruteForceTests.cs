@@ -1,6 +1,4 @@
 using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Rendering;
 using RayLab.Sampling;
 using RayLab.Rendering.Exact;
 

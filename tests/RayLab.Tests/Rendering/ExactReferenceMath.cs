@@ -1,5 +1,4 @@
 using RayLab.Cameras;
-using RayLab.Geometry;
 
 namespace RayLab.Tests.Rendering;
 

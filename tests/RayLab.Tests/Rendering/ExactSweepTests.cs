@@ -1,5 +1,3 @@
-using RayLab.Cameras;
-using RayLab.Geometry;
 using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering;

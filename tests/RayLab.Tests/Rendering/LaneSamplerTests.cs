@@ -1,7 +1,3 @@
-using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
 

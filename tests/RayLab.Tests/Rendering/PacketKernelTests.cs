@@ -1,9 +1,4 @@
-using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
-using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering;

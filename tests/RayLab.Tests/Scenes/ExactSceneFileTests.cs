@@ -1,5 +1,3 @@
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Scenes;
 using RayLab.Rendering.Exact;
 

@@ -1,4 +1,3 @@
-using RayLab.Geometry;
 using RayLab.Scenes;
 
 namespace RayLab.Tests.Scenes;
@@ -169,7 +168,7 @@ public sealed class SceneFileTests : IDisposable
     {
         string json = Mutate(Base, "\"distance\": 1", "\"distance\": 1, \"window\": [-0.25, -0.2, 0.55, 0.3]");
 
-        Assert.Equal(new RayLab.Cameras.Window(-0.25, -0.2, 0.55, 0.3), SceneFile.Parse(json, Source).Camera.Window);
+        Assert.Equal(new Window(-0.25, -0.2, 0.55, 0.3), SceneFile.Parse(json, Source).Camera.Window);
     }
 
     [Theory]

@@ -1,6 +1,4 @@
 using System.Reflection;
-using RayLab.Cameras;
-using RayLab.Rendering.Adaptive;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -48,7 +46,7 @@ public sealed class SceneSectionTests
     [Fact]
     public void TheSphereConstructorsParametersMapToSphereFields()
     {
-        foreach (ParameterInfo parameter in typeof(RayLab.Geometry.Sphere).GetConstructors().SelectMany(c => c.GetParameters()))
+        foreach (ParameterInfo parameter in typeof(Sphere).GetConstructors().SelectMany(c => c.GetParameters()))
         {
             Assert.Equal($"spheres[2].{parameter.Name}", SceneSection.Sphere(2).FieldOf(parameter.Name));
         }

@@ -1,6 +1,6 @@
+using RayLab.Sampling;
 using System.Collections.Concurrent;
 using RayLab.Cameras;
-using RayLab.Imaging;
 using RayLab.Rendering.Point;
 using RayLab.Rendering.Point.Packets;
 

@@ -1,3 +1,4 @@
+using RayLab.Sampling;
 
 namespace RayLab.Rendering.Adaptive;
 

@@ -1,6 +1,6 @@
+using RayLab.Sampling;
 using System.Diagnostics;
 using RayLab.Cameras;
-using RayLab.Imaging;
 
 namespace RayLab.Rendering.Adaptive;
 

@@ -1,11 +1,11 @@
 using System.Globalization;
 
-namespace RayLab.Rendering.Adaptive;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// The lab's adaptive antialiasing (section 4, after mental ray): trace the four corners of a pixel, and where
 /// they disagree by more than <see cref="Contrast"/> its centre too (the quincunx), subdividing where the values
-/// disagree, down to <see cref="MaxDepth"/>. Rendered by <see cref="Rendering.Renderer.Render(Scene, Cameras.Camera, AdaptiveSampler, Imaging.Image, float[])"/>.
+/// disagree, down to <see cref="MaxDepth"/>. Rendered by <see cref="RayLab.Renderer.Render(Scene, RayLab.Camera, AdaptiveSampler, RayLab.Image, float[])"/>.
 /// </summary>
 /// <remarks>
 /// <para>The rule, for a square at depth d (the pixel is depth 0) with corners c₁…c₄ and centre X: quadrant q

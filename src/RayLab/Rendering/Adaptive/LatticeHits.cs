@@ -1,7 +1,6 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Cameras;
-using RayLab.Geometry;
 using RayLab.Rendering.Point.Packets;
 
 namespace RayLab.Rendering.Adaptive;

@@ -1,5 +1,5 @@
 using RayLab.Cameras;
-using RayLab.Geometry;
+using RayLab.Sampling;
 
 namespace RayLab.Rendering.Adaptive;
 

@@ -1,7 +1,6 @@
 using System.Diagnostics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
-using RayLab.Imaging;
 
 namespace RayLab.Rendering.Exact;
 

@@ -1,6 +1,5 @@
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
-using RayLab.Geometry;
 
 namespace RayLab.Rendering.Exact;
 

@@ -1,4 +1,5 @@
-namespace RayLab.Rendering.Exact;
+using RayLab.Rendering.Exact;
+namespace RayLab;
 
 /// <summary>
 /// The exact reference (<see cref="ExactRenderer"/>) cannot draw this scene exactly, and says which sphere and

@@ -1,4 +1,4 @@
-namespace RayLab.Rendering.PixelMethods;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// "A method of your own" (the lab's section 5) for deciding a pixel's value: the renderer hands the method each

@@ -1,7 +1,7 @@
+using RayLab.Sampling;
 using System.Diagnostics;
 using System.Runtime.ExceptionServices;
 using RayLab.Cameras;
-using RayLab.Imaging;
 
 namespace RayLab.Rendering.PixelMethods;
 

@@ -1,7 +1,5 @@
 using System.Diagnostics;
 using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
 

@@ -2,7 +2,6 @@ using System.Buffers;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
-using RayLab.Imaging;
 
 namespace RayLab.Rendering.Point.Packets;
 

@@ -1,8 +1,6 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
-using RayLab.Geometry;
-using RayLab.Imaging;
 
 namespace RayLab.Rendering.Point.Packets;
 

@@ -1,5 +1,3 @@
-using RayLab.Imaging;
-using RayLab.Rendering;
 
 namespace RayLab.Comparison;
 

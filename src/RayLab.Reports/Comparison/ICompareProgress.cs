@@ -1,4 +1,3 @@
-using RayLab.Rendering;
 
 namespace RayLab.Comparison;
 

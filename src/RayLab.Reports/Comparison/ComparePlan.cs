@@ -1,4 +1,3 @@
-using RayLab.Rendering.Adaptive;
 using RayLab.Sampling;
 
 namespace RayLab.Comparison;

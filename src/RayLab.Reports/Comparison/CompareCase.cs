@@ -1,8 +1,4 @@
-using RayLab.Cameras;
-using RayLab.Imaging;
-using RayLab.Rendering;
 using RayLab.Sampling;
-using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Comparison;
 

@@ -1,8 +1,8 @@
+using RayLab.Sampling;
 using RayLab.Cameras;
-using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
 
-namespace RayLab.Patterns;
+namespace RayLab.Rendering.Adaptive;
 
 /// <summary>A point the lab's adaptive recursion traced in one pixel, labelled as the lab labels them.</summary>
 /// <param name="Label">A, B, C, D (the corners), E (the centre), then F, G, H, J, … in trace order (the lab skips I and O).</param>
@@ -66,14 +66,14 @@ public sealed class AdaptiveDiagram
     /// <param name="height">The render's H.</param>
     /// <param name="resolution">Points per side, 1 to 4096.</param>
     /// <returns>A <paramref name="resolution"/>² image of the pixel.</returns>
-    public Imaging.Image TraceInside(Scene scene, Camera camera, int width, int height, int resolution)
+    public Image TraceInside(Scene scene, Camera camera, int width, int height, int resolution)
     {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
         ArgumentOutOfRangeException.ThrowIfLessThan(resolution, 1);
         ArgumentOutOfRangeException.ThrowIfGreaterThan(resolution, 4096);
         ImagePlane plane = camera.GetImagePlane(width, height);
-        var image = new Imaging.Image(resolution, resolution);
+        var image = new Image(resolution, resolution);
         for (int j = 0; j < resolution; j++)
         {
             for (int i = 0; i < resolution; i++)

@@ -1,7 +1,5 @@
 using System.Globalization;
-using RayLab.Cameras;
 using RayLab.Imaging;
-using RayLab.Rendering;
 
 namespace RayLab.Comparison;
 

@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Cli;
+namespace RayLab.Patterns;
 
 /// <summary>A sampler for <c>raylab patterns</c>: its name and how to make it with N samples per pixel.</summary>
 /// <param name="Name">The name in file names, legends and tables (letters, digits, '-').</param>
@@ -30,5 +30,5 @@ public sealed record PatternsRequest(
     uint Seed = 1,
     int SpectrumSamples = 64,
     int SpectrumRealisations = 1024,
-    RayLab.Patterns.PatternMeasureOptions? Measures = null,
+    PatternMeasureOptions? Measures = null,
     string Command = "raylab patterns");
