@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""RayLab against the native C++ anchors (benchmarks/anchors), in one sitting.
+"""RayLab against the native C++ anchors (benchmarks/anchors), in one run.
 
 Renders benchmarks/anchors/bench-1080.json (the two-sphere scene at 1920x1080) with jittered 16 spp on 2 threads
 through `raylab render --stats` (renderMs: the render loop only, after a warm-up render; see README) and with

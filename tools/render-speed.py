@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Every render method's speed on benchmarks/anchors/bench-1080.json, in one sitting, as ratios to jittered.
+"""Every render method's speed on benchmarks/anchors/bench-1080.json, in one run, as ratios to jittered.
 
 Runs `raylab render bench-1080.json --threads 2 --stats` (renderMs: the render loop only, after a warm-up render)
 for each row below, ROUNDS times, the rows interleaved round by round so that load drifts touch them alike, and

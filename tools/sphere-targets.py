@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue #20's targets in one sitting: renderMs of this build against another, runs alternating (the order swapped
+"""The sphere-count targets in one run: renderMs of this build against another, runs alternating (the order swapped
 every pair), medians and the paired ratio.
 
 Scenes: the 960-sphere field (`tools/sphere-scenes.py field 24 40`), 10 000 random spheres (`random 10000`) and

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Whole-command wall times of raylab, the JIT build against the native (Native AOT) build, interleaved.
 
-For each of the issue's four commands — `raylab --help`, an 8×8 render, the exact reference at 1080p and jittered
+For each of four commands — `raylab --help`, an 8×8 render, the exact reference at 1080p and jittered
 16 spp at 1080p (benchmarks/anchors/bench-1080.json, 2 threads) — runs every build once per round, ROUNDS rounds
 (builds and commands interleaved, so that load drifts touch them alike), and prints a Markdown table of medians:
 wall time of the whole process (start to exit, as a user waits for it), and for the 1080p renders renderMs (the
