@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""RayLab against the native C++ anchors (shared/anchors), in one sitting.
+"""RayLab against the native C++ anchors (benchmarks/anchors), in one run.
 
-Renders shared/anchors/bench-1080.json (the two-sphere scene at 1920x1080) with jittered 16 spp on 2 threads
+Renders benchmarks/anchors/bench-1080.json (the two-sphere scene at 1920x1080) with jittered 16 spp on 2 threads
 through `raylab render --stats` (renderMs: the render loop only, after a warm-up render; see README) and with
 each anchor mode (`native.py ... 4 2 MODE`, render only), alternating, ROUNDS times; prints a Markdown table of
 medians and ratios. Also the lab's adaptive sampler at its defaults, and any extra rows given as raylab options.
@@ -10,13 +10,13 @@ Also an AVX2-only machine, emulated on this one: RayLab with DOTNET_EnableAVX512
 instruction and `auto` picks the 8-lane kernel) against `avx2v` built with -march=x86-64-v3 (AVX2 + FMA, no AVX-512:
 a copy of native.py and native_ref.cpp in a temporary folder with only that flag changed).
 
-Usage: python3 tools/bench-anchors.py [ROUNDS]     (default 7; needs ../shared beside the repository)
+Usage: python3 tools/bench-anchors.py [ROUNDS]     (default 7)
 """
 import json, os, shutil, statistics, subprocess, sys, tempfile
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-shared = os.path.join(os.path.dirname(root), "shared", "anchors")
-scene = os.path.join(shared, "bench-1080.json")
+anchor_dir = os.path.join(root, "benchmarks", "anchors")
+scene = os.path.join(anchor_dir, "bench-1080.json")
 rounds = int(sys.argv[1]) if len(sys.argv) > 1 else 7
 subprocess.run(["dotnet", "build", os.path.join(root, "samples", "RayLab.Console"), "-c", "Release", "-v", "q", "-nologo"],
                check=True, stdout=subprocess.DEVNULL)
@@ -37,8 +37,8 @@ environments = {avx2_only: {"DOTNET_EnableAVX512": "0"}}
 # The avx2v anchor as a compiler targeting an AVX2-only CPU builds it.
 v3 = os.path.join(tmp, "anchor-x86-64-v3")
 os.makedirs(v3)
-shutil.copy2(os.path.join(shared, "native_ref.cpp"), v3)  # keeps its time, so native.py compiles it once, not per run
-native = open(os.path.join(shared, "native.py")).read()
+shutil.copy2(os.path.join(anchor_dir, "native_ref.cpp"), v3)  # keeps its time, so native.py compiles it once, not per run
+native = open(os.path.join(anchor_dir, "native.py")).read()
 assert '"-march=native"' in native and '"raylab_native_anchor"' in native, "native.py changed: update bench-anchors.py"
 with open(os.path.join(v3, "native.py"), "w") as f:
     f.write(native.replace('"-march=native"', '"-march=x86-64-v3"').replace('"raylab_native_anchor"', '"raylab_native_anchor_x86_64_v3"'))
@@ -55,7 +55,7 @@ def run_ours(label, options):
     times[label].append(s["renderMs"])
     extra[label] = s
 
-def run_anchor(mode, label=None, folder=shared):
+def run_anchor(mode, label=None, folder=anchor_dir):
     label = label or mode
     out = subprocess.run(["python3", os.path.join(folder, "native.py"), scene, "4", "2", mode], capture_output=True, text=True)
     line = json.loads(out.stdout.strip().splitlines()[-1])

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Every render method's speed on shared/anchors/bench-1080.json, in one sitting, as ratios to jittered.
+"""Every render method's speed on benchmarks/anchors/bench-1080.json, in one run, as ratios to jittered.
 
 Runs `raylab render bench-1080.json --threads 2 --stats` (renderMs: the render loop only, after a warm-up render)
 for each row below, ROUNDS times, the rows interleaved round by round so that load drifts touch them alike, and
@@ -8,12 +8,12 @@ row's (for a point sampler: its samples per second as a fraction of jittered's; 
 faster than jittered 16 spp). With --before DIR, also renders jittered 16 and exact with the raylab.dll built in
 DIR (another checkout's samples/RayLab.Console/bin/Release/net10.0) in the same rounds, for a before/after check.
 
-Usage: python3 tools/render-speed.py [ROUNDS] [--samples 16,256] [--before DIR]   (needs ../shared beside the repository)
+Usage: python3 tools/render-speed.py [ROUNDS] [--samples 16,256] [--before DIR]
 """
 import argparse, json, os, statistics, subprocess, tempfile
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-scene = os.path.join(os.path.dirname(root), "shared", "anchors", "bench-1080.json")
+scene = os.path.join(root, "benchmarks", "anchors", "bench-1080.json")
 parser = argparse.ArgumentParser()
 parser.add_argument("rounds", nargs="?", type=int, default=5)
 parser.add_argument("--samples", default="16,256")

@@ -43,13 +43,11 @@ def spheres(n):
         out.append({"center": [x, y, -(i % 3)], "radius": 0.35 * 4 / side, "color": [0.2 + 0.6 * (i % 2), 0.8 - 0.6 * (i % 2), 0.3]})
     return out
 
-shared = os.path.join(os.path.dirname(root), "shared", "anchors")
+anchor_dir = os.path.join(root, "benchmarks", "anchors")
 
 def anchor_ms():
-    """The C++ avx512 anchor on bench-1080.json, as a yardstick of how quiet the machine was (None without it)."""
-    if not os.path.isdir(shared):
-        return None
-    out = subprocess.run(["python3", os.path.join(shared, "native.py"), os.path.join(shared, "bench-1080.json"), "4", "2", "avx512"],
+    """The C++ avx512 anchor on bench-1080.json, as a yardstick of how quiet the machine was (None without AVX-512)."""
+    out = subprocess.run(["python3", os.path.join(anchor_dir, "native.py"), os.path.join(anchor_dir, "bench-1080.json"), "4", "2", "avx512"],
                          capture_output=True, text=True)
     line = json.loads(out.stdout.strip().splitlines()[-1])
     return None if "error" in line else line["seconds"] * 1000

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the scenes behind docs/performance.md's cost-against-sphere-count table.
 
-  python3 tools/sphere-scenes.py field COLUMNS ROWS OUT.json      a receding field (the issue's 960-sphere field is 24 40)
+  python3 tools/sphere-scenes.py field COLUMNS ROWS OUT.json      a receding field (the 960-sphere field of the targets is 24 40)
   python3 tools/sphere-scenes.py aliasing OUT.json                samples/scenes/sphere-field.json: 40 × 120, seen low and narrow
   python3 tools/sphere-scenes.py random N OUT.json [SEED]         N random spheres in a box in front of the camera
 

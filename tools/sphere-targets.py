@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Issue #20's targets in one sitting: renderMs of this build against another, runs alternating (the order swapped
+"""The sphere-count targets in one run: renderMs of this build against another, runs alternating (the order swapped
 every pair), medians and the paired ratio.
 
 Scenes: the 960-sphere field (`tools/sphere-scenes.py field 24 40`), 10 000 random spheres (`random 10000`) and
-../shared/anchors/bench-1080.json (two spheres), each with the options of its target, 2 threads. Prints a Markdown
+benchmarks/anchors/bench-1080.json (two spheres), each with the options of its target, 2 threads. Prints a Markdown
 table. Build both first (dotnet build samples/RayLab.Console -c Release, here and in the other checkout).
 
 Usage: python3 tools/sphere-targets.py --before DIR [--quick]
@@ -27,7 +27,7 @@ tmp = tempfile.mkdtemp()
 field, random10k = os.path.join(tmp, "field.json"), os.path.join(tmp, "r10k.json")
 subprocess.run(["python3", os.path.join(root, "tools", "sphere-scenes.py"), "field", "24", "40", field], check=True)
 subprocess.run(["python3", os.path.join(root, "tools", "sphere-scenes.py"), "random", "10000", random10k], check=True)
-bench = os.path.join(os.path.dirname(root), "shared", "anchors", "bench-1080.json")
+bench = os.path.join(root, "benchmarks", "anchors", "bench-1080.json")
 small, full = ["--width", "320", "--height", "240"], ["--width", "1920", "--height", "1080"]
 exact, jittered = ["--sampler", "exact"], ["--sampler", "jittered", "--samples", "16"]
 cases = [("field, 320×240, exact (≤ 100 ms)", field, exact + small, 7),

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Whole-command wall times of raylab, the JIT build against the native (Native AOT) build, interleaved.
 
-For each of the issue's four commands — `raylab --help`, an 8×8 render, the exact reference at 1080p and jittered
-16 spp at 1080p (../shared/anchors/bench-1080.json, 2 threads) — runs every build once per round, ROUNDS rounds
+For each of four commands — `raylab --help`, an 8×8 render, the exact reference at 1080p and jittered
+16 spp at 1080p (benchmarks/anchors/bench-1080.json, 2 threads) — runs every build once per round, ROUNDS rounds
 (builds and commands interleaved, so that load drifts touch them alike), and prints a Markdown table of medians:
 wall time of the whole process (start to exit, as a user waits for it), and for the 1080p renders renderMs (the
 render loop alone) and encodeMs (writing the PNG) from --stats. With --before DIR, a third build: the JIT build of
@@ -11,12 +11,12 @@ with --build NAME=PATH (repeatable), any other raylab, e.g. a native build for a
 
 Build first: dotnet build samples/RayLab.Console -c Release
              dotnet publish samples/RayLab.Console -c Release -r linux-x64 -o artifacts/native
-Usage: python3 tools/startup-speed.py [ROUNDS] [--before DIR] [--build NAME=PATH …]   (needs ../shared beside the repository)
+Usage: python3 tools/startup-speed.py [ROUNDS] [--before DIR] [--build NAME=PATH …]
 """
 import argparse, json, os, statistics, subprocess, tempfile, time
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-scene = os.path.join(os.path.dirname(root), "shared", "anchors", "bench-1080.json")
+scene = os.path.join(root, "benchmarks", "anchors", "bench-1080.json")
 parser = argparse.ArgumentParser()
 parser.add_argument("rounds", nargs="?", type=int, default=9)
 parser.add_argument("--before")

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Where the wall time of one native `raylab render` goes, beyond renderMs and encodeMs.
 
-Runs the native build's jittered 16 spp and exact renders of ../shared/anchors/bench-1080.json (1920×1080, 2 threads),
+Runs the native build's jittered 16 spp and exact renders of benchmarks/anchors/bench-1080.json (1920×1080, 2 threads),
 ROUNDS rounds, each round once plainly (its wall time, as startup-speed.py measures it) and once under
 `strace -f --seccomp-bpf -ttt -T` tracing only execve, openat, fsync, rename and exit_group (the other system calls
 run untraced, so the render is not slowed), and prints medians of the phases those calls mark:
@@ -24,12 +24,12 @@ With --faults, one more run per sampler under `perf record -e page-faults -c 1 -
 each on the lab's VM: the kernel finds, zeroes and charges a page) by the first RayLab, runtime, zlib or loader
 frame on its stack.
 
-Usage: python3 tools/wall-breakdown.py [ROUNDS] [--binary PATH] [--warmup] [--faults]   (needs strace and ../shared)
+Usage: python3 tools/wall-breakdown.py [ROUNDS] [--binary PATH] [--warmup] [--faults]   (needs strace)
 """
 import argparse, json, os, re, statistics, subprocess, tempfile, time
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-scene = os.path.join(os.path.dirname(root), "shared", "anchors", "bench-1080.json")
+scene = os.path.join(root, "benchmarks", "anchors", "bench-1080.json")
 parser = argparse.ArgumentParser()
 parser.add_argument("rounds", nargs="?", type=int, default=9)
 parser.add_argument("--binary", default=os.path.join(root, "artifacts", "native", "raylab"))

@@ -4,7 +4,7 @@ namespace RayLab.Benchmarks;
 
 /// <summary>
 /// The benchmark scene: the lab's two spheres (samples/scenes/two-spheres.json) at 1920×1080, the same scene
-/// as the native anchors' shared/anchors/bench-1080.json.
+/// as the native anchors' benchmarks/anchors/bench-1080.json.
 /// </summary>
 public static class BenchScene
 {

@@ -7,7 +7,7 @@ namespace RayLab.Sampling;
 /// sample depends only on (pixel, sample index, seed) and a render is byte-identical whatever the thread count.
 /// </summary>
 /// <remarks>
-/// The mixer is Chris Wellons' <c>lowbias32</c>, the one the native anchors in <c>shared/anchors</c> use:
+/// The mixer is Chris Wellons' <c>lowbias32</c>, the one the native anchors in <c>benchmarks/anchors</c> use:
 /// two rounds of xor-shift and multiply, a bijection on 32-bit integers.
 /// </remarks>
 internal static class CounterHash

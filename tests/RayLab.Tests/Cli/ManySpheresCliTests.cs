@@ -6,7 +6,7 @@ using RayLab.Tests.Imaging;
 namespace RayLab.Tests.Cli;
 
 /// <summary>
-/// A scene file of 1 000 000 spheres through <c>raylab render</c> (issue #20): the point and adaptive samplers render
+/// A scene file of 1 000 000 spheres through <c>raylab render</c>: the point and adaptive samplers render
 /// it through the hierarchy, the exact one refuses it with one line naming its limit and leaves no file. The file
 /// (about 80 MB) is written into the test's temporary folder, never into the repository.
 /// </summary>

@@ -49,9 +49,11 @@ public sealed class CompareRunnerTests : IDisposable
     public void ARenderOfASecondOrMoreIsTimedOnceAndAQuickOneIsRepeated()
     {
         PreparedScene lab = Lab(2, 1);
-        var slow = new SlowMethod(CompareRunner.LongRender);
-        CompareCase[] cases = [CompareCase.Custom("slow", "a pause per render", RenderMethod.Custom(slow)), CompareCase.Sampled(new JitteredSampler(1, seed: 1), 1)];
-        var progress = new CountingProgress();
+        var slow = new CountingMethod();
+        CompareCase[] cases = [CompareCase.Custom("slow", "reported as a second", RenderMethod.Custom(slow)), CompareCase.Sampled(new JitteredSampler(1, seed: 1), 1)];
+        // No render takes a second: the runner times each counted render by the statistics the progress hands back,
+        // and this progress reports the slow setting's renders as LongRender long and every other as 1 ms.
+        var progress = new CountingProgress(label => label.StartsWith("slow,", StringComparison.Ordinal) ? CompareRunner.LongRender : TimeSpan.FromMilliseconds(1));
 
         CompareMeasurement measured = CompareRunner.Measure(lab.Scene, lab.Camera, 2, 1, cases, _dir, new CompareSettings(Repeats: 3, Progress: progress),
             TestContext.Current.CancellationToken);
@@ -59,13 +61,14 @@ public sealed class CompareRunnerTests : IDisposable
         Assert.Equal(1, slow.Renders);
         Assert.True(measured.Results[0].TimedOnce);
         Assert.Equal(1, measured.Results[0].Renders);
+        Assert.Equal(CompareRunner.LongRender, measured.Results[0].Time);
         Assert.False(measured.Results[1].TimedOnce);
         Assert.True(measured.Results[1].Renders >= 3, $"the quick setting was rendered {measured.Results[1].Renders} times");
         Assert.Equal(1 + (2 * 3), progress.Counted);
     }
 
-    /// <summary>A method whose every render pauses (on its first pixel) for at least the given time.</summary>
-    private sealed class SlowMethod(TimeSpan pause) : IPixelMethod<int>
+    /// <summary>A method that counts its renders (on their first pixel).</summary>
+    private sealed class CountingMethod : IPixelMethod<int>
     {
         public int Renders { get; private set; }
 
@@ -78,22 +81,24 @@ public sealed class CompareRunnerTests : IDisposable
             if (pixel.X == 0 && pixel.Row == 0)
             {
                 Renders++;
-                Thread.Sleep(pause + TimeSpan.FromMilliseconds(20));
             }
 
             return pixel.Trace(0.5, 0.5);
         }
     }
 
-    /// <summary>Counts renders as a progress bar would: each render and each planned repeat left out.</summary>
-    private sealed class CountingProgress : ICompareProgress
+    /// <summary>
+    /// Counts renders as a progress bar would (each render and each planned repeat left out), and stands in for the
+    /// clock: each render's statistics come back with the time <paramref name="renderTime"/> gives for its label.
+    /// </summary>
+    private sealed class CountingProgress(Func<string, TimeSpan> renderTime) : ICompareProgress
     {
         public int Counted { get; private set; }
 
         public RenderStatistics Render(string label, Func<RenderStatistics> render)
         {
             Counted++;
-            return render();
+            return render() with { RenderTime = renderTime(label) };
         }
 
         public void Skipped(int renders) => Counted += renders;

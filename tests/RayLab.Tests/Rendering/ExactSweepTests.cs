@@ -3,7 +3,7 @@ using RayLab.Rendering.Exact;
 namespace RayLab.Tests.Rendering;
 
 /// <summary>
-/// The exact renderer's row sweep (issue #20: branches kept in order down a row, a piece's area added once per
+/// The exact renderer's row sweep (branches kept in order down a row, a piece's area added once per
 /// lifetime, its colour carried) gives the pixels that cutting every strip of every row afresh gives, on scenes
 /// where many outlines cross: a receding field of spheres and random, overlapping, intersecting spheres.
 /// </summary>
@@ -15,7 +15,8 @@ public class ExactSweepTests
 
     private static readonly OrthoCamera Orthographic = new() { Position = new Double3(0.3, 1, 6), Target = new Double3(0.1, 0, -4), ViewHeight = 9, NearPlane = 1, FarPlane = 60 };
 
-    // The issue's field (tools/sphere-scenes.py field), smaller: columns × rows spheres of radius 0.35 on a plane.
+    // The 960-sphere field of the performance figures (tools/sphere-scenes.py field 24 40), smaller: columns × rows
+    // spheres of radius 0.35 on a plane.
     private static Scene Field(int columns, int rows)
     {
         var spheres = new List<Sphere>();

@@ -97,7 +97,7 @@ public class SamplerTests
     [Fact]
     public void TheCounterHashIsLowbias32()
     {
-        // Reference values of Wellons' lowbias32 (as in shared/anchors/native_ref.cpp).
+        // Reference values of Wellons' lowbias32 (as in benchmarks/anchors/native_ref.cpp).
         Assert.Equal(0u, CounterHash.Hash(0));
         Assert.NotEqual(CounterHash.Hash(1), CounterHash.Hash(2));
         uint x = 1;

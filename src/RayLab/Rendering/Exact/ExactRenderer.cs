@@ -114,7 +114,7 @@ public sealed class ExactRenderer
 
     /// <summary>
     /// <see cref="RenderLinear(Scene, Camera, int, int)"/> with the row sweep on, or off (every strip of every row
-    /// cut afresh, as before issue #20): for tests that the sweep changes nothing.
+    /// cut afresh, as the row does without the sweep): for tests that the sweep changes nothing.
     /// </summary>
     internal Intensity[] RenderLinear(Scene scene, Camera camera, int width, int height, bool sweep)
     {

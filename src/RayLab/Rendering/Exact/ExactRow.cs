@@ -16,7 +16,7 @@ namespace RayLab.Rendering.Exact;
 /// strip, and inside a strip the min and max pick the same side everywhere: each pixel gets an exact integral
 /// of a branch (<see cref="Outline.Integral"/>) or of a pixel edge. Pixels wholly inside a piece are added as one
 /// span (a difference array summed once per row), so they cost nothing per pixel.</para>
-/// <para>3. The sweep (issue #20): the strips are not cut afresh. The branches are kept in their left-to-right
+/// <para>3. The sweep: the strips are not cut afresh. The branches are kept in their left-to-right
 /// order down the row, and at a cut only the outlines with something there (their own break, or a crossing of
 /// theirs: <see cref="OutlineSet.Crossings"/> names the pair) are found, taken out and put back; a piece's area
 /// is added once for the whole height over which its two branches stay neighbours, and its colour is traced
