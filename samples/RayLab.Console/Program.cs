@@ -69,7 +69,7 @@ public static class Program
         // Options override the scene file, so each says what it falls back to: the scene's field, and the value
         // a scene file that omits the field gets (SamplerSettings' defaults, as SceneFile reads them).
         SamplerSettings d = SamplerSettings.Default;
-        var scene = new Argument<string>("scene") { Description = "The scene file: JSON with image, camera, spheres, … (see the README's \"Scene files\"), or the name of a scene raylab carries (see 'raylab scenes')." };
+        var scene = new Argument<string>("scene") { Description = "The scene file: JSON with image, camera, spheres, … (see docs/scene-files.md), or the name of a scene raylab carries (see 'raylab scenes')." };
         var output = new Option<string>("--output", "-o") { Description = "The image to write, .png, .bmp, .jpg/.jpeg or .webp (the format follows the extension).", HelpName = "OUT.png", Required = true };
         var camera = new Option<string?>("--camera") { Description = $"{Choices(CameraSettings.Types)}. Default: the scene's camera.type.", HelpName = "TYPE" };
         var sampler = new Option<string?>("--sampler") { Description = $"{Choices(SamplerSettings.Types)}. Default: the scene's sampler.type; {d.Type} if omitted.", HelpName = "NAME" };

@@ -123,23 +123,29 @@ public static class RenderJob
         {
             MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress, CancellationToken = cancellation,
         };
-        // Under the JIT, a smaller render of the same scene first, so that renderMs is the render and not the JIT
-        // compiling it (the native anchors are compiled ahead of time too); its time is reported as warmupMs. It is
-        // the same picture scaled down, so it meets the same edges and compiles the paths the render takes there.
-        // The native build (Native AOT) has nothing to compile, so it skips the warm-up and reports no warmupMs.
-        // Either way the image's memory is committed before the clock, as the anchors' zero-filled buffer is.
-        // RAYLAB_WARMUP=1 makes the native build warm up too (to measure what a first render costs beyond the JIT).
+        // The measurement harness, for the timing tools only (they all pass --stats): under the JIT, a smaller render of
+        // the same scene first, so that renderMs is the render and not the JIT compiling it (the native anchors are
+        // compiled ahead of time too); its time is reported as warmupMs. It is the same picture scaled down, so it
+        // meets the same edges and compiles the paths the render takes there. The native build (Native AOT) has
+        // nothing to compile, so it skips the warm-up and reports no warmupMs; RAYLAB_WARMUP=1 makes it warm up too.
+        // Then the image's memory is committed before the clock, as the anchors' zero-filled buffer is. A render
+        // without --stats does neither: it renders once.
         double? warmupMs = null;
-        if (RuntimeFeature.IsDynamicCodeCompiled || Environment.GetEnvironmentVariable(WarmupVariable) == "1")
+        double commitMs = 0;
+        if (request.StatsPath is not null)
         {
-            var warmupClock = Stopwatch.StartNew();
-            prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
-            warmupMs = warmupClock.Elapsed.TotalMilliseconds;
+            if (RuntimeFeature.IsDynamicCodeCompiled || Environment.GetEnvironmentVariable(WarmupVariable) == "1")
+            {
+                var warmupClock = Stopwatch.StartNew();
+                prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
+                warmupMs = warmupClock.Elapsed.TotalMilliseconds;
+            }
+
+            var commitClock = Stopwatch.StartNew();
+            CommitPages(image, request.Threads ?? Environment.ProcessorCount);
+            commitMs = commitClock.Elapsed.TotalMilliseconds;
         }
 
-        var commitClock = Stopwatch.StartNew();
-        CommitPages(image, request.Threads ?? Environment.ProcessorCount);
-        double commitMs = commitClock.Elapsed.TotalMilliseconds;
         RenderStatistics stats;
         using (ProgressDisplay.ForTerminal(stdout, progress, Path.GetFileName(request.OutputPath)))
         {
