@@ -41,7 +41,17 @@ internal static class JpegEncoder
     /// <exception cref="ArgumentNullException"><paramref name="stream"/> or <paramref name="image"/> is null.</exception>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="quality"/> is outside 0–100.</exception>
     /// <exception cref="ArgumentException">The image is wider or taller than <see cref="MaxSize"/>.</exception>
-    public static void Write(Stream stream, Image image, int quality, bool optimizeCoding)
+    public static void Write(Stream stream, Image image, int quality, bool optimizeCoding) =>
+        Write(stream, image, quality, optimizeCoding, BufferSize);
+
+    /// <summary>The size of the buffer between JpegLibrary and the stream.</summary>
+    internal const int BufferSize = 64 * 1024;
+
+    /// <summary>
+    /// <see cref="Write(Stream, Image, int, bool)"/> through a buffer of <paramref name="bufferSize"/> bytes: the
+    /// bytes written do not depend on it (tests use a small one to reach the case <see cref="StreamBufferWriter.DropAfterEndOfImage"/> handles).
+    /// </summary>
+    internal static void Write(Stream stream, Image image, int quality, bool optimizeCoding, int bufferSize)
     {
         ArgumentNullException.ThrowIfNull(stream);
         ArgumentNullException.ThrowIfNull(image);
@@ -83,9 +93,10 @@ internal static class JpegEncoder
         encoder.AddComponent(2, 1, 1, 1, 1, 1);
         encoder.AddComponent(3, 1, 1, 1, 1, 1);
         encoder.SetInputReader(new YCbCrReader(image));
-        var output = new StreamBufferWriter(stream);
+        var output = new StreamBufferWriter(stream, bufferSize);
         encoder.SetOutput(output);
         encoder.Encode();
+        output.DropAfterEndOfImage();
         output.Flush();
     }
 
@@ -175,10 +186,27 @@ internal static class JpegEncoder
     /// <see cref="GetSpan"/>, which JpegLibrary's writer relies on (it goes on writing into the rest of a span it has
     /// already advanced past).
     /// </summary>
-    private sealed class StreamBufferWriter(Stream stream) : IBufferWriter<byte>
+    private sealed class StreamBufferWriter(Stream stream, int size) : IBufferWriter<byte>
     {
-        private byte[] _buffer = new byte[64 * 1024];
+        private byte[] _buffer = new byte[size];
         private int _written;
+
+        /// <summary>
+        /// Drops what follows the last end-of-image marker (FF D9) in the buffer. JpegLibrary 0.4.32's
+        /// <c>JpegWriter.ExitBitMode</c>, when the span has under 16 bytes left after the scan's last flush, advances
+        /// over the bytes of that flush a second time, so as many stale bytes follow the marker (3 of 3000 noise
+        /// pictures through a 4 KiB buffer; rarer through 64 KiB, as the scan must end near the buffer's end). The marker is the last thing written, so it is in
+        /// the buffer; FF D9 cannot occur in entropy-coded data, where FF is always followed by 00, and searching for
+        /// the last one never cuts the picture short.
+        /// </summary>
+        public void DropAfterEndOfImage()
+        {
+            int end = _buffer.AsSpan(0, _written).LastIndexOf([(byte)0xFF, (byte)0xD9]);
+            if (end >= 0)
+            {
+                _written = end + 2;
+            }
+        }
 
         public void Advance(int count)
         {
