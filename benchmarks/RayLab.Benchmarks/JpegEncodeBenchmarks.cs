@@ -184,6 +184,21 @@ public static class JpegSizes
         }
     }
 
+    /// <summary>
+    /// The time of the first encode in a fresh process (JIT included, as when the lab saves its one picture):
+    /// <c>-- jpeg-first CANDIDATE PICTURE</c>, one process per figure.
+    /// </summary>
+    public static void PrintFirst(TextWriter output, string candidate, string picture)
+    {
+        Image image = JpegPictures.Get(picture);
+        JpegCandidate which = Enum.Parse<JpegCandidate>(candidate);
+        using var stream = new MemoryStream();
+        long start = System.Diagnostics.Stopwatch.GetTimestamp();
+        JpegCandidates.Write(which, stream, image);
+        double first = System.Diagnostics.Stopwatch.GetElapsedTime(start).TotalMilliseconds;
+        output.WriteLine($"{picture} {which} first {first:F1} ms");
+    }
+
     private static Dictionary<JpegCandidate, double> MedianTimes(Image image)
     {
         JpegCandidate[] candidates = Enum.GetValues<JpegCandidate>();
