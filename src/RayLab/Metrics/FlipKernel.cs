@@ -7,16 +7,19 @@ using RayLab.Imaging;
 namespace RayLab.Metrics;
 
 /// <summary>
-/// The LDR-FLIP pipeline on planar float rows. The picture is cut into horizontal bands, one task each; a band walks
-/// its rows top to bottom, converting each input row (and the filters' margin above and below) to YCxCz, filtering it
-/// horizontally into a ring of the last 2R + 1 rows (14 planes: for each image Y, Cx, Cz·h1, Cz·h2 and the feature
-/// detectors' Gaussian, first and second derivative), then filtering that ring vertically and computing the error of
+/// The LDR-FLIP pipeline on planar float rows. The picture is cut into horizontal bands, one task each, and a band
+/// into column tiles of 256. A tile walks the band's rows top to bottom, converting each input row (and the filters'
+/// margin above, below and beside) to YCxCz, filtering it horizontally into a ring of the last 2R + 1 rows (14 planes:
+/// for each image Y, Cx, Cz·h1, Cz·h2 and the feature detectors' Gaussian, first and second derivative; about 300 KB,
+/// so the vertical pass reads it from the L2 cache), then filtering that ring vertically and computing the error of
 /// one output row. Every output value is computed by the same operations whatever the banding, so the map and its
 /// mean (rows summed in double, then the row sums in order) are the same at any thread count.
 /// </summary>
 internal sealed class FlipKernel
 {
     private const int PlanesPerImage = 7;
+    private const int TileColumns = 256;
+    private const int Planes = 2 * PlanesPerImage;
     private const int PlaneY = 0, PlaneCx = 1, PlaneCz1 = 2, PlaneCz2 = 3, PlaneG = 4, PlaneD = 5, PlaneDD = 6;
 
     private readonly Image _reference;
@@ -25,10 +28,13 @@ internal sealed class FlipKernel
     private readonly bool _vectorized;
     private readonly int _width;
     private readonly int _height;
-    private readonly int _stride;      // Row length in the ring: the width rounded up to whole vectors.
-    private readonly int _pad;         // Replicated edge pixels each side of a converted row.
-    private readonly int _rowLength;   // _pad + _stride + _pad.
+    private readonly int _stride;      // The width rounded up to whole vectors.
+    private readonly int _tile;        // Columns per tile: the ring of one tile stays in the L2 cache.
+    private readonly int _pad;         // Columns each side of a tile the horizontal filters read.
+    private readonly int _rowLength;   // _pad + _tile + _pad.
     private readonly int _ringRows;    // 2R + 1.
+    private readonly float[] _spatialWeights;   // Tap k's Y, Cx, Cz1, Cz2 weights at 4k … 4k + 3.
+    private readonly float[] _featureWeights;   // Tap k's G, D, DD weights at 3k … 3k + 2.
     private readonly float[] _map;
     private readonly double[] _rowSums;
 
@@ -42,10 +48,13 @@ internal sealed class FlipKernel
         _height = reference.Height;
         int lanes = Vector<float>.Count;
         _stride = (_width + lanes - 1) / lanes * lanes;
+        _tile = Math.Min(_stride, TileColumns);
         _pad = _filters.MaxRadius;
-        _rowLength = _pad + _stride + _pad;
+        _rowLength = _pad + _tile + _pad;
         _ringRows = (2 * _filters.MaxRadius) + 1;
-        _map = new float[(long)_width * _height];
+        _spatialWeights = Interleave(_filters.Y, _filters.Cx, _filters.Cz1, _filters.Cz2);
+        _featureWeights = Interleave(_filters.G, _filters.D, _filters.DD);
+        _map = GC.AllocateUninitializedArray<float>(_width * _height);
         _rowSums = new double[_height];
     }
 
@@ -76,55 +85,79 @@ internal sealed class FlipKernel
         return (_map, sum / ((double)_width * _height));
     }
 
+    private static float[] Interleave(params float[][] filters)
+    {
+        var weights = new float[filters.Length * filters[0].Length];
+        for (int k = 0; k < filters[0].Length; k++)
+        {
+            for (int j = 0; j < filters.Length; j++)
+            {
+                weights[(k * filters.Length) + j] = filters[j][k];
+            }
+        }
+
+        return weights;
+    }
+
     private void RunBand(int y0, int y1)
     {
         int r = _filters.MaxRadius;
         int rowFloats = 4 * _rowLength;
-        int ringFloats = 2 * PlanesPerImage * _ringRows * _stride;
+        int ringFloats = _ringRows * RowFloats;
         float[] convertedReference = ArrayPool<float>.Shared.Rent(rowFloats);
         float[] convertedTest = ArrayPool<float>.Shared.Rent(rowFloats);
         float[] ring = ArrayPool<float>.Shared.Rent(ringFloats);
-        float[] output = ArrayPool<float>.Shared.Rent(_stride);
+        float[] output = ArrayPool<float>.Shared.Rent(_tile);
         int[] spatialOffsets = new int[(2 * _filters.SpatialRadius) + 1];
         int[] featureOffsets = new int[(2 * _filters.FeatureRadius) + 1];
         try
         {
-            int next = Math.Max(0, y0 - r);
-            for (int y = y0; y < y1; y++)
+            // Column tiles, each swept top to bottom through the band with its own ring of horizontally filtered rows.
+            for (int x0 = 0; x0 < _stride; x0 += _tile)
             {
-                int last = Math.Min(_height - 1, y + r);
-                for (; next <= last; next++)
+                int vectorCount = Math.Min(_tile, _stride - x0);
+                int valid = Math.Min(vectorCount, _width - x0);
+                int count = _vectorized ? vectorCount : valid;
+                int next = Math.Max(0, y0 - r);
+                for (int y = y0; y < y1; y++)
                 {
-                    int slot = next % _ringRows;
-                    Convert(_reference.PixelBytes.Slice(next * 3 * _width, 3 * _width), convertedReference);
-                    Convert(_test.PixelBytes.Slice(next * 3 * _width, 3 * _width), convertedTest);
+                    int last = Math.Min(_height - 1, y + r);
+                    for (; next <= last; next++)
+                    {
+                        int slot = next % _ringRows;
+                        Convert(_reference.PixelBytes.Slice(next * 3 * _width, 3 * _width), x0, count, convertedReference);
+                        Convert(_test.PixelBytes.Slice(next * 3 * _width, 3 * _width), x0, count, convertedTest);
+                        if (_vectorized)
+                        {
+                            HorizontalVector(convertedReference, ring, slot, 0, count);
+                            HorizontalVector(convertedTest, ring, slot, PlanesPerImage, count);
+                        }
+                        else
+                        {
+                            HorizontalScalar(convertedReference, ring, slot, 0, count);
+                            HorizontalScalar(convertedTest, ring, slot, PlanesPerImage, count);
+                        }
+                    }
+
+                    RowOffsets(y, _filters.SpatialRadius, spatialOffsets);
+                    RowOffsets(y, _filters.FeatureRadius, featureOffsets);
                     if (_vectorized)
                     {
-                        HorizontalVector(convertedReference, ring, slot, 0);
-                        HorizontalVector(convertedTest, ring, slot, PlanesPerImage);
+                        VerticalVector(ring, spatialOffsets, featureOffsets, output, count);
                     }
                     else
                     {
-                        HorizontalScalar(convertedReference, ring, slot, 0);
-                        HorizontalScalar(convertedTest, ring, slot, PlanesPerImage);
+                        VerticalScalar(ring, spatialOffsets, featureOffsets, output, count);
                     }
-                }
 
-                RowOffsets(y, _filters.SpatialRadius, spatialOffsets);
-                RowOffsets(y, _filters.FeatureRadius, featureOffsets);
-                if (_vectorized)
-                {
-                    VerticalVector(ring, spatialOffsets, featureOffsets, output);
+                    output.AsSpan(0, valid).CopyTo(_map.AsSpan((y * _width) + x0, valid));
                 }
-                else
-                {
-                    VerticalScalar(ring, spatialOffsets, featureOffsets, output);
-                }
+            }
 
-                Span<float> mapRow = _map.AsSpan(y * _width, _width);
-                output.AsSpan(0, _width).CopyTo(mapRow);
+            for (int y = y0; y < y1; y++)
+            {
                 double rowSum = 0;
-                foreach (float e in mapRow)
+                foreach (float e in _map.AsSpan(y * _width, _width))
                 {
                     rowSum += e;
                 }
@@ -147,47 +180,48 @@ internal sealed class FlipKernel
         for (int k = 0; k < offsets.Length; k++)
         {
             int row = Math.Clamp(y + k - radius, 0, _height - 1);
-            offsets[k] = row % _ringRows * _stride;
+            offsets[k] = row % _ringRows * RowFloats;
         }
     }
 
-    // One RGB24 row → four padded planar rows: Y, Cx, Cz and the normalised luminance, edges replicated.
-    private void Convert(ReadOnlySpan<byte> rgb, float[] converted)
+    // Columns x0 − pad … x0 + count + pad − 1 of one RGB24 row → four planar rows: Y, Cx, Cz and the normalised
+    // luminance. Columns outside the image repeat its edge pixels.
+    private void Convert(ReadOnlySpan<byte> rgb, int x0, int count, float[] converted)
     {
         float[] lut = FlipModel.SrgbToLinear;
         Span<float> y = converted.AsSpan(0, _rowLength);
         Span<float> cx = converted.AsSpan(_rowLength, _rowLength);
         Span<float> cz = converted.AsSpan(2 * _rowLength, _rowLength);
         Span<float> yn = converted.AsSpan(3 * _rowLength, _rowLength);
-        for (int x = 0; x < _width; x++)
+        int n = count + (2 * _pad);
+        for (int i = 0; i < n; i++)
         {
-            FlipModel.LinearToYCxCz(lut[rgb[3 * x]], lut[rgb[(3 * x) + 1]], lut[rgb[(3 * x) + 2]], out float yy, out float cxx, out float czz);
-            y[_pad + x] = yy;
-            cx[_pad + x] = cxx;
-            cz[_pad + x] = czz;
-            yn[_pad + x] = FlipModel.NormalizedLuminance(yy);
+            int p = 3 * Math.Clamp(x0 - _pad + i, 0, _width - 1);
+            FlipModel.LinearToYCxCz(lut[rgb[p]], lut[rgb[p + 1]], lut[rgb[p + 2]], out float yy, out float cxx, out float czz);
+            y[i] = yy;
+            cx[i] = cxx;
+            cz[i] = czz;
+            yn[i] = FlipModel.NormalizedLuminance(yy);
         }
-
-        Replicate(y);
-        Replicate(cx);
-        Replicate(cz);
-        Replicate(yn);
     }
 
-    private void Replicate(Span<float> row)
+    // The ring: _ringRows rows of RowFloats floats. Within a row, each vector of columns keeps its 14 planes side by
+    // side ([column vector][plane][lane]), so a filter tap reaches every plane from one address plus constants.
+    private int RowFloats => Planes * _tile;
+
+    // The ring index of (column x, plane) in a row, x counted from the tile's first column.
+    private static int Index(int x, int plane)
     {
-        row[.._pad].Fill(row[_pad]);
-        row[(_pad + _width)..].Fill(row[_pad + _width - 1]);
+        int lanes = Vector<float>.Count;
+        return (((x / lanes * Planes) + plane) * lanes) + (x % lanes);
     }
 
-    private int PlaneOffset(int plane) => plane * _ringRows * _stride;
-
-    private void HorizontalScalar(float[] converted, float[] ring, int slot, int firstPlane)
+    private void HorizontalScalar(float[] converted, float[] ring, int slot, int firstPlane, int count)
     {
         FlipFilters f = _filters;
         int rs = f.SpatialRadius, rf = f.FeatureRadius;
-        int row = slot * _stride;
-        for (int x = 0; x < _width; x++)
+        int row = slot * RowFloats;
+        for (int x = 0; x < count; x++)
         {
             float y = 0, cx = 0, cz1 = 0, cz2 = 0;
             int start = _pad + x - rs;
@@ -212,38 +246,34 @@ internal sealed class FlipKernel
                 dd += f.DD[k] * v;
             }
 
-            ring[PlaneOffset(firstPlane + PlaneY) + row + x] = y;
-            ring[PlaneOffset(firstPlane + PlaneCx) + row + x] = cx;
-            ring[PlaneOffset(firstPlane + PlaneCz1) + row + x] = cz1;
-            ring[PlaneOffset(firstPlane + PlaneCz2) + row + x] = cz2;
-            ring[PlaneOffset(firstPlane + PlaneG) + row + x] = g;
-            ring[PlaneOffset(firstPlane + PlaneD) + row + x] = d;
-            ring[PlaneOffset(firstPlane + PlaneDD) + row + x] = dd;
+            ring[row + Index(x, firstPlane + PlaneY)] = y;
+            ring[row + Index(x, firstPlane + PlaneCx)] = cx;
+            ring[row + Index(x, firstPlane + PlaneCz1)] = cz1;
+            ring[row + Index(x, firstPlane + PlaneCz2)] = cz2;
+            ring[row + Index(x, firstPlane + PlaneG)] = g;
+            ring[row + Index(x, firstPlane + PlaneD)] = d;
+            ring[row + Index(x, firstPlane + PlaneDD)] = dd;
         }
     }
 
-    private void VerticalScalar(float[] ring, int[] spatialOffsets, int[] featureOffsets, float[] output)
+    private void VerticalScalar(float[] ring, int[] spatialOffsets, int[] featureOffsets, float[] output, int count)
     {
         FlipFilters f = _filters;
-        int oY1 = PlaneOffset(PlaneY), oCx1 = PlaneOffset(PlaneCx), oCz11 = PlaneOffset(PlaneCz1), oCz21 = PlaneOffset(PlaneCz2);
-        int oY2 = PlaneOffset(PlanesPerImage + PlaneY), oCx2 = PlaneOffset(PlanesPerImage + PlaneCx);
-        int oCz12 = PlaneOffset(PlanesPerImage + PlaneCz1), oCz22 = PlaneOffset(PlanesPerImage + PlaneCz2);
-        int oG1 = PlaneOffset(PlaneG), oD1 = PlaneOffset(PlaneD), oDD1 = PlaneOffset(PlaneDD);
-        int oG2 = PlaneOffset(PlanesPerImage + PlaneG), oD2 = PlaneOffset(PlanesPerImage + PlaneD), oDD2 = PlaneOffset(PlanesPerImage + PlaneDD);
-        for (int x = 0; x < _width; x++)
+        const int Second = PlanesPerImage;
+        for (int x = 0; x < count; x++)
         {
             float y1 = 0, cx1 = 0, czA1 = 0, czB1 = 0, y2 = 0, cx2 = 0, czA2 = 0, czB2 = 0;
             for (int k = 0; k < spatialOffsets.Length; k++)
             {
-                int o = spatialOffsets[k] + x;
-                y1 += f.Y[k] * ring[oY1 + o];
-                cx1 += f.Cx[k] * ring[oCx1 + o];
-                czA1 += f.Cz1[k] * ring[oCz11 + o];
-                czB1 += f.Cz2[k] * ring[oCz21 + o];
-                y2 += f.Y[k] * ring[oY2 + o];
-                cx2 += f.Cx[k] * ring[oCx2 + o];
-                czA2 += f.Cz1[k] * ring[oCz12 + o];
-                czB2 += f.Cz2[k] * ring[oCz22 + o];
+                int o = spatialOffsets[k];
+                y1 += f.Y[k] * ring[o + Index(x, PlaneY)];
+                cx1 += f.Cx[k] * ring[o + Index(x, PlaneCx)];
+                czA1 += f.Cz1[k] * ring[o + Index(x, PlaneCz1)];
+                czB1 += f.Cz2[k] * ring[o + Index(x, PlaneCz2)];
+                y2 += f.Y[k] * ring[o + Index(x, Second + PlaneY)];
+                cx2 += f.Cx[k] * ring[o + Index(x, Second + PlaneCx)];
+                czA2 += f.Cz1[k] * ring[o + Index(x, Second + PlaneCz1)];
+                czB2 += f.Cz2[k] * ring[o + Index(x, Second + PlaneCz2)];
             }
 
             float color = FlipModel.ColorError(y1, cx1, czA1 + czB1, y2, cx2, czA2 + czB2);
@@ -251,14 +281,14 @@ internal sealed class FlipKernel
             float dx1 = 0, ddx1 = 0, dy1 = 0, ddy1 = 0, dx2 = 0, ddx2 = 0, dy2 = 0, ddy2 = 0;
             for (int k = 0; k < featureOffsets.Length; k++)
             {
-                int o = featureOffsets[k] + x;
-                float g1 = ring[oG1 + o], g2 = ring[oG2 + o];
-                dx1 += f.G[k] * ring[oD1 + o];
-                ddx1 += f.G[k] * ring[oDD1 + o];
+                int o = featureOffsets[k];
+                float g1 = ring[o + Index(x, PlaneG)], g2 = ring[o + Index(x, Second + PlaneG)];
+                dx1 += f.G[k] * ring[o + Index(x, PlaneD)];
+                ddx1 += f.G[k] * ring[o + Index(x, PlaneDD)];
                 dy1 += f.D[k] * g1;
                 ddy1 += f.DD[k] * g1;
-                dx2 += f.G[k] * ring[oD2 + o];
-                ddx2 += f.G[k] * ring[oDD2 + o];
+                dx2 += f.G[k] * ring[o + Index(x, Second + PlaneD)];
+                ddx2 += f.G[k] * ring[o + Index(x, Second + PlaneDD)];
                 dy2 += f.D[k] * g2;
                 ddy2 += f.DD[k] * g2;
             }
@@ -272,34 +302,21 @@ internal sealed class FlipKernel
         }
     }
 
-    private void HorizontalVector(float[] converted, float[] ring, int slot, int firstPlane)
+    private void HorizontalVector(float[] converted, float[] ring, int slot, int firstPlane, int count)
     {
-        FlipFilters f = _filters;
-        int rs = f.SpatialRadius, rf = f.FeatureRadius;
+        int rs = _filters.SpatialRadius, rf = _filters.FeatureRadius;
         int lanes = Vector<float>.Count;
         ref float src = ref MemoryMarshal.GetArrayDataReference(converted);
         ref float srcY = ref src;
         ref float srcCx = ref Unsafe.Add(ref src, _rowLength);
         ref float srcCz = ref Unsafe.Add(ref src, 2 * _rowLength);
         ref float srcYn = ref Unsafe.Add(ref src, 3 * _rowLength);
-        ref float wY = ref MemoryMarshal.GetArrayDataReference(f.Y);
-        ref float wCx = ref MemoryMarshal.GetArrayDataReference(f.Cx);
-        ref float wCz1 = ref MemoryMarshal.GetArrayDataReference(f.Cz1);
-        ref float wCz2 = ref MemoryMarshal.GetArrayDataReference(f.Cz2);
-        ref float wG = ref MemoryMarshal.GetArrayDataReference(f.G);
-        ref float wD = ref MemoryMarshal.GetArrayDataReference(f.D);
-        ref float wDD = ref MemoryMarshal.GetArrayDataReference(f.DD);
-        ref float dst = ref Unsafe.Add(ref MemoryMarshal.GetArrayDataReference(ring), slot * _stride);
-        ref float dY = ref Unsafe.Add(ref dst, PlaneOffset(firstPlane + PlaneY));
-        ref float dCx = ref Unsafe.Add(ref dst, PlaneOffset(firstPlane + PlaneCx));
-        ref float dCz1 = ref Unsafe.Add(ref dst, PlaneOffset(firstPlane + PlaneCz1));
-        ref float dCz2 = ref Unsafe.Add(ref dst, PlaneOffset(firstPlane + PlaneCz2));
-        ref float dG = ref Unsafe.Add(ref dst, PlaneOffset(firstPlane + PlaneG));
-        ref float dD = ref Unsafe.Add(ref dst, PlaneOffset(firstPlane + PlaneD));
-        ref float dDD = ref Unsafe.Add(ref dst, PlaneOffset(firstPlane + PlaneDD));
+        ref float ws = ref MemoryMarshal.GetArrayDataReference(_spatialWeights);
+        ref float wf = ref MemoryMarshal.GetArrayDataReference(_featureWeights);
+        ref float dst = ref Unsafe.Add(ref MemoryMarshal.GetArrayDataReference(ring), (slot * RowFloats) + (firstPlane * lanes));
         int taps = (2 * rs) + 1;
         int featureTaps = (2 * rf) + 1;
-        for (int x = 0; x < _stride; x += lanes)
+        for (int x = 0; x < count; x += lanes)
         {
             var y = Vector<float>.Zero;
             var cx = Vector<float>.Zero;
@@ -309,11 +326,12 @@ internal sealed class FlipKernel
             for (int k = 0; k < taps; k++)
             {
                 nuint i = start + (nuint)k;
+                ref float w = ref Unsafe.Add(ref ws, 4 * k);
                 var vcz = Vector.LoadUnsafe(ref srcCz, i);
-                y = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref srcY, i), new Vector<float>(Unsafe.Add(ref wY, k)), y);
-                cx = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref srcCx, i), new Vector<float>(Unsafe.Add(ref wCx, k)), cx);
-                cz1 = Vector.MultiplyAddEstimate(vcz, new Vector<float>(Unsafe.Add(ref wCz1, k)), cz1);
-                cz2 = Vector.MultiplyAddEstimate(vcz, new Vector<float>(Unsafe.Add(ref wCz2, k)), cz2);
+                y = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref srcY, i), new Vector<float>(w), y);
+                cx = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref srcCx, i), new Vector<float>(Unsafe.Add(ref w, 1)), cx);
+                cz1 = Vector.MultiplyAddEstimate(vcz, new Vector<float>(Unsafe.Add(ref w, 2)), cz1);
+                cz2 = Vector.MultiplyAddEstimate(vcz, new Vector<float>(Unsafe.Add(ref w, 3)), cz2);
             }
 
             var g = Vector<float>.Zero;
@@ -323,55 +341,38 @@ internal sealed class FlipKernel
             for (int k = 0; k < featureTaps; k++)
             {
                 var v = Vector.LoadUnsafe(ref srcYn, start + (nuint)k);
-                g = Vector.MultiplyAddEstimate(v, new Vector<float>(Unsafe.Add(ref wG, k)), g);
-                d = Vector.MultiplyAddEstimate(v, new Vector<float>(Unsafe.Add(ref wD, k)), d);
-                dd = Vector.MultiplyAddEstimate(v, new Vector<float>(Unsafe.Add(ref wDD, k)), dd);
+                ref float w = ref Unsafe.Add(ref wf, 3 * k);
+                g = Vector.MultiplyAddEstimate(v, new Vector<float>(w), g);
+                d = Vector.MultiplyAddEstimate(v, new Vector<float>(Unsafe.Add(ref w, 1)), d);
+                dd = Vector.MultiplyAddEstimate(v, new Vector<float>(Unsafe.Add(ref w, 2)), dd);
             }
 
-            nuint o = (nuint)x;
-            y.StoreUnsafe(ref dY, o);
-            cx.StoreUnsafe(ref dCx, o);
-            cz1.StoreUnsafe(ref dCz1, o);
-            cz2.StoreUnsafe(ref dCz2, o);
-            g.StoreUnsafe(ref dG, o);
-            d.StoreUnsafe(ref dD, o);
-            dd.StoreUnsafe(ref dDD, o);
+            ref float o = ref Unsafe.Add(ref dst, x * Planes);
+            y.StoreUnsafe(ref o, (nuint)(PlaneY * lanes));
+            cx.StoreUnsafe(ref o, (nuint)(PlaneCx * lanes));
+            cz1.StoreUnsafe(ref o, (nuint)(PlaneCz1 * lanes));
+            cz2.StoreUnsafe(ref o, (nuint)(PlaneCz2 * lanes));
+            g.StoreUnsafe(ref o, (nuint)(PlaneG * lanes));
+            d.StoreUnsafe(ref o, (nuint)(PlaneD * lanes));
+            dd.StoreUnsafe(ref o, (nuint)(PlaneDD * lanes));
         }
     }
 
-    private void VerticalVector(float[] ring, int[] spatialOffsets, int[] featureOffsets, float[] output)
+    private void VerticalVector(float[] ring, int[] spatialOffsets, int[] featureOffsets, float[] output, int count)
     {
-        FlipFilters f = _filters;
+        const int Second = PlanesPerImage;
         int lanes = Vector<float>.Count;
         ref float r0 = ref MemoryMarshal.GetArrayDataReference(ring);
-        ref float pY1 = ref Unsafe.Add(ref r0, PlaneOffset(PlaneY));
-        ref float pCx1 = ref Unsafe.Add(ref r0, PlaneOffset(PlaneCx));
-        ref float pCzA1 = ref Unsafe.Add(ref r0, PlaneOffset(PlaneCz1));
-        ref float pCzB1 = ref Unsafe.Add(ref r0, PlaneOffset(PlaneCz2));
-        ref float pG1 = ref Unsafe.Add(ref r0, PlaneOffset(PlaneG));
-        ref float pD1 = ref Unsafe.Add(ref r0, PlaneOffset(PlaneD));
-        ref float pDD1 = ref Unsafe.Add(ref r0, PlaneOffset(PlaneDD));
-        ref float pY2 = ref Unsafe.Add(ref r0, PlaneOffset(PlanesPerImage + PlaneY));
-        ref float pCx2 = ref Unsafe.Add(ref r0, PlaneOffset(PlanesPerImage + PlaneCx));
-        ref float pCzA2 = ref Unsafe.Add(ref r0, PlaneOffset(PlanesPerImage + PlaneCz1));
-        ref float pCzB2 = ref Unsafe.Add(ref r0, PlaneOffset(PlanesPerImage + PlaneCz2));
-        ref float pG2 = ref Unsafe.Add(ref r0, PlaneOffset(PlanesPerImage + PlaneG));
-        ref float pD2 = ref Unsafe.Add(ref r0, PlaneOffset(PlanesPerImage + PlaneD));
-        ref float pDD2 = ref Unsafe.Add(ref r0, PlaneOffset(PlanesPerImage + PlaneDD));
-        ref float wY = ref MemoryMarshal.GetArrayDataReference(f.Y);
-        ref float wCx = ref MemoryMarshal.GetArrayDataReference(f.Cx);
-        ref float wCz1 = ref MemoryMarshal.GetArrayDataReference(f.Cz1);
-        ref float wCz2 = ref MemoryMarshal.GetArrayDataReference(f.Cz2);
-        ref float wG = ref MemoryMarshal.GetArrayDataReference(f.G);
-        ref float wD = ref MemoryMarshal.GetArrayDataReference(f.D);
-        ref float wDD = ref MemoryMarshal.GetArrayDataReference(f.DD);
+        ref float ws = ref MemoryMarshal.GetArrayDataReference(_spatialWeights);
+        ref float wf = ref MemoryMarshal.GetArrayDataReference(_featureWeights);
         ref int so = ref MemoryMarshal.GetArrayDataReference(spatialOffsets);
         ref int fo = ref MemoryMarshal.GetArrayDataReference(featureOffsets);
         ref float dst = ref MemoryMarshal.GetArrayDataReference(output);
         int taps = spatialOffsets.Length;
         int featureTaps = featureOffsets.Length;
-        for (int x = 0; x < _stride; x += lanes)
+        for (int x = 0; x < count; x += lanes)
         {
+            ref float column = ref Unsafe.Add(ref r0, x * Planes);
             var y1 = Vector<float>.Zero;
             var cx1 = Vector<float>.Zero;
             var czA1 = Vector<float>.Zero;
@@ -382,19 +383,20 @@ internal sealed class FlipKernel
             var czB2 = Vector<float>.Zero;
             for (int k = 0; k < taps; k++)
             {
-                nuint o = (nuint)(Unsafe.Add(ref so, k) + x);
-                var wy = new Vector<float>(Unsafe.Add(ref wY, k));
-                var wcx = new Vector<float>(Unsafe.Add(ref wCx, k));
-                var wcz1 = new Vector<float>(Unsafe.Add(ref wCz1, k));
-                var wcz2 = new Vector<float>(Unsafe.Add(ref wCz2, k));
-                y1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pY1, o), wy, y1);
-                cx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pCx1, o), wcx, cx1);
-                czA1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pCzA1, o), wcz1, czA1);
-                czB1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pCzB1, o), wcz2, czB1);
-                y2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pY2, o), wy, y2);
-                cx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pCx2, o), wcx, cx2);
-                czA2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pCzA2, o), wcz1, czA2);
-                czB2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pCzB2, o), wcz2, czB2);
+                ref float p = ref Unsafe.Add(ref column, Unsafe.Add(ref so, k));
+                ref float w = ref Unsafe.Add(ref ws, 4 * k);
+                var wy = new Vector<float>(w);
+                var wcx = new Vector<float>(Unsafe.Add(ref w, 1));
+                var wcz1 = new Vector<float>(Unsafe.Add(ref w, 2));
+                var wcz2 = new Vector<float>(Unsafe.Add(ref w, 3));
+                y1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneY * lanes)), wy, y1);
+                cx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneCx * lanes)), wcx, cx1);
+                czA1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneCz1 * lanes)), wcz1, czA1);
+                czB1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneCz2 * lanes)), wcz2, czB1);
+                y2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneY) * lanes)), wy, y2);
+                cx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneCx) * lanes)), wcx, cx2);
+                czA2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneCz1) * lanes)), wcz1, czA2);
+                czB2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneCz2) * lanes)), wcz2, czB2);
             }
 
             var color = FlipModel.ColorError(y1, cx1, czA1 + czB1, y2, cx2, czA2 + czB2);
@@ -409,18 +411,19 @@ internal sealed class FlipKernel
             var ddy2 = Vector<float>.Zero;
             for (int k = 0; k < featureTaps; k++)
             {
-                nuint o = (nuint)(Unsafe.Add(ref fo, k) + x);
-                var wg = new Vector<float>(Unsafe.Add(ref wG, k));
-                var wd = new Vector<float>(Unsafe.Add(ref wD, k));
-                var wdd = new Vector<float>(Unsafe.Add(ref wDD, k));
-                var g1 = Vector.LoadUnsafe(ref pG1, o);
-                var g2 = Vector.LoadUnsafe(ref pG2, o);
-                dx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pD1, o), wg, dx1);
-                ddx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pDD1, o), wg, ddx1);
+                ref float p = ref Unsafe.Add(ref column, Unsafe.Add(ref fo, k));
+                ref float w = ref Unsafe.Add(ref wf, 3 * k);
+                var wg = new Vector<float>(w);
+                var wd = new Vector<float>(Unsafe.Add(ref w, 1));
+                var wdd = new Vector<float>(Unsafe.Add(ref w, 2));
+                var g1 = Vector.LoadUnsafe(ref p, (nuint)(PlaneG * lanes));
+                var g2 = Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneG) * lanes));
+                dx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneD * lanes)), wg, dx1);
+                ddx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneDD * lanes)), wg, ddx1);
                 dy1 = Vector.MultiplyAddEstimate(g1, wd, dy1);
                 ddy1 = Vector.MultiplyAddEstimate(g1, wdd, ddy1);
-                dx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pD2, o), wg, dx2);
-                ddx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref pDD2, o), wg, ddx2);
+                dx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneD) * lanes)), wg, dx2);
+                ddx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneDD) * lanes)), wg, ddx2);
                 dy2 = Vector.MultiplyAddEstimate(g2, wd, dy2);
                 ddy2 = Vector.MultiplyAddEstimate(g2, wdd, ddy2);
             }

@@ -194,8 +194,26 @@ internal static class FlipModel
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static Vector<float> LabF(Vector<float> t) => Vector.ConditionalSelect(
         Vector.GreaterThan(t, new Vector<float>(LabDeltaCube)),
-        Vector.Exp(Vector.Log(t) * OneThird),
+        Cbrt(t),
         (t * LabFactor) + new Vector<float>(LabTerm));
+
+    /// <summary>
+    /// ∛t for t &gt; 0 (LabF uses it above (6/29)³ only): a first guess from the float's bits (the exponent divided
+    /// by 3), then three Newton steps y ← (2y + t/y²)/3, each squaring the relative error (5 % → 1e-7), so it is
+    /// within a float rounding or two of powf(t, 1/3); four times cheaper than exp(ln t / 3).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector<float> Cbrt(Vector<float> t)
+    {
+        // The bits over 3 through float (SIMD has no integer division): off by at most 2^7 in the bits, harmless in a guess.
+        var third = new Vector<float>(OneThird);
+        var bits = Vector.ConvertToInt32(Vector.ConvertToSingle(Vector.AsVectorInt32(t)) * third);
+        var y = Vector.AsVectorSingle(bits + new Vector<int>(0x2A514067));
+        y = ((y + y) + (t / (y * y))) * third;
+        y = ((y + y) + (t / (y * y))) * third;
+        y = ((y + y) + (t / (y * y))) * third;
+        return y;
+    }
 
     /// <summary><see cref="FeatureError(float, float, float, float)"/> on each lane.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
