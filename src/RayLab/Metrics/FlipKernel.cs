@@ -2,6 +2,7 @@ using System.Buffers;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
 using RayLab.Imaging;
 
 namespace RayLab.Metrics;
@@ -129,8 +130,7 @@ internal sealed class FlipKernel
                         Convert(_test.PixelBytes.Slice(next * 3 * _width, 3 * _width), x0, count, convertedTest);
                         if (_vectorized)
                         {
-                            HorizontalVector(convertedReference, ring, slot, 0, count);
-                            HorizontalVector(convertedTest, ring, slot, PlanesPerImage, count);
+                            HorizontalVector(convertedReference, convertedTest, ring, slot, count);
                         }
                         else
                         {
@@ -188,21 +188,40 @@ internal sealed class FlipKernel
     // luminance. Columns outside the image repeat its edge pixels.
     private void Convert(ReadOnlySpan<byte> rgb, int x0, int count, float[] converted)
     {
-        float[] lut = FlipModel.SrgbToLinear;
+        ref Vector128<float> table = ref Unsafe.As<float, Vector128<float>>(ref MemoryMarshal.GetArrayDataReference(FlipModel.ChannelTable));
         Span<float> y = converted.AsSpan(0, _rowLength);
         Span<float> cx = converted.AsSpan(_rowLength, _rowLength);
         Span<float> cz = converted.AsSpan(2 * _rowLength, _rowLength);
         Span<float> yn = converted.AsSpan(3 * _rowLength, _rowLength);
         int n = count + (2 * _pad);
-        for (int i = 0; i < n; i++)
+        int first = x0 - _pad;
+        int lo = Math.Max(0, -first);
+        int hi = Math.Min(n, _width - first);
+        ReadOnlySpan<byte> pixels = rgb.Slice(3 * (first + lo), 3 * (hi - lo));
+        var minus16 = Vector128.Create(-16.0f, 0.0f, 0.0f, 0.0f);
+        for (int i = lo, p = 0; i < hi; i++, p += 3)
         {
-            int p = 3 * Math.Clamp(x0 - _pad + i, 0, _width - 1);
-            FlipModel.LinearToYCxCz(lut[rgb[p]], lut[rgb[p + 1]], lut[rgb[p + 2]], out float yy, out float cxx, out float czz);
+            // (Y, Cx, Cz, 0) as the sum of the three channels' table entries.
+            Vector128<float> c = Unsafe.Add(ref table, pixels[p]) + Unsafe.Add(ref table, 256 + pixels[p + 1])
+                + Unsafe.Add(ref table, 512 + pixels[p + 2]) + minus16;
+            float yy = c.GetElement(0);
             y[i] = yy;
-            cx[i] = cxx;
-            cz[i] = czz;
+            cx[i] = c.GetElement(1);
+            cz[i] = c.GetElement(2);
             yn[i] = FlipModel.NormalizedLuminance(yy);
         }
+
+        Fill(y, lo, hi, n);
+        Fill(cx, lo, hi, n);
+        Fill(cz, lo, hi, n);
+        Fill(yn, lo, hi, n);
+    }
+
+    // Columns left and right of the image repeat its first and last pixel.
+    private static void Fill(Span<float> row, int lo, int hi, int n)
+    {
+        row[..lo].Fill(row[lo]);
+        row[hi..n].Fill(row[hi - 1]);
     }
 
     // The ring: _ringRows rows of RowFloats floats. Within a row, each vector of columns keeps its 14 planes side by
@@ -302,59 +321,96 @@ internal sealed class FlipKernel
         }
     }
 
-    private void HorizontalVector(float[] converted, float[] ring, int slot, int firstPlane, int count)
+    // Both images at once: eight (then six) independent sums hide the multiply-add latency, and each weight is
+    // broadcast once for the two images.
+    private void HorizontalVector(float[] convertedReference, float[] convertedTest, float[] ring, int slot, int count)
     {
         int rs = _filters.SpatialRadius, rf = _filters.FeatureRadius;
         int lanes = Vector<float>.Count;
-        ref float src = ref MemoryMarshal.GetArrayDataReference(converted);
-        ref float srcY = ref src;
-        ref float srcCx = ref Unsafe.Add(ref src, _rowLength);
-        ref float srcCz = ref Unsafe.Add(ref src, 2 * _rowLength);
-        ref float srcYn = ref Unsafe.Add(ref src, 3 * _rowLength);
+        ref float y1s = ref MemoryMarshal.GetArrayDataReference(convertedReference);
+        ref float cx1s = ref Unsafe.Add(ref y1s, _rowLength);
+        ref float cz1s = ref Unsafe.Add(ref y1s, 2 * _rowLength);
+        ref float yn1s = ref Unsafe.Add(ref y1s, 3 * _rowLength);
+        ref float y2s = ref MemoryMarshal.GetArrayDataReference(convertedTest);
+        ref float cx2s = ref Unsafe.Add(ref y2s, _rowLength);
+        ref float cz2s = ref Unsafe.Add(ref y2s, 2 * _rowLength);
+        ref float yn2s = ref Unsafe.Add(ref y2s, 3 * _rowLength);
         ref float ws = ref MemoryMarshal.GetArrayDataReference(_spatialWeights);
         ref float wf = ref MemoryMarshal.GetArrayDataReference(_featureWeights);
-        ref float dst = ref Unsafe.Add(ref MemoryMarshal.GetArrayDataReference(ring), (slot * RowFloats) + (firstPlane * lanes));
+        ref float dst = ref Unsafe.Add(ref MemoryMarshal.GetArrayDataReference(ring), slot * RowFloats);
         int taps = (2 * rs) + 1;
         int featureTaps = (2 * rf) + 1;
+        const int Second = PlanesPerImage;
         for (int x = 0; x < count; x += lanes)
         {
-            var y = Vector<float>.Zero;
-            var cx = Vector<float>.Zero;
-            var cz1 = Vector<float>.Zero;
-            var cz2 = Vector<float>.Zero;
+            var y1 = Vector<float>.Zero;
+            var cx1 = Vector<float>.Zero;
+            var czA1 = Vector<float>.Zero;
+            var czB1 = Vector<float>.Zero;
+            var y2 = Vector<float>.Zero;
+            var cx2 = Vector<float>.Zero;
+            var czA2 = Vector<float>.Zero;
+            var czB2 = Vector<float>.Zero;
             nuint start = (nuint)(_pad + x - rs);
             for (int k = 0; k < taps; k++)
             {
                 nuint i = start + (nuint)k;
                 ref float w = ref Unsafe.Add(ref ws, 4 * k);
-                var vcz = Vector.LoadUnsafe(ref srcCz, i);
-                y = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref srcY, i), new Vector<float>(w), y);
-                cx = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref srcCx, i), new Vector<float>(Unsafe.Add(ref w, 1)), cx);
-                cz1 = Vector.MultiplyAddEstimate(vcz, new Vector<float>(Unsafe.Add(ref w, 2)), cz1);
-                cz2 = Vector.MultiplyAddEstimate(vcz, new Vector<float>(Unsafe.Add(ref w, 3)), cz2);
+                var wy = new Vector<float>(w);
+                var wcx = new Vector<float>(Unsafe.Add(ref w, 1));
+                var wcz1 = new Vector<float>(Unsafe.Add(ref w, 2));
+                var wcz2 = new Vector<float>(Unsafe.Add(ref w, 3));
+                var vcz1 = Vector.LoadUnsafe(ref cz1s, i);
+                var vcz2 = Vector.LoadUnsafe(ref cz2s, i);
+                y1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref y1s, i), wy, y1);
+                cx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref cx1s, i), wcx, cx1);
+                czA1 = Vector.MultiplyAddEstimate(vcz1, wcz1, czA1);
+                czB1 = Vector.MultiplyAddEstimate(vcz1, wcz2, czB1);
+                y2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref y2s, i), wy, y2);
+                cx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref cx2s, i), wcx, cx2);
+                czA2 = Vector.MultiplyAddEstimate(vcz2, wcz1, czA2);
+                czB2 = Vector.MultiplyAddEstimate(vcz2, wcz2, czB2);
             }
 
-            var g = Vector<float>.Zero;
-            var d = Vector<float>.Zero;
-            var dd = Vector<float>.Zero;
+            var g1 = Vector<float>.Zero;
+            var d1 = Vector<float>.Zero;
+            var dd1 = Vector<float>.Zero;
+            var g2 = Vector<float>.Zero;
+            var d2 = Vector<float>.Zero;
+            var dd2 = Vector<float>.Zero;
             start = (nuint)(_pad + x - rf);
             for (int k = 0; k < featureTaps; k++)
             {
-                var v = Vector.LoadUnsafe(ref srcYn, start + (nuint)k);
+                nuint i = start + (nuint)k;
                 ref float w = ref Unsafe.Add(ref wf, 3 * k);
-                g = Vector.MultiplyAddEstimate(v, new Vector<float>(w), g);
-                d = Vector.MultiplyAddEstimate(v, new Vector<float>(Unsafe.Add(ref w, 1)), d);
-                dd = Vector.MultiplyAddEstimate(v, new Vector<float>(Unsafe.Add(ref w, 2)), dd);
+                var wg = new Vector<float>(w);
+                var wd = new Vector<float>(Unsafe.Add(ref w, 1));
+                var wdd = new Vector<float>(Unsafe.Add(ref w, 2));
+                var v1 = Vector.LoadUnsafe(ref yn1s, i);
+                var v2 = Vector.LoadUnsafe(ref yn2s, i);
+                g1 = Vector.MultiplyAddEstimate(v1, wg, g1);
+                d1 = Vector.MultiplyAddEstimate(v1, wd, d1);
+                dd1 = Vector.MultiplyAddEstimate(v1, wdd, dd1);
+                g2 = Vector.MultiplyAddEstimate(v2, wg, g2);
+                d2 = Vector.MultiplyAddEstimate(v2, wd, d2);
+                dd2 = Vector.MultiplyAddEstimate(v2, wdd, dd2);
             }
 
             ref float o = ref Unsafe.Add(ref dst, x * Planes);
-            y.StoreUnsafe(ref o, (nuint)(PlaneY * lanes));
-            cx.StoreUnsafe(ref o, (nuint)(PlaneCx * lanes));
-            cz1.StoreUnsafe(ref o, (nuint)(PlaneCz1 * lanes));
-            cz2.StoreUnsafe(ref o, (nuint)(PlaneCz2 * lanes));
-            g.StoreUnsafe(ref o, (nuint)(PlaneG * lanes));
-            d.StoreUnsafe(ref o, (nuint)(PlaneD * lanes));
-            dd.StoreUnsafe(ref o, (nuint)(PlaneDD * lanes));
+            y1.StoreUnsafe(ref o, (nuint)(PlaneY * lanes));
+            cx1.StoreUnsafe(ref o, (nuint)(PlaneCx * lanes));
+            czA1.StoreUnsafe(ref o, (nuint)(PlaneCz1 * lanes));
+            czB1.StoreUnsafe(ref o, (nuint)(PlaneCz2 * lanes));
+            g1.StoreUnsafe(ref o, (nuint)(PlaneG * lanes));
+            d1.StoreUnsafe(ref o, (nuint)(PlaneD * lanes));
+            dd1.StoreUnsafe(ref o, (nuint)(PlaneDD * lanes));
+            y2.StoreUnsafe(ref o, (nuint)((Second + PlaneY) * lanes));
+            cx2.StoreUnsafe(ref o, (nuint)((Second + PlaneCx) * lanes));
+            czA2.StoreUnsafe(ref o, (nuint)((Second + PlaneCz1) * lanes));
+            czB2.StoreUnsafe(ref o, (nuint)((Second + PlaneCz2) * lanes));
+            g2.StoreUnsafe(ref o, (nuint)((Second + PlaneG) * lanes));
+            d2.StoreUnsafe(ref o, (nuint)((Second + PlaneD) * lanes));
+            dd2.StoreUnsafe(ref o, (nuint)((Second + PlaneDD) * lanes));
         }
     }
 

@@ -81,6 +81,35 @@ internal static class FlipModel
         return MathF.Pow(HyAB(lg, ag, bg, lb, ab, bb), Qc);
     }
 
+    /// <summary>
+    /// Each 8-bit channel's share of YCxCz (which is linear in linear RGB): entry 4·(256·c + v) holds channel c's
+    /// (R, G, B = 0, 1, 2) contribution at level v to Y + 16, Cx and Cz; a pixel's YCxCz is the sum of three entries
+    /// (minus 16 for Y). The same numbers as <see cref="LinearToYCxCz"/> up to float rounding.
+    /// </summary>
+    public static readonly float[] ChannelTable = BuildChannelTable();
+
+    private static float[] BuildChannelTable()
+    {
+        float[,] m = { { M11, M12, M13 }, { M21, M22, M23 }, { M31, M32, M33 } };
+        var table = new float[4 * 3 * 256];
+        for (int c = 0; c < 3; c++)
+        {
+            for (int v = 0; v < 256; v++)
+            {
+                float linear = SrgbToLinear[v];
+                float x = m[0, c] * linear * InvWhiteX;
+                float y = m[1, c] * linear;
+                float z = m[2, c] * linear * InvWhiteZ;
+                int i = 4 * ((256 * c) + v);
+                table[i] = 116.0f * y;
+                table[i + 1] = 500.0f * (x - y);
+                table[i + 2] = 200.0f * (y - z);
+            }
+        }
+
+        return table;
+    }
+
     /// <summary>Linear RGB → YCxCz (via XYZ, normalised by the D65 white).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static void LinearToYCxCz(float r, float g, float b, out float y, out float cx, out float cz)
