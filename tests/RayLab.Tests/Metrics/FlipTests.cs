@@ -16,6 +16,13 @@ public sealed class FlipTests
     private const double MeanTolerance = 1e-3;
     private const double PixelTolerance = 0.02;
 
+    /// <summary>
+    /// What the committed maps allow beyond that: the tool's 8-bit rounding (0.5/255) plus 2·10⁻⁴ of float
+    /// difference. On these pairs the largest difference is 0.5/255 + 4·10⁻⁵; dropping the feature exponent q_f
+    /// (a wrong model) moves even the low-error pairs' pixels far past it.
+    /// </summary>
+    private const double StrictPixelTolerance = (0.5 / 255) + 2e-4;
+
     private readonly ITestOutputHelper _output;
 
     public FlipTests(ITestOutputHelper output) => _output = output;
@@ -56,9 +63,10 @@ public sealed class FlipTests
             }
         }
 
-        _output.WriteLine($"{test} vs {reference} at {ppd} ppd: ours {ours.Mean:F6}, NVIDIA {nvidiaMean:F6}, |Δ mean| {Math.Abs(ours.Mean - nvidiaMean):E2}; largest |Δ pixel| {worst:F4} at ({worstIndex % ours.Width}, {worstIndex / ours.Width})");
+        _output.WriteLine($"{test} vs {reference} at {ppd} ppd: ours {ours.Mean:F6}, NVIDIA {nvidiaMean:F6}, |Δ mean| {Math.Abs(ours.Mean - nvidiaMean):E2}; largest |Δ pixel| {worst:F5} at ({worstIndex % ours.Width}, {worstIndex / ours.Width})");
         Assert.InRange(Math.Abs(ours.Mean - nvidiaMean), 0, MeanTolerance);
         Assert.InRange(worst, 0, PixelTolerance);
+        Assert.InRange(worst, 0, StrictPixelTolerance);
     }
 
     [Fact]
