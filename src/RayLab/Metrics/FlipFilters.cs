@@ -54,6 +54,16 @@ internal sealed class FlipFilters
             Cz2[i] *= czScale;
         }
 
+        // Y and Cx are narrow (σ ≈ 1 pixel at 67 ppd): beyond NarrowRadius their taps are below 1e-10 of the centre
+        // tap, under a float's resolution of any sum they join, and the vectorised passes skip them.
+        NarrowRadius = SpatialRadius;
+        while (NarrowRadius > 0
+            && Y[SpatialRadius + NarrowRadius] < 1e-10f * Y[SpatialRadius]
+            && Cx[SpatialRadius + NarrowRadius] < 1e-10f * Cx[SpatialRadius])
+        {
+            NarrowRadius--;
+        }
+
         // Feature detectors (section 3.2): a Gaussian of σ = w/2 degrees and its first and second derivatives, the
         // derivatives' positive and negative taps normalised to sum to +1 and −1.
         float sigma = 0.5f * FlipModel.FeatureWidth * pixelsPerDegree;
@@ -102,6 +112,9 @@ internal sealed class FlipFilters
 
     /// <summary>The spatial (contrast sensitivity) filters' radius r: 2r + 1 taps.</summary>
     public int SpatialRadius { get; }
+
+    /// <summary>The radius beyond which the Y and Cx taps are negligible (&lt; 10⁻¹⁰ of the centre tap).</summary>
+    public int NarrowRadius { get; }
 
     /// <summary>The feature detectors' radius: 2r + 1 taps.</summary>
     public int FeatureRadius { get; }

@@ -341,6 +341,8 @@ internal sealed class FlipKernel
         int taps = (2 * rs) + 1;
         int featureTaps = (2 * rf) + 1;
         const int Second = PlanesPerImage;
+        int narrowFirst = rs - _filters.NarrowRadius;          // Y and Cx use taps narrowFirst … taps − narrowFirst − 1.
+        int narrowTaps = (2 * _filters.NarrowRadius) + 1;
         for (int x = 0; x < count; x += lanes)
         {
             var y1 = Vector<float>.Zero;
@@ -356,20 +358,23 @@ internal sealed class FlipKernel
             {
                 nuint i = start + (nuint)k;
                 ref float w = ref Unsafe.Add(ref ws, 4 * k);
-                var wy = new Vector<float>(w);
-                var wcx = new Vector<float>(Unsafe.Add(ref w, 1));
                 var wcz1 = new Vector<float>(Unsafe.Add(ref w, 2));
                 var wcz2 = new Vector<float>(Unsafe.Add(ref w, 3));
                 var vcz1 = Vector.LoadUnsafe(ref cz1s, i);
                 var vcz2 = Vector.LoadUnsafe(ref cz2s, i);
-                y1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref y1s, i), wy, y1);
-                cx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref cx1s, i), wcx, cx1);
                 czA1 = Vector.MultiplyAddEstimate(vcz1, wcz1, czA1);
                 czB1 = Vector.MultiplyAddEstimate(vcz1, wcz2, czB1);
-                y2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref y2s, i), wy, y2);
-                cx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref cx2s, i), wcx, cx2);
                 czA2 = Vector.MultiplyAddEstimate(vcz2, wcz1, czA2);
                 czB2 = Vector.MultiplyAddEstimate(vcz2, wcz2, czB2);
+                if ((uint)(k - narrowFirst) < (uint)narrowTaps)
+                {
+                    var wy = new Vector<float>(w);
+                    var wcx = new Vector<float>(Unsafe.Add(ref w, 1));
+                    y1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref y1s, i), wy, y1);
+                    cx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref cx1s, i), wcx, cx1);
+                    y2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref y2s, i), wy, y2);
+                    cx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref cx2s, i), wcx, cx2);
+                }
             }
 
             var g1 = Vector<float>.Zero;
@@ -426,6 +431,8 @@ internal sealed class FlipKernel
         ref float dst = ref MemoryMarshal.GetArrayDataReference(output);
         int taps = spatialOffsets.Length;
         int featureTaps = featureOffsets.Length;
+        int narrowFirst = _filters.SpatialRadius - _filters.NarrowRadius;
+        int narrowTaps = (2 * _filters.NarrowRadius) + 1;
         for (int x = 0; x < count; x += lanes)
         {
             ref float column = ref Unsafe.Add(ref r0, x * Planes);
@@ -441,18 +448,21 @@ internal sealed class FlipKernel
             {
                 ref float p = ref Unsafe.Add(ref column, Unsafe.Add(ref so, k));
                 ref float w = ref Unsafe.Add(ref ws, 4 * k);
-                var wy = new Vector<float>(w);
-                var wcx = new Vector<float>(Unsafe.Add(ref w, 1));
                 var wcz1 = new Vector<float>(Unsafe.Add(ref w, 2));
                 var wcz2 = new Vector<float>(Unsafe.Add(ref w, 3));
-                y1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneY * lanes)), wy, y1);
-                cx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneCx * lanes)), wcx, cx1);
                 czA1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneCz1 * lanes)), wcz1, czA1);
                 czB1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneCz2 * lanes)), wcz2, czB1);
-                y2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneY) * lanes)), wy, y2);
-                cx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneCx) * lanes)), wcx, cx2);
                 czA2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneCz1) * lanes)), wcz1, czA2);
                 czB2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneCz2) * lanes)), wcz2, czB2);
+                if ((uint)(k - narrowFirst) < (uint)narrowTaps)
+                {
+                    var wy = new Vector<float>(w);
+                    var wcx = new Vector<float>(Unsafe.Add(ref w, 1));
+                    y1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneY * lanes)), wy, y1);
+                    cx1 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)(PlaneCx * lanes)), wcx, cx1);
+                    y2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneY) * lanes)), wy, y2);
+                    cx2 = Vector.MultiplyAddEstimate(Vector.LoadUnsafe(ref p, (nuint)((Second + PlaneCx) * lanes)), wcx, cx2);
+                }
             }
 
             var color = FlipModel.ColorError(y1, cx1, czA1 + czB1, y2, cx2, czA2 + czB2);
