@@ -100,6 +100,8 @@ internal sealed class FlipKernel
         return weights;
     }
 
+    // Called once per band or row: optimised at the first call, not left to tiering's on-stack replacement.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void RunBand(int y0, int y1)
     {
         int r = _filters.MaxRadius;
@@ -186,6 +188,8 @@ internal sealed class FlipKernel
 
     // Columns x0 − pad … x0 + count + pad − 1 of one RGB24 row → four planar rows: Y, Cx, Cz and the normalised
     // luminance. Columns outside the image repeat its edge pixels.
+    // Called once per band or row: optimised at the first call, not left to tiering's on-stack replacement.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void Convert(ReadOnlySpan<byte> rgb, int x0, int count, float[] converted)
     {
         ref Vector128<float> table = ref Unsafe.As<float, Vector128<float>>(ref MemoryMarshal.GetArrayDataReference(FlipModel.ChannelTable));
@@ -323,6 +327,8 @@ internal sealed class FlipKernel
 
     // Both images at once: eight (then six) independent sums hide the multiply-add latency, and each weight is
     // broadcast once for the two images.
+    // Called once per band or row: optimised at the first call, not left to tiering's on-stack replacement.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void HorizontalVector(float[] convertedReference, float[] convertedTest, float[] ring, int slot, int count)
     {
         int rs = _filters.SpatialRadius, rf = _filters.FeatureRadius;
@@ -419,6 +425,8 @@ internal sealed class FlipKernel
         }
     }
 
+    // Called once per band or row: optimised at the first call, not left to tiering's on-stack replacement.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void VerticalVector(float[] ring, int[] spatialOffsets, int[] featureOffsets, float[] output, int count)
     {
         const int Second = PlanesPerImage;
