@@ -1,7 +1,5 @@
 using BenchmarkDotNet.Attributes;
-using RayLab.Imaging;
 using RayLab.Metrics;
-using RayLab.Rendering;
 using RayLab.Sampling;
 
 namespace RayLab.Benchmarks;

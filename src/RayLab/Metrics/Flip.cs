@@ -1,5 +1,4 @@
 using System.Numerics;
-using RayLab.Imaging;
 
 namespace RayLab.Metrics;
 

@@ -1,7 +1,7 @@
 namespace RayLab.Metrics;
 
 /// <summary>
-/// The viewing conditions and the parallelism of <see cref="Flip.Compute(RayLab.Imaging.Image, RayLab.Imaging.Image, FlipOptions?)"/>. FLIP is a function of the angle a pixel
+/// The viewing conditions and the parallelism of <see cref="Flip.Compute(RayLab.Image, RayLab.Image, FlipOptions?)"/>. FLIP is a function of the angle a pixel
 /// subtends at the eye: its filters are specified in cycles per degree and scaled by <see cref="PixelsPerDegree"/>.
 /// </summary>
 public sealed class FlipOptions

@@ -1,7 +1,7 @@
 namespace RayLab.Metrics;
 
 /// <summary>
-/// The result of <see cref="Flip.Compute(RayLab.Imaging.Image, RayLab.Imaging.Image, FlipOptions?)"/>: the per-pixel FLIP error map, each value in [0, 1] (0 where the two
+/// The result of <see cref="Flip.Compute(RayLab.Image, RayLab.Image, FlipOptions?)"/>: the per-pixel FLIP error map, each value in [0, 1] (0 where the two
 /// images cannot be told apart when flipped between, 1 for the largest difference), and its mean.
 /// </summary>
 public sealed class FlipResult

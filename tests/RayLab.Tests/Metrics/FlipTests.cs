@@ -1,6 +1,5 @@
 using System.Globalization;
 using System.Runtime.CompilerServices;
-using RayLab.Imaging;
 using RayLab.Metrics;
 using RayLab.Tests.Imaging;
 
