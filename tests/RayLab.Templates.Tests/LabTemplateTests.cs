@@ -16,18 +16,22 @@ namespace RayLab.Templates.Tests;
 [Trait("Category", "Templates")]
 public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<TemplateFeed>
 {
-    /// <summary>The sabotage of each kind: the line of MyMethod.cs to replace, and what makes its pictures black.</summary>
-    public static TheoryData<string, string, string, string> Methods => new()
+    /// <summary>
+    /// Each kind of method: the line of MyMethod.cs to replace and what makes its pictures black; and whether the lab
+    /// restores offline, from the feed and the machine's NuGet cache alone (otherwise from the feed and the sources
+    /// the machine already has, nuget.org for xUnit).
+    /// </summary>
+    public static TheoryData<string, string, string, string, bool> Methods => new()
     {
         // A pixel method that returns black for every pixel.
-        { "pixel-method", "PixelLab", "return sum / Points.Length;", "return Intensity.Black;" },
+        { "pixel-method", "PixelLab", "return sum / Points.Length;", "return Intensity.Black;", false },
         // A sampler has no colour to return: with no samples in a pixel the renderer has nothing to average, and the pixel is black.
-        { "sampler", "SamplerLab", "public int SamplesPerPixel => Points.Length;", "public int SamplesPerPixel => 0;" },
+        { "sampler", "SamplerLab", "public int SamplesPerPixel => Points.Length;", "public int SamplesPerPixel => 0;", true },
     };
 
     [Theory]
     [MemberData(nameof(Methods))]
-    public async Task TheLabBuildsPassesItsTestsRendersAndFailsWhenMyMethodIsSabotaged(string method, string name, string line, string sabotage)
+    public async Task TheLabBuildsPassesItsTestsRendersAndFailsWhenMyMethodIsSabotaged(string method, string name, string line, string sabotage, bool offline)
     {
         // Created under a folder whose Directory.Build.props and Directory.Packages.props would break any project that
         // inherited them: the lab's own Directory.Build.props must stop the walk up.
@@ -44,6 +48,24 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
               <PropertyGroup><ManagePackageVersionsCentrally>true</ManagePackageVersionsCentrally></PropertyGroup>
             </Project>
             """);
+
+        if (offline)
+        {
+            // No network source: the machine's own NuGet cache (which holds xUnit, SkiaSharp, … from building this
+            // repository) as a read-only folder source, and the lab's nuget.config adds the feed.
+            string cache = Environment.GetEnvironmentVariable("NUGET_PACKAGES") is { Length: > 0 } packages
+                ? packages
+                : Path.Combine(Environment.GetFolderPath(Environment.SpecialFolder.UserProfile), ".nuget", "packages");
+            File.WriteAllText(Path.Combine(work, "nuget.config"), $"""
+                <?xml version="1.0" encoding="utf-8"?>
+                <configuration>
+                  <packageSources>
+                    <clear />
+                    <add key="machine-cache" value="{cache}" />
+                  </packageSources>
+                </configuration>
+                """);
+        }
 
         // 1. dotnet new, with the feed the packages come from today.
         string lab = Path.Combine(work, name);
