@@ -23,8 +23,8 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
     /// </summary>
     public static TheoryData<string, string, string, string, bool> Methods => new()
     {
-        // A pixel method that returns black for every pixel.
-        { "pixel-method", "PixelLab", "return sum / Points.Length;", "return Intensity.Black;", false },
+        // A pixel method that returns black for every pixel; the lab's name is not a C# identifier.
+        { "pixel-method", "pixel-lab", "return sum / Points.Length;", "return Intensity.Black;", false },
         // A sampler has no colour to return: with no samples in a pixel the renderer has nothing to average, and the pixel is black.
         { "sampler", "SamplerLab", "public int SamplesPerPixel => Points.Length;", "public int SamplesPerPixel => 0;", true },
     };
@@ -70,9 +70,10 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
         // 1. dotnet new, with the feed the packages come from today.
         string lab = Path.Combine(work, name);
         await feed.RunAsync(work, "dotnet", "new", "raylab-lab", "-o", lab, "--method", method, "--feed", feed.Feed);
-        string myMethod = Path.Combine(lab, "src", name, "MyMethod.cs");
+        string myMethod = Path.Combine(lab, "src", "Lab", "MyMethod.cs");
         Assert.True(File.Exists(myMethod), $"{myMethod} was not created");
-        Assert.Empty(Directory.GetFiles(Path.Combine(lab, "src", name), "MyMethod.*.cs")); // the other kind's file is left out
+        Assert.Empty(Directory.GetFiles(Path.Combine(lab, "src", "Lab"), "MyMethod.*.cs")); // the other kind's file is left out
+        Assert.True(File.Exists(Path.Combine(lab, name + ".slnx")), "the solution is not named after the lab");
         Assert.Contains(method == "sampler" ? ": IPixelSampler" : ": IPixelMethod<", File.ReadAllText(myMethod), StringComparison.Ordinal);
         string props = File.ReadAllText(Path.Combine(lab, "Directory.Build.props"));
         Assert.Contains($"<RayLabVersion>{feed.Version}</RayLabVersion>", props, StringComparison.Ordinal);
@@ -94,7 +95,7 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
         Assert.True(Directory.Exists(Path.Combine(feed.Packages, "raylab", feed.Version)), "RayLab was not restored at the packed version");
 
         // 3. dotnet run: rays and time for each camera and method, both pictures (and the exact ones), obrazkoncowy.jpg.
-        string output = await feed.RunAsync(lab, "dotnet", "run", "--project", Path.Combine("src", name));
+        string output = await feed.RunAsync(lab, "dotnet", "run", "--project", Path.Combine("src", "Lab"));
         string outDir = Path.Combine(lab, "out");
         foreach (string camera in new[] { "orthographic", "perspective" })
         {
@@ -122,8 +123,9 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
         Assert.NotEqual(0, sabotagedExit);
         (int stillPassing, int nowFailing) = Counts(sabotagedOutput); // a summary line: it built, and tests ran and failed
         Assert.True(nowFailing >= 1, $"no test failed with the sabotaged MyMethod:\n{sabotagedOutput}");
-        Assert.Matches($@"(?m)^\s*Failed {name}\.Tests\.MyMethodTests\.MyMethodIsCloseToTheExactImageAtAStatedCost", sabotagedOutput);
-        Assert.Matches($@"(?m)^\s*Failed {name}\.Tests\.TwoSpheresTests\.", sabotagedOutput);
+        string tests = name.Replace('-', '_') + ".Tests"; // the namespace: the name as a C# identifier
+        Assert.Matches($@"(?m)^\s*Failed {tests}\.MyMethodTests\.MyMethodIsCloseToTheExactImageAtAStatedCost", sabotagedOutput);
+        Assert.Matches($@"(?m)^\s*Failed {tests}\.TwoSpheresTests\.", sabotagedOutput);
         Assert.True(stillPassing > 0, "the tests that do not use MyMethod should still pass");
     }
 
