@@ -1,0 +1,60 @@
+using RayLab;
+using RayLab.Rendering.Exact;
+using RayLab.Sampling;
+using RayLab.Scenes;
+
+namespace MyLab;
+
+/// <summary>
+/// Lab II, section 5: renders the two spheres with both cameras, once with the lab's adaptive antialiasing and once
+/// with your own method (MyMethod.cs); prints each render's rays, time and error against the exact image; writes the
+/// pictures into out/, and the lab's obrazkoncowy.jpg.
+/// </summary>
+internal static class Program
+{
+    private static void Main()
+    {
+        SceneDescription file = TwoSpheres.Load();
+        Scene scene = file.Scene;                  // the spheres, the background and the ambient intensity I_a
+        int width = file.Width, height = file.Height;
+        Console.WriteLine($"two spheres, {width}×{height}, ambient I_a = {scene.Ambient}");
+
+        // The lab's adaptive antialiasing (4.1.4): the pixel's corners and centre, split where two values differ by
+        // more than the contrast, at most 3 levels deep.
+        RenderMethod adaptive = RenderMethod.Adaptive(new AdaptiveSampler(minDepth: 0, maxDepth: 3, contrast: 0.05));
+        // Your own method (MyMethod.cs).
+#if (Sampler)
+        RenderMethod mine = RenderMethod.Sampled(new MyMethod());
+#else
+        RenderMethod mine = RenderMethod.Custom(new MyMethod());
+#endif
+
+        Directory.CreateDirectory("out");
+        var renderer = new Renderer();
+        foreach (Camera camera in new Camera[] { TwoSpheres.Orthographic, TwoSpheres.Perspective })
+        {
+            // The exact reference: each pixel's exact area-weighted colour, what every antialiasing method aims at.
+            var exact = new Image(width, height);
+            new ExactRenderer().Render(scene, camera, exact);
+            exact.Save($"out/two-spheres-{camera.Name}-exact.png");
+
+            foreach ((string name, RenderMethod method) in new[] { ("adaptive", adaptive), ("mymethod", mine) })
+            {
+                var image = new Image(width, height);
+                RenderStatistics stats = renderer.Render(scene, camera, method, image);
+                ImageError error = ImageError.Measure(image, exact);
+                string path = $"out/two-spheres-{camera.Name}-{name}.png";
+                image.Save(path);
+                Console.WriteLine(
+                    $"{camera.Name,-12} {name,-8} {stats.PrimaryRays,10:N0} rays ({(double)stats.PrimaryRays / (width * height),5:F2} per pixel) "
+                    + $"{stats.RenderTime.TotalMilliseconds,8:F1} ms   error against exact: RMSE {error.Rmse:F3}, max {error.Max} levels   {path}");
+                if (camera == TwoSpheres.Perspective && name == "adaptive")
+                {
+                    image.Save("out/obrazkoncowy.jpg"); // the lab's own file name (2.2)
+                }
+            }
+        }
+
+        Console.WriteLine("wrote out/obrazkoncowy.jpg");
+    }
+}

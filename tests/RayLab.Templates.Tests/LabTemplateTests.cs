@@ -1,0 +1,225 @@
+using System.Buffers.Binary;
+using System.Text;
+using System.Text.Json;
+using System.Text.RegularExpressions;
+using SkiaSharp;
+
+namespace RayLab.Templates.Tests;
+
+/// <summary>
+/// What a student (and the instructor who hands out the lab) does with the template package, end to end, with child
+/// <c>dotnet</c> processes in a temporary DOTNET_CLI_HOME and an empty NUGET_PACKAGES: install <c>RayLab.Templates</c>
+/// from a folder feed packed from this checkout (with <c>RayLab</c> and <c>RayLab.Reports</c>), create a lab with
+/// each <c>--method</c>, run its tests (green) and the app (both pictures and <c>obrazkoncowy.jpg</c>), then sabotage
+/// <c>MyMethod</c> and see its tests fail. The packing and the install are shared (<see cref="TemplateFeed"/>).
+/// </summary>
+[Trait("Category", "Templates")]
+public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<TemplateFeed>
+{
+    /// <summary>
+    /// Each kind of method: the line of MyMethod.cs to replace and what makes its pictures black; and whether the lab
+    /// restores offline, from the feed and the machine's NuGet cache alone (otherwise from the feed and the sources
+    /// the machine already has, nuget.org for xUnit).
+    /// </summary>
+    public static TheoryData<string, string, string, string, bool> Methods => new()
+    {
+        // A pixel method that returns black for every pixel; the lab's name is not a C# identifier.
+        { "pixel-method", "pixel-lab", "return sum / Points.Length;", "return Intensity.Black;", false },
+        // A sampler has no colour to return: with no samples in a pixel the renderer has nothing to average, and the pixel is black.
+        { "sampler", "SamplerLab", "public int SamplesPerPixel => Points.Length;", "public int SamplesPerPixel => 0;", true },
+    };
+
+    [Theory]
+    [MemberData(nameof(Methods))]
+    public async Task TheLabBuildsPassesItsTestsRendersAndFailsWhenMyMethodIsSabotaged(string method, string name, string line, string sabotage, bool offline)
+    {
+        // Created under a folder whose Directory.Build.props and Directory.Packages.props would break any project that
+        // inherited them: the lab's own Directory.Build.props must stop the walk up.
+        string work = Directory.CreateDirectory(Path.Combine(feed.Root, "work-" + method)).FullName;
+        File.WriteAllText(Path.Combine(work, "Directory.Build.props"), """
+            <Project>
+              <Target Name="NotTheLabs" BeforeTargets="Restore;CollectPackageReferences;Build">
+                <Error Text="The lab inherited a Directory.Build.props from a folder above it." />
+              </Target>
+            </Project>
+            """);
+        File.WriteAllText(Path.Combine(work, "Directory.Packages.props"), """
+            <Project>
+              <PropertyGroup><ManagePackageVersionsCentrally>true</ManagePackageVersionsCentrally></PropertyGroup>
+            </Project>
+            """);
+
+        if (offline)
+        {
+            // No network source: the machine's own NuGet cache (which holds xUnit, SkiaSharp, … from building this
+            // repository) as a read-only folder source, and the lab's nuget.config adds the feed.
+            string cache = Environment.GetEnvironmentVariable("NUGET_PACKAGES") is { Length: > 0 } packages
+                ? packages
+                : Path.Combine(Environment.GetFolderPath(Environment.SpecialFolder.UserProfile), ".nuget", "packages");
+            File.WriteAllText(Path.Combine(work, "nuget.config"), $"""
+                <?xml version="1.0" encoding="utf-8"?>
+                <configuration>
+                  <packageSources>
+                    <clear />
+                    <add key="machine-cache" value="{cache}" />
+                  </packageSources>
+                </configuration>
+                """);
+        }
+
+        // 1. dotnet new, with the feed the packages come from today.
+        string lab = Path.Combine(work, name);
+        await feed.RunAsync(work, "dotnet", "new", "raylab-lab", "-o", lab, "--method", method, "--feed", feed.Feed);
+        string myMethod = Path.Combine(lab, "src", "Lab", "MyMethod.cs");
+        Assert.True(File.Exists(myMethod), $"{myMethod} was not created");
+        Assert.Empty(Directory.GetFiles(Path.Combine(lab, "src", "Lab"), "MyMethod.*.cs")); // the other kind's file is left out
+        Assert.True(File.Exists(Path.Combine(lab, name + ".slnx")), "the solution is not named after the lab");
+        Assert.Contains(method == "sampler" ? ": IPixelSampler" : ": IPixelMethod<", File.ReadAllText(myMethod), StringComparison.Ordinal);
+        string props = File.ReadAllText(Path.Combine(lab, "Directory.Build.props"));
+        Assert.Contains($"<RayLabVersion>{feed.Version}</RayLabVersion>", props, StringComparison.Ordinal);
+        Assert.Contains("<TreatWarningsAsErrors>true</TreatWarningsAsErrors>", props, StringComparison.Ordinal);
+        foreach (string file in Directory.GetFiles(lab, "*", SearchOption.AllDirectories).Where(f => !IsBuildOutput(lab, f)))
+        {
+            string text = File.ReadAllText(file);
+            Assert.DoesNotContain("0.0.0-raylab-version", text, StringComparison.Ordinal);
+            Assert.DoesNotContain("RAYLAB_", text, StringComparison.Ordinal);
+            Assert.DoesNotContain("#if (", text, StringComparison.Ordinal);
+        }
+
+        // 2. dotnet test: green out of the box, with the packages of this checkout's version from the feed.
+        (int testExit, string testOutput) = await feed.RunUncheckedAsync(lab, "dotnet", "test");
+        Assert.True(testExit == 0, $"dotnet test failed in the new lab:\n{testOutput}");
+        (int passed, int failed) = Counts(testOutput);
+        Assert.Equal(0, failed);
+        Assert.True(passed >= 15, $"only {passed} tests passed:\n{testOutput}");
+        Assert.True(Directory.Exists(Path.Combine(feed.Packages, "raylab", feed.Version)), "RayLab was not restored at the packed version");
+
+        // 3. dotnet run: rays and time for each camera and method, both pictures (and the exact ones), obrazkoncowy.jpg.
+        string output = await feed.RunAsync(lab, "dotnet", "run", "--project", Path.Combine("src", "Lab"));
+        string outDir = Path.Combine(lab, "out");
+        foreach (string camera in new[] { "orthographic", "perspective" })
+        {
+            foreach (string kind in new[] { "adaptive", "mymethod" })
+            {
+                Assert.Matches($@"(?m)^{camera} +{kind} +[\d,]+ rays \( *[\d.]+ per pixel\) +[\d.]+ ms .*RMSE [\d.]+", output);
+                AssertPicture(Path.Combine(outDir, $"two-spheres-{camera}-{kind}.png"), SKEncodedImageFormat.Png);
+            }
+
+            AssertPicture(Path.Combine(outDir, $"two-spheres-{camera}-exact.png"), SKEncodedImageFormat.Png);
+        }
+
+        string jpeg = Path.Combine(outDir, "obrazkoncowy.jpg");
+        Assert.Equal(new byte[] { 0xFF, 0xD8, 0xFF }, File.ReadAllBytes(jpeg).AsSpan(0, 3).ToArray());
+        Assert.InRange(new FileInfo(jpeg).Length, 5_000, 2_000_000);
+        double difference = MeanDifference(AssertPicture(jpeg, SKEncodedImageFormat.Jpeg),
+            AssertPicture(Path.Combine(outDir, "two-spheres-perspective-adaptive.png"), SKEncodedImageFormat.Png));
+        Assert.True(difference < 2, $"obrazkoncowy.jpg differs from the perspective picture by {difference:F2} levels on average");
+
+        // 4. Sabotage: MyMethod's pictures turn black, the lab still builds, and its tests of MyMethod fail.
+        string source = File.ReadAllText(myMethod);
+        Assert.Contains(line, source, StringComparison.Ordinal);
+        File.WriteAllText(myMethod, source.Replace(line, sabotage, StringComparison.Ordinal));
+        (int sabotagedExit, string sabotagedOutput) = await feed.RunUncheckedAsync(lab, "dotnet", "test");
+        Assert.NotEqual(0, sabotagedExit);
+        (int stillPassing, int nowFailing) = Counts(sabotagedOutput); // a summary line: it built, and tests ran and failed
+        Assert.True(nowFailing >= 1, $"no test failed with the sabotaged MyMethod:\n{sabotagedOutput}");
+        string tests = name.Replace('-', '_') + ".Tests"; // the namespace: the name as a C# identifier
+        Assert.Matches($@"(?m)^\s*Failed {tests}\.MyMethodTests\.MyMethodIsCloseToTheExactImageAtAStatedCost", sabotagedOutput);
+        Assert.Matches($@"(?m)^\s*Failed {tests}\.TwoSpheresTests\.", sabotagedOutput);
+        Assert.True(stillPassing > 0, "the tests that do not use MyMethod should still pass");
+    }
+
+    [Fact]
+    public async Task HelpDescribesEveryOption()
+    {
+        string help = Collapse(await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "--help"));
+        using JsonDocument template = JsonDocument.Parse(File.ReadAllText(Path.Combine(TemplateFeed.RepoRoot(),
+            "templates", "RayLab.Templates", "content", "raylab-lab", ".template.config", "template.json")));
+        int options = 0;
+        foreach (JsonProperty symbol in template.RootElement.GetProperty("symbols").EnumerateObject())
+        {
+            if (symbol.Value.GetProperty("type").GetString() != "parameter")
+            {
+                continue;
+            }
+
+            options++;
+            Assert.Contains($"--{symbol.Name}", help, StringComparison.Ordinal);
+            string description = symbol.Value.TryGetProperty("description", out JsonElement d) ? d.GetString() ?? "" : "";
+            Assert.False(string.IsNullOrWhiteSpace(description), $"--{symbol.Name} has no description in template.json");
+            Assert.Contains(Collapse(description), help, StringComparison.Ordinal);
+            if (symbol.Value.TryGetProperty("choices", out JsonElement choices))
+            {
+                foreach (JsonElement choice in choices.EnumerateArray())
+                {
+                    Assert.Contains(Collapse($"{choice.GetProperty("choice").GetString()} {choice.GetProperty("description").GetString()}"), help, StringComparison.Ordinal);
+                }
+            }
+        }
+
+        Assert.Equal(3, options); // --method, --feed, --skipRestore
+    }
+
+    private static bool IsBuildOutput(string lab, string file)
+    {
+        string[] parts = Path.GetRelativePath(lab, file).Split(Path.DirectorySeparatorChar);
+        return parts.Contains("bin") || parts.Contains("obj") || parts[0] == "out";
+    }
+
+    /// <summary>The passed and failed counts of <c>dotnet test</c>'s summary lines ("Passed!  - Failed: 0, Passed: 21, …").</summary>
+    private static (int Passed, int Failed) Counts(string output)
+    {
+        MatchCollection summaries = Summary().Matches(output);
+        Assert.True(summaries.Count > 0, $"dotnet test printed no summary line (did the lab build?):\n{output}");
+        return (summaries.Sum(m => int.Parse(m.Groups["passed"].Value, System.Globalization.CultureInfo.InvariantCulture)),
+            summaries.Sum(m => int.Parse(m.Groups["failed"].Value, System.Globalization.CultureInfo.InvariantCulture)));
+    }
+
+    [GeneratedRegex(@"Failed: +(?<failed>\d+), Passed: +(?<passed>\d+)")]
+    private static partial Regex Summary();
+
+    [GeneratedRegex(@"\s+")]
+    private static partial Regex Whitespace();
+
+    private static string Collapse(string text) => Whitespace().Replace(text, " ").Trim();
+
+    /// <summary>Decodes <paramref name="path"/> (an 800×600 picture of the given format that is not one flat colour).</summary>
+    /// <returns>Its RGB bytes.</returns>
+    private static byte[] AssertPicture(string path, SKEncodedImageFormat format)
+    {
+        Assert.True(File.Exists(path), $"{path} was not written");
+        byte[] bytes = File.ReadAllBytes(path);
+        if (format == SKEncodedImageFormat.Png)
+        {
+            Assert.Equal(new byte[] { 0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A }, bytes.AsSpan(0, 8).ToArray());
+            Assert.Equal("IHDR", Encoding.ASCII.GetString(bytes, 12, 4));
+            Assert.Equal((800, 600), (BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(16)), BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(20))));
+        }
+
+        using var codec = SKCodec.Create(new SKMemoryStream(bytes));
+        Assert.True(codec is not null, $"{path} does not decode");
+        Assert.Equal(format, codec.EncodedFormat);
+        var info = new SKImageInfo(codec.Info.Width, codec.Info.Height, SKColorType.Rgba8888, SKAlphaType.Unpremul);
+        Assert.Equal((800, 600), (info.Width, info.Height));
+        using var bitmap = new SKBitmap(info);
+        Assert.Equal(SKCodecResult.Success, codec.GetPixels(info, bitmap.GetPixels()));
+        ReadOnlySpan<byte> rgba = bitmap.GetPixelSpan();
+        byte[] rgb = new byte[info.Width * info.Height * 3];
+        for (int y = 0; y < info.Height; y++)
+        {
+            for (int x = 0; x < info.Width; x++)
+            {
+                int from = (y * bitmap.RowBytes) + (x * 4), to = ((y * info.Width) + x) * 3;
+                rgb[to] = rgba[from];
+                rgb[to + 1] = rgba[from + 1];
+                rgb[to + 2] = rgba[from + 2];
+            }
+        }
+
+        Assert.Contains(rgb, b => b != rgb[0]);
+        return rgb;
+    }
+
+    private static double MeanDifference(byte[] a, byte[] b) =>
+        a.Zip(b, (x, y) => (double)Math.Abs(x - y)).Average();
+}
