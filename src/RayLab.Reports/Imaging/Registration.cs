@@ -10,6 +10,5 @@ internal static class Registration
     internal static void Register()
     {
         ImageEncoders.Register(ImageFormat.Webp, (stream, image, quality) => SkiaEncoder.Write(stream, image, ImageFormat.Webp, quality));
-        ImageEncoders.Register(ImageFormat.Jpeg, (stream, image, quality) => SkiaEncoder.Write(stream, image, ImageFormat.Jpeg, quality));
     }
 }

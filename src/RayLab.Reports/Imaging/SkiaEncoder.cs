@@ -2,7 +2,10 @@ using SkiaSharp;
 
 namespace RayLab.Imaging;
 
-/// <summary>Writes JPEG and WebP through SkiaSharp (libjpeg-turbo and libwebp inside Skia's native library).</summary>
+/// <summary>
+/// Writes WebP (registered with the core's <see cref="Image.Save(string)"/>) and JPEG (for the benchmarks' comparison with
+/// the core's managed encoder) through SkiaSharp: libwebp and libjpeg-turbo inside Skia's native library.
+/// </summary>
 internal static class SkiaEncoder
 {
     /// <summary>Encodes <paramref name="image"/> as <paramref name="format"/> into <paramref name="stream"/>.</summary>

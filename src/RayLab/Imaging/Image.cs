@@ -166,6 +166,8 @@ public sealed class Image
                 BmpEncoder.Write(stream, this);
                 break;
             case ImageFormat.Jpeg:
+                JpegEncoder.Write(stream, this, quality);
+                break;
             case ImageFormat.Webp:
                 ImageEncoders.Get(format)(stream, this, quality);
                 break;

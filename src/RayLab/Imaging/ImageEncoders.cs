@@ -38,7 +38,7 @@ internal static class ImageEncoders
         }
 
         throw new NotSupportedException(
-            $"{format} files are written by the {ReportsAssembly} package, which this app does not reference: add it (dotnet add package {ReportsAssembly}), or save as .png, .bmp or .jpg.");
+            $"{(format == ImageFormat.Webp ? "WebP" : format.ToString())} files are written by the {ReportsAssembly} package, which this app does not reference: add it (dotnet add package {ReportsAssembly}), or save as .png, .bmp or .jpg.");
     }
 
     private static bool LoadReports()

@@ -2,7 +2,7 @@ namespace RayLab;
 
 /// <summary>
 /// The file formats RayLab writes (the lab's "zapis obrazu"). PNG and BMP are written by RayLab's own encoders;
-/// JPEG and WebP by SkiaSharp (README "Dependencies").
+/// JPEG by JpegLibrary (managed); WebP by the <c>RayLab.Reports</c> package (SkiaSharp).
 /// </summary>
 public enum ImageFormat
 {
@@ -12,10 +12,10 @@ public enum ImageFormat
     /// <summary>BMP, 24-bit uncompressed (the lab's "bitmap"; RayLab's own encoder).</summary>
     Bmp,
 
-    /// <summary>JPEG, lossy (the format of the lab's <c>obrazkoncowy.jpg</c>), encoded by SkiaSharp.</summary>
+    /// <summary>JPEG, lossy (the format of the lab's <c>obrazkoncowy.jpg</c>), 4:4:4, encoded by JpegLibrary (managed).</summary>
     Jpeg,
 
-    /// <summary>WebP, lossy, encoded by SkiaSharp.</summary>
+    /// <summary>WebP, lossy, encoded by SkiaSharp: written once the app references the <c>RayLab.Reports</c> package.</summary>
     Webp,
 }
 

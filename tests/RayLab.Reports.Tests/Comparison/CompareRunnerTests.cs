@@ -144,7 +144,7 @@ public sealed class CompareRunnerTests : IDisposable
     }
 
     [Fact]
-    public void TheReadmeSnippetIsWhatTheSampleRuns()
+    public void TheOwnMethodGuidesSnippetIsWhatTheSampleRuns()
     {
         string repo = AppContext.BaseDirectory;
         while (!File.Exists(Path.Combine(repo, "RayLab.sln")))
@@ -152,10 +152,10 @@ public sealed class CompareRunnerTests : IDisposable
             repo = Path.GetDirectoryName(repo) ?? throw new InvalidOperationException("RayLab.sln not found above the test's folder");
         }
 
-        string readme = File.ReadAllText(Path.Combine(repo, "README.md"));
+        string readme = File.ReadAllText(Path.Combine(repo, "docs", "own-method.md"));
         string sample = File.ReadAllText(Path.Combine(repo, "samples", "RayLab.OwnMethod", "SpeedAgainstError.cs"));
         int start = readme.IndexOf("```csharp\nusing RayLab.Comparison;\n", StringComparison.Ordinal);
-        Assert.True(start >= 0, "README.md has no compare snippet");
+        Assert.True(start >= 0, "docs/own-method.md has no compare snippet");
         string[] lines = [.. readme[start..readme.IndexOf("\n```\n", start + 3, StringComparison.Ordinal)].Split('\n')
             .Skip(1).Select(l => l.Trim()).Where(l => l.StartsWith("CompareCase.", StringComparison.Ordinal) || l.StartsWith("using", StringComparison.Ordinal))];
         Assert.Equal(4, lines.Length);
