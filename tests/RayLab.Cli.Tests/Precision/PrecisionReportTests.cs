@@ -95,13 +95,13 @@ public class PrecisionReportTests
         using var dir = new TempDirectory();
         string path = dir.File("precision.md");
 
-        Assert.Equal(0, Program.Main(["--size", "4", "--out", path]));
+        Assert.Equal(0, RayLab.PrecisionReport.Program.Main(["--size", "4", "--out", path]));
         Assert.StartsWith("# Precision", File.ReadAllText(path), StringComparison.Ordinal);
         Assert.Equal(["precision.md"], dir.Entries());
 
-        Assert.Equal(2, Program.Main(["--size", "0"]));
-        Assert.Equal(2, Program.Main(["--bogus"]));
-        Assert.Equal(1, Program.Main(["--size", "4", "--out", dir.File("missing/precision.md")]));
+        Assert.Equal(2, RayLab.PrecisionReport.Program.Main(["--size", "0"]));
+        Assert.Equal(2, RayLab.PrecisionReport.Program.Main(["--bogus"]));
+        Assert.Equal(1, RayLab.PrecisionReport.Program.Main(["--size", "4", "--out", dir.File("missing/precision.md")]));
         Assert.Equal(["precision.md"], dir.Entries());
     }
 }
