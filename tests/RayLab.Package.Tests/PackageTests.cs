@@ -198,11 +198,11 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
         string otherFeed = Directory.CreateDirectory(Path.Combine(feed.Root, "feed-other")).FullName;
         string otherPackages = Path.Combine(feed.Root, "nuget-packages-other"); // the first pointer package must not be reused
         string otherRid = PackedFeed.NativeToolHere ? "win-arm64" : "linux-x64";
-        await PackedFeed.RunAsync(feed.Root, otherPackages, null, "dotnet", "pack", feed.ConsoleProject, "-c", "Release", "-o", otherFeed,
+        await PackedFeed.RunChildAsync(feed.Root, otherPackages, null, "dotnet", "pack", feed.ConsoleProject, "-c", "Release", "-o", otherFeed,
             "--artifacts-path", Path.Combine(feed.Root, "artifacts-other"), $"-p:RayLabNativeRid={otherRid}");
         File.Copy(Path.Combine(feed.Feed, $"RayLab.Tool.any.{feed.Version}.nupkg"), Path.Combine(otherFeed, $"RayLab.Tool.any.{feed.Version}.nupkg"));
         string fallbackTools = Path.Combine(feed.Root, "tools-fallback");
-        await PackedFeed.RunAsync(feed.Root, otherPackages, null, "dotnet", "tool", "install", "RayLab.Tool", "--tool-path", fallbackTools,
+        await PackedFeed.RunChildAsync(feed.Root, otherPackages, null, "dotnet", "tool", "install", "RayLab.Tool", "--tool-path", fallbackTools,
             "--add-source", otherFeed, "--version", feed.Version);
         string fallback = Path.Combine(fallbackTools, OperatingSystem.IsWindows() ? "raylab.exe" : "raylab");
         AssertInstalledBuild(fallbackTools, fallback, native: false);
@@ -285,7 +285,7 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
     /// </summary>
     private static async Task AssertCarriedScenesAsync(string work, string packages, string raylab, bool native)
     {
-        string list = await PackedFeed.RunAsync(work, packages, null, raylab, "scenes");
+        string list = await PackedFeed.RunChildAsync(work, packages, null, raylab, "scenes");
         foreach (string scene in new[] { "two-spheres", "off-axis", "low-contrast", "sphere-field" })
         {
             Assert.True(list.Contains(scene, StringComparison.Ordinal), $"`raylab scenes` ({raylab}) does not list {scene}:\n{list}");
@@ -293,7 +293,7 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
 
         string png = Path.Combine(work, native ? "by-name-native.png" : "by-name-jit.png");
         string stats = Path.ChangeExtension(png, ".json");
-        await PackedFeed.RunAsync(work, packages, null, raylab, "render", "two-spheres", "-o", png, "--width", "96", "--height", "72",
+        await PackedFeed.RunChildAsync(work, packages, null, raylab, "render", "two-spheres", "-o", png, "--width", "96", "--height", "72",
             "--stats", stats);
         SkiaDecode.Result decoded = SkiaDecode.Load(png);
         Assert.Equal((96, 72, SKEncodedImageFormat.Png), (decoded.Width, decoded.Height, decoded.Format));
@@ -326,13 +326,13 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
         string[] render = ["render", "two-spheres", "--width", "96", "--height", "72", "--stats"];
         string widestPng = Path.Combine(work, "dispatch-widest.png");
         string entryPng = Path.Combine(work, "dispatch-entry.png");
-        await PackedFeed.RunAsync(work, packages, null, raylab, [.. render, "widest.json", "-o", widestPng]);
+        await PackedFeed.RunChildAsync(work, packages, null, raylab, [.. render, "widest.json", "-o", widestPng]);
         if (widestPath is not null && !OperatingSystem.IsWindows())
         {
             Assert.True(File.GetUnixFileMode(widestPath).HasFlag(UnixFileMode.UserExecute), $"{widestPath} was not made executable");
         }
 
-        await PackedFeed.RunAsync(work, packages, NoDispatchVariable, raylab, [.. render, "entry.json", "-o", entryPng]);
+        await PackedFeed.RunChildAsync(work, packages, NoDispatchVariable, raylab, [.. render, "entry.json", "-o", entryPng]);
 
         Assert.Equal(expected, Kernel(Path.Combine(work, "widest.json")));
         Assert.Equal("vector128", Kernel(Path.Combine(work, "entry.json")));

@@ -112,10 +112,10 @@ public sealed class PackedFeed : IAsyncLifetime
         </configuration>
         """);
 
-    /// <summary>Runs a child with <see cref="Packages"/> as its NuGet cache.</summary>
+    /// <summary>Runs a child with <see cref="Packages"/> as its NuGet cache (see <see cref="RunChildAsync"/>).</summary>
     /// <returns>What the child wrote to stdout.</returns>
     public Task<string> RunAsync(string workingDirectory, string fileName, params string[] args) =>
-        RunAsync(workingDirectory, Packages, null, fileName, args);
+        RunChildAsync(workingDirectory, Packages, null, fileName, args);
 
     /// <summary>Runs a child process to completion; fails with its command line, stdout and stderr unless it exits 0.</summary>
     /// <param name="workingDirectory">Where it runs.</param>
@@ -124,7 +124,7 @@ public sealed class PackedFeed : IAsyncLifetime
     /// <param name="fileName">The program.</param>
     /// <param name="args">Its arguments.</param>
     /// <returns>What the child wrote to stdout.</returns>
-    public static async Task<string> RunAsync(string workingDirectory, string nugetPackages, string? setVariable, string fileName, params string[] args)
+    public static async Task<string> RunChildAsync(string workingDirectory, string nugetPackages, string? setVariable, string fileName, params string[] args)
     {
         var psi = new ProcessStartInfo(fileName)
         {
