@@ -203,7 +203,8 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
         string otherPackages = Path.Combine(feed.Root, "nuget-packages-other"); // the first pointer package must not be reused
         string otherRid = PackedFeed.NativeToolHere ? "win-arm64" : "linux-x64";
         await PackedFeed.RunChildAsync(feed.Root, otherPackages, null, "dotnet", "pack", feed.ConsoleProject, "-c", "Release", "-o", otherFeed,
-            "--artifacts-path", Path.Combine(feed.Root, "artifacts-other"), $"-p:RayLabNativeRid={otherRid}");
+            "--artifacts-path", Path.Combine(feed.Root, "artifacts-other"), $"-p:RayLabNativeRid={otherRid}",
+            $"-p:MinVerVersionOverride={feed.Version}"); // the feed's version, even if a commit landed since it was packed
         File.Copy(Path.Combine(feed.Feed, $"RayLab.Tool.any.{feed.Version}.nupkg"), Path.Combine(otherFeed, $"RayLab.Tool.any.{feed.Version}.nupkg"));
         string fallbackTools = Path.Combine(feed.Root, "tools-fallback");
         await PackedFeed.RunChildAsync(feed.Root, otherPackages, null, "dotnet", "tool", "install", "RayLab.Tool", "--tool-path", fallbackTools,
