@@ -171,7 +171,7 @@ public sealed class JpegEncoderTests
         }
 
         double ours = LineRedError(SkiaDecode.Decode(Encode(image, 90)).Rgb);
-        using SKBitmap bitmap = image.ToSKBitmap();
+        using SKBitmap bitmap = ToBitmap(image);
         using SKPixmap pixmap = bitmap.PeekPixels()!;
         using SKData subsampled = pixmap.Encode(new SKJpegEncoderOptions(90, SKJpegEncoderDownsample.Downsample420, SKJpegEncoderAlphaOption.Ignore))!;
         double skia420 = LineRedError(SkiaDecode.Decode(subsampled.ToArray()).Rgb);
@@ -189,5 +189,21 @@ public sealed class JpegEncoderTests
 
             return sum / image.Height;
         }
+    }
+
+    /// <summary>The image as an opaque RGBA bitmap for Skia's own encoder (this project has the core only, not RayLab.Reports' SkiaBitmaps).</summary>
+    private static SKBitmap ToBitmap(Image image)
+    {
+        var bitmap = new SKBitmap(new SKImageInfo(image.Width, image.Height, SKColorType.Rgba8888, SKAlphaType.Opaque));
+        for (int y = 0; y < image.Height; y++)
+        {
+            Span<Rgb24> row = image.GetRowSpan(y);
+            for (int x = 0; x < image.Width; x++)
+            {
+                bitmap.SetPixel(x, y, new SKColor(row[x].R, row[x].G, row[x].B));
+            }
+        }
+
+        return bitmap;
     }
 }

@@ -1,7 +1,6 @@
 using System.Globalization;
 using System.Runtime.CompilerServices;
 using RayLab.Metrics;
-using RayLab.Tests.Imaging;
 
 namespace RayLab.Tests.Metrics;
 

@@ -1,0 +1,235 @@
+using System.Globalization;
+using System.Text.RegularExpressions;
+using System.Xml.Linq;
+using RayLab.Comparison;
+using RayLab.Sampling;
+using RayLab.Scenes;
+using RayLab.Rendering.Exact;
+
+namespace RayLab.Cli.Tests;
+
+/// <summary><c>raylab compare</c> end to end on a small scene, its option errors, and its plain progress lines.</summary>
+public sealed partial class CompareTests : IDisposable
+{
+    // 48×32, two spheres on a background: plenty of edge pixels for the samplers to get wrong.
+    private const string Scene = """
+        {
+          "image": { "width": 48, "height": 32 },
+          "background": [0.1, 0.1, 0.15],
+          "camera": { "type": "perspective", "position": [0, 0.5, 6], "target": [0, 0, 0], "fov": 40 },
+          "spheres": [ { "center": [-1.1, 0, 0], "radius": 1, "color": [0.9, 0.2, 0.2] },
+                       { "center": [1.2, 0.2, -1], "radius": 1.2, "color": [0.2, 0.8, 0.3] } ],
+          "sampler": { "type": "adaptive", "seed": 1 }
+        }
+        """;
+
+    private static readonly string[] ReportFiles = ["error-vs-rays.png", "error-vs-rays.svg", "error-vs-time.png", "error-vs-time.svg", "index.html", "results.csv", "results.md"];
+
+    private readonly TempDirectory _dir = new();
+
+    public void Dispose() => _dir.Dispose();
+
+    [Fact]
+    public void WritesTheReportWithEverySamplerAndErrorsThatMatchTheImages()
+    {
+        string scene = WriteScene(Scene);
+        string report = _dir.File("report");
+
+        (int code, string stdout, string stderr) = Run("compare", scene, "--out", report, "--budgets", "1,4,16", "--repeats", "2",
+            "--max-depths", "0,2", "--contrasts", "0.1,0.5");
+
+        Assert.Equal("", stderr);
+        Assert.Equal(0, code);
+        Row[] rows = ReadCsv(Path.Combine(report, "results.csv"));
+        string[] expectedSeries = [.. Samplers.Names, "adaptive c=0.1", "adaptive c=0.5", "adaptive guard c=0.1"];
+        Assert.Equal(expectedSeries, rows.Select(r => r.Series).Distinct());
+        Assert.Equal((Samplers.Names.Count * 3) + 6, rows.Length);
+        Assert.All(rows.Where(r => r.Sampler != "adaptive"), r => Assert.Equal(r.SamplesPerPixel, r.RaysPerPixel, 9));
+
+        // Every file is there, and the numbers in the table are those of the images on disk.
+        Assert.All(ReportFiles, f => Assert.True(File.Exists(Path.Combine(report, f)), f));
+        Image exact = Load(Path.Combine(report, "images", "exact.png"));
+        Assert.Equal((48, 32), (exact.Width, exact.Height));
+        foreach (Row row in rows)
+        {
+            ImageError error = ImageError.Measure(Load(Path.Combine(report, row.Image)), exact);
+            Assert.Equal(error.Rmse, row.Rmse, 6);
+            Assert.Equal(error.Max, row.Max);
+            Assert.Equal(error.FractionOverOneLevel, row.OverOneLevel, 6);
+            Assert.True(Load(Path.Combine(report, row.ErrorImage)).Width > 48, "the error image has a legend");
+        }
+
+        // The exact image is the exact renderer's, and jittered sampling gets closer to it with every budget.
+        var expected = new Image(48, 32);
+        PreparedScene prepared = SceneFile.Load(scene).Prepare();
+        new ExactRenderer().Render(prepared.Scene, prepared.Camera, expected);
+        Assert.Equal(expected.PixelBytes.ToArray(), exact.PixelBytes.ToArray());
+        double[] jittered = [.. rows.Where(r => r.Series == "jittered").Select(r => r.Rmse)];
+        Assert.True(jittered[0] > jittered[1] && jittered[1] > jittered[2], string.Join(", ", jittered));
+
+        // stdout is the table (one row per setting, as in the CSV), a line naming index.html and the run's total time: no progress.
+        string[] lines = stdout.TrimEnd('\n').Split('\n');
+        Assert.StartsWith("| sampler | setting |", lines[0], StringComparison.Ordinal);
+        Assert.Equal(rows.Length + 4, lines.Length);
+        Assert.All(lines[2..^2], l => Assert.Equal(9, l.Count(c => c == '|')));
+        Assert.All(rows.Select((r, i) => (r, i)), p => Assert.StartsWith($"| {p.r.Series} | {p.r.Setting} |", lines[2 + p.i], StringComparison.Ordinal));
+        Assert.Contains("index.html", lines[^2], StringComparison.Ordinal);
+        Assert.Matches(@"^total time \d+\.\d s$", lines[^1]);
+
+        // The charts (ScottPlot, PNG and SVG) name every series; index.html links every file it names, and they all exist.
+        foreach (string chart in new[] { "error-vs-time", "error-vs-rays" })
+        {
+            string text = string.Concat(XDocument.Load(Path.Combine(report, chart + ".svg")).Descendants(XName.Get("text", "http://www.w3.org/2000/svg")).Select(t => t.Value));
+            Assert.All(expectedSeries, name => Assert.Contains(name, text, StringComparison.Ordinal));
+            Assert.Equal((LogLogChart.Width, LogLogChart.Height), (SkiaDecode.Load(Path.Combine(report, chart + ".png")) is var png ? (png.Width, png.Height) : default));
+        }
+
+        string[] links = [.. Href().Matches(File.ReadAllText(Path.Combine(report, "index.html"))).Select(m => m.Groups[1].Value).Distinct()];
+        Assert.Equal((2 * rows.Length) + 5, links.Length);
+        Assert.All(links, l => Assert.True(File.Exists(Path.Combine(report, l)), l));
+        Assert.DoesNotContain(_dir.Entries(), e => e.EndsWith(".tmp", StringComparison.Ordinal));
+
+        string md = File.ReadAllText(Path.Combine(report, "results.md"));
+        Assert.Contains("## Convergence slopes", md, StringComparison.Ordinal);
+        Assert.Contains($"raylab compare {scene} --out {report} --budgets 1,4,16 --repeats 2", md, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void AGridSamplerRunsABudgetAtTheSquareBelowAndTheReportSaysSo()
+    {
+        string report = _dir.File(Path.Combine("new", "deeper", "report")); // created with its parents
+
+        (int code, _, string stderr) = Run("compare", WriteScene(Scene), "--out", report, "--budgets", "2,5,8", "--repeats", "1",
+            "--samplers", "jittered,random");
+
+        Assert.Equal("", stderr);
+        Assert.Equal(0, code);
+        Row[] rows = ReadCsv(Path.Combine(report, "results.csv"));
+        Assert.Equal([("jittered", 1), ("jittered", 4), ("random", 2), ("random", 5), ("random", 8)], rows.Select(r => (r.Series, r.SamplesPerPixel)));
+        string md = File.ReadAllText(Path.Combine(report, "results.md"));
+        Assert.Contains("jittered: budget 5 runs as 4 samples", md, StringComparison.Ordinal);
+        Assert.Contains("jittered: budget 8 would be 4 samples (an n×n grid), as budget 5 is; left out.", md, StringComparison.Ordinal);
+    }
+
+    [Theory]
+    [InlineData("raylab: error: --budgets: '0' is not a whole number ≥ 1", "--budgets", "1,0")]
+    [InlineData("raylab: error: --budgets: '4' appears twice", "--budgets", "4,16,4")]
+    [InlineData("raylab: error: --budgets: an empty item in '1,,4'", "--budgets", "1,,4")]
+    [InlineData("raylab: error: --budgets: 'x' is not a whole number ≥ 1", "--budgets", "x")]
+    [InlineData("raylab: error: --max-depths: '11' is not a whole number from 0 to 10", "--max-depths", "2,11")]
+    [InlineData("raylab: error: --contrasts: '-0.1' is not a number ≥ 0", "--contrasts", "-0.1")]
+    [InlineData("raylab: error: --samplers: 'jitter' is not one of regular, random", "--samplers", "jitter")]
+    [InlineData("raylab: error: --repeats: must be at least 1, got 0", "--repeats", "0")]
+    [InlineData("raylab: error: --threads: must be at least 1, got 0", "--threads", "0")]
+    [InlineData("raylab: error: --width: ", "--width", "0")]
+    [InlineData("raylab: error: --height: ", "--height", "-3")]
+    [InlineData("raylab: error: ", "--repeats", "three")]
+    public void ABadOptionIsOneLineAndWritesNothing(string expectedStart, string option, string value)
+    {
+        string scene = WriteScene(Scene);
+        AssertFailsCleanly(expectedStart, "compare", scene, "--out", _dir.File("report"), option, value);
+    }
+
+    [Fact]
+    public void ABadSceneOrOutputFolderIsOneLineAndWritesNothing()
+    {
+        string scene = WriteScene(Scene);
+        AssertFailsCleanly($"raylab: error: {_dir.File("missing.json")}", "compare", _dir.File("missing.json"), "--out", _dir.File("report"));
+        string wide = WriteScene(Scene.Replace("\"fov\": 40", "\"fov\": 190", StringComparison.Ordinal));
+        AssertFailsCleanly($"raylab: error: {wide}: camera.fov", "compare", wide, "--out", _dir.File("report"));
+        string behind = WriteScene(Scene.Replace("\"center\": [-1.1, 0, 0]", "\"center\": [0, 0.5, 5.5]", StringComparison.Ordinal));
+        AssertFailsCleanly($"raylab: error: {behind}: spheres[0]: ", "compare", behind, "--out", _dir.File("report")); // the exact reference cannot draw it
+        AssertFailsCleanly($"raylab: error: --out: '{scene}' is a file, not a folder", "compare", scene, "--out", scene);
+        AssertFailsCleanly($"raylab: error: --out: '{scene}' is a file, not a folder", "compare", scene, "--out", Path.Combine(scene, "report"));
+        AssertFailsCleanly("raylab: error: --budgets:", "compare", scene, "--out", _dir.File(Path.Combine("no", "report")), "--budgets", "0");
+        AssertFailsCleanly("raylab: error: ", "compare", scene); // --out is required: a command-line error
+    }
+
+    [Fact]
+    public void AFileInTheWayOfTheReportFailsBeforeAnythingIsMoved()
+    {
+        string report = _dir.File("report");
+        Directory.CreateDirectory(report);
+        File.WriteAllText(Path.Combine(report, "images"), "in the way");
+        string scene = WriteScene(Scene);
+
+        AssertFailsCleanly($"raylab: error: --out: '{Path.Combine(report, "images")}'", "compare", scene, "--out", report,
+            "--budgets", "1", "--repeats", "1", "--samplers", "regular");
+        Assert.Equal("in the way", File.ReadAllText(Path.Combine(report, "images")));
+    }
+
+    [Fact]
+    public void PlainProgressIsOneLinePerRender()
+    {
+        var writer = new StringWriter();
+        CompareProgress progress = CompareProgress.Lines(writer, 2);
+        RenderStatistics first = progress.Render("exact image", () => new RenderStatistics(10, TimeSpan.FromMilliseconds(12.34)));
+        progress.Render("jittered, 4 spp (1/1)", () => new RenderStatistics(40, TimeSpan.FromMilliseconds(3)));
+
+        Assert.Equal(10, first.PrimaryRays);
+        Assert.Equal("[1/2] exact image: 12.3 ms\n[2/2] jittered, 4 spp (1/1): 3.0 ms\n", writer.ToString().ReplaceLineEndings("\n"));
+    }
+
+    // ---- helpers --------------------------------------------------------------------------------------
+
+    private sealed record Row(string Series, string Sampler, string Setting, int SamplesPerPixel, double RaysPerPixel, double Rmse, int Max, double OverOneLevel, string Image, string ErrorImage);
+
+    private static Row[] ReadCsv(string path)
+    {
+        string[] lines = File.ReadAllLines(path);
+        string[] header = lines[0].Split(',');
+        Assert.Equal(17, header.Length);
+        int Col(string name) => Array.IndexOf(header, name) is >= 0 and int i ? i : throw new InvalidOperationException($"no column {name}");
+        return [.. lines[1..].Select(line =>
+        {
+            string[] f = line.Split(',');
+            Assert.Equal(header.Length, f.Length);
+            double D(string name) => double.Parse(f[Col(name)], CultureInfo.InvariantCulture);
+            Assert.True(D("median_ms") >= 0);
+            Assert.True(long.Parse(f[Col("rays")], CultureInfo.InvariantCulture) > 0);
+            return new Row(f[Col("series")], f[Col("sampler")], f[Col("setting")],
+                f[Col("samples_per_pixel")] is { Length: > 0 } spp ? int.Parse(spp, CultureInfo.InvariantCulture) : 0,
+                D("rays_per_pixel"), D("rmse"), int.Parse(f[Col("max")], CultureInfo.InvariantCulture), D("over_one_level"),
+                f[Col("image")], f[Col("error_image")]);
+        })];
+    }
+
+    private static Image Load(string path)
+    {
+        SkiaDecode.Result png = SkiaDecode.Decode(File.ReadAllBytes(path));
+        var image = new Image(png.Width, png.Height);
+        png.Rgb.CopyTo(image.PixelBytes);
+        return image;
+    }
+
+    private void AssertFailsCleanly(string expectedStart, params string[] args)
+    {
+        string[] before = _dir.Entries();
+        (int code, string stdout, string stderr) = Run(args);
+
+        Assert.True(code is 1 or 2, $"exit code {code}");
+        Assert.Equal("", stdout);
+        string line = Assert.Single(stderr.TrimEnd('\n').Split('\n'));
+        Assert.StartsWith(expectedStart, line, StringComparison.Ordinal);
+        Assert.DoesNotContain("   at ", stderr, StringComparison.Ordinal);
+        Assert.Equal(before, _dir.Entries());
+    }
+
+    private string WriteScene(string json)
+    {
+        string path = _dir.File($"scene-{Guid.NewGuid():N}.json");
+        File.WriteAllText(path, json);
+        return path;
+    }
+
+    private static (int Code, string Out, string Err) Run(params string[] args)
+    {
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        int code = Program.Run(args, stdout, stderr);
+        return (code, stdout.ToString().ReplaceLineEndings("\n"), stderr.ToString().ReplaceLineEndings("\n"));
+    }
+
+    [GeneratedRegex("href=\"([^\"#]+)\"")]
+    private static partial Regex Href();
+}

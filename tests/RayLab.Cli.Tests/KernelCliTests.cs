@@ -1,0 +1,81 @@
+using System.Text.Json;
+
+namespace RayLab.Cli.Tests;
+
+/// <summary>The console's --kernel and --quincunx options and the statistics they show.</summary>
+public sealed class KernelCliTests : IDisposable
+{
+    private readonly string _dir = Directory.CreateTempSubdirectory("raylab-kernel-").FullName;
+
+    public void Dispose() => Directory.Delete(_dir, recursive: true);
+
+    private static string Scene => Path.Combine(AppContext.BaseDirectory, "scenes", "two-spheres.json");
+
+    private static (int Code, string Out, string Err) Run(params string[] args) => ConsoleRunner.Run(args);
+
+    private JsonElement Stats(params string[] options)
+    {
+        string image = Path.Combine(_dir, "k.png"), stats = Path.Combine(_dir, "k.json");
+        var r = Run(["render", Scene, "-o", image, "--width", "48", "--height", "32", "--stats", stats, .. options]);
+        Assert.True(r.Code == 0, r.Err);
+        return JsonDocument.Parse(File.ReadAllText(stats)).RootElement;
+    }
+
+    [Theory]
+    [InlineData("scalar")]
+    [InlineData("vector128")]
+    [InlineData("vector256")]
+    [InlineData("vector512")]
+    public void TheKernelAskedForIsTheOneThatRendersAndTheStatsSaySo(string kernel)
+    {
+        JsonElement stats = Stats("--sampler", "jittered", "--samples", "4", "--kernel", kernel);
+        Assert.Equal(kernel, stats.GetProperty("kernel").GetString());
+        Assert.True(stats.GetProperty("warmupMs").GetDouble() > 0);
+        Assert.True(stats.GetProperty("retracedSamples").GetInt64() >= 0);
+    }
+
+    /// <summary>
+    /// The built app started on its own (raylab.dll with its own runtimeconfig.json, as <c>dotnet run</c> and the JIT tool
+    /// start it) is the JIT build and warms up: Native AOT's feature switches (IsDynamicCodeSupported false) must not
+    /// reach its runtimeconfig.json, where the native build's project settings could put them.
+    /// </summary>
+    [Fact]
+    public async Task TheBuiltAppStartedOnItsOwnIsTheJitBuildAndWarmsUp()
+    {
+        string stats = Path.Combine(_dir, "child.json");
+        var r = await ConsoleRunner.RunChildAsync(_dir, "render", Scene, "-o", "child.png", "--width", "48", "--height", "32", "--stats", stats);
+        Assert.True(r.Code == 0, r.Err);
+        Assert.True(JsonDocument.Parse(File.ReadAllText(stats)).RootElement.GetProperty("warmupMs").GetDouble() > 0);
+    }
+
+    [Theory]
+    [InlineData(1920, 1080, 16, 480, 270)]   // the benchmark: 1/16 of its samples
+    [InlineData(3840, 2160, 1024, 60, 33)]
+    [InlineData(48, 32, 4, 48, 32)]          // small renders warm up on the whole picture
+    [InlineData(1000000, 4, 16, 166666, 1)]  // never below one pixel on a side
+    public void TheWarmUpIsTheSamePictureScaledDownToAFewMillionSamples(int width, int height, int spp, int warmWidth, int warmHeight)
+    {
+        Image warm = RenderJob.WarmupImage(width, height, spp);
+        Assert.Equal((warmWidth, warmHeight), (warm.Width, warm.Height));
+        Assert.True((double)warm.Width * warm.Height * spp <= Math.Max(RenderJob.WarmupSamples, (double)width * height * spp));
+    }
+
+    [Fact]
+    public void AnUnknownKernelIsAOneLineErrorListingTheChoices()
+    {
+        string image = Path.Combine(_dir, "k.png");
+        var r = Run("render", Scene, "-o", image, "--kernel", "avx");
+        Assert.Equal(1, r.Code);
+        Assert.Equal("raylab: error: --kernel: unknown kernel 'avx'; expected one of: auto, scalar, vector128, vector256, vector512", r.Err.TrimEnd());
+        Assert.Empty(Directory.GetFiles(_dir));
+    }
+
+    [Fact]
+    public void TheQuincunxTracesEveryCentre()
+    {
+        long without = Stats("--sampler", "adaptive").GetProperty("rays").GetInt64();
+        JsonElement with = Stats("--sampler", "adaptive", "--quincunx");
+        Assert.True(with.GetProperty("quincunx").GetBoolean());
+        Assert.True(with.GetProperty("rays").GetInt64() >= without + (48 * 32 * 9 / 10), $"{with.GetProperty("rays")} vs {without}");
+    }
+}

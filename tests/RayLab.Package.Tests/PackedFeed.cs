@@ -1,0 +1,200 @@
+using System.Diagnostics;
+using System.Runtime.InteropServices;
+using System.Text;
+
+namespace RayLab.Package.Tests;
+
+/// <summary>
+/// The folder feed every packaging test uses, packed once per run: the core (<c>RayLab</c>), the reports
+/// (<c>RayLab.Reports</c>), and the tool as .NET 10's RID-specific tool — the pointer package <c>RayLab.Tool</c>,
+/// <c>RayLab.Tool.any</c> (framework-dependent) and, where it can be compiled (linux-x64), <c>RayLab.Tool.linux-x64</c>
+/// (Native AOT). bin/obj of the packs go under the temp folder, not the repository's; every child gets
+/// <see cref="Packages"/>, an NUGET_PACKAGES folder that starts empty.
+/// </summary>
+public sealed class PackedFeed : IAsyncLifetime
+{
+    private static readonly TimeSpan ChildTimeout = TimeSpan.FromMinutes(5);
+
+    /// <summary>The temp folder that holds the feed, the NuGet cache and every fresh project.</summary>
+    public string Root { get; } = Directory.CreateTempSubdirectory("raylab-packaging-").FullName;
+
+    /// <summary>The repository's folder (the one with RayLab.sln).</summary>
+    public string Repo { get; } = FindRepoRoot();
+
+    /// <summary>The folder feed.</summary>
+    public string Feed => Path.Combine(Root, "feed");
+
+    /// <summary>The children's NUGET_PACKAGES.</summary>
+    public string Packages => Path.Combine(Root, "nuget-packages");
+
+    /// <summary>The console's project file (the tool).</summary>
+    public string ConsoleProject => Path.Combine(Repo, "samples", "RayLab.Console", "RayLab.Console.csproj");
+
+    /// <summary>The packages' version (MinVer: changes with each commit).</summary>
+    public string Version { get; private set; } = "";
+
+    /// <summary>Whether this machine gets the native tool package: RayLab.Tool has one for linux-x64 only.</summary>
+    public static bool NativeToolHere => OperatingSystem.IsLinux() && RuntimeInformation.OSArchitecture == Architecture.X64;
+
+    public async ValueTask InitializeAsync()
+    {
+        string artifacts = Path.Combine(Root, "artifacts");
+        foreach (string project in new[] { Path.Combine(Repo, "src", "RayLab", "RayLab.csproj"), Path.Combine(Repo, "src", "RayLab.Reports", "RayLab.Reports.csproj") })
+        {
+            await RunAsync(Root, "dotnet", "pack", project, "-c", "Release", "-o", Feed, "--artifacts-path", artifacts);
+        }
+
+        await RunAsync(Root, "dotnet", "pack", ConsoleProject, "-c", "Release", "-o", Feed, "--artifacts-path", artifacts);
+        await RunAsync(Root, "dotnet", "pack", ConsoleProject, "-c", "Release", "-r", "any", "-o", Feed, "--artifacts-path", artifacts);
+        if (NativeToolHere)
+        {
+            await RunAsync(Root, "dotnet", "pack", ConsoleProject, "-c", "Release", "-r", "linux-x64", "-o", Feed, "--artifacts-path", artifacts);
+        }
+
+        string core = Directory.GetFiles(Feed, "RayLab.*.nupkg").Select(Path.GetFileName).OfType<string>()
+            .SingleOrDefault(f => !f.StartsWith("RayLab.Tool.", StringComparison.OrdinalIgnoreCase) && !f.StartsWith("RayLab.Reports.", StringComparison.OrdinalIgnoreCase))
+            ?? throw new InvalidOperationException($"no single RayLab.<version>.nupkg in the feed: {string.Join(", ", Directory.GetFiles(Feed).Select(Path.GetFileName))}");
+        Version = Path.GetFileNameWithoutExtension(core)["RayLab.".Length..];
+        foreach (string expected in new[] { $"RayLab.{Version}.snupkg", $"RayLab.Reports.{Version}.nupkg", $"RayLab.Tool.{Version}.nupkg", $"RayLab.Tool.any.{Version}.nupkg" })
+        {
+            if (!File.Exists(Path.Combine(Feed, expected)))
+            {
+                throw new InvalidOperationException($"the feed lacks {expected}: {string.Join(", ", Directory.GetFiles(Feed).Select(Path.GetFileName))}");
+            }
+        }
+    }
+
+    public ValueTask DisposeAsync()
+    {
+        try
+        {
+            Directory.Delete(Root, recursive: true);
+        }
+        catch (IOException)
+        {
+            // A child that was killed on timeout may still hold a file; the temp folder is not worth failing for.
+        }
+
+        return ValueTask.CompletedTask;
+    }
+
+    /// <summary>A fresh console app in <see cref="Root"/>/<paramref name="name"/> on <paramref name="packages"/> from the feed.</summary>
+    /// <returns>Its folder.</returns>
+    public string NewProject(string name, string[] packages, string extraItems = "")
+    {
+        string dir = Directory.CreateDirectory(Path.Combine(Root, name)).FullName;
+        string references = string.Join("\n", packages.Select(p => $"    <PackageReference Include=\"{p}\" Version=\"{Version}\" />"));
+        File.WriteAllText(Path.Combine(dir, name + ".csproj"), $"""
+            <Project Sdk="Microsoft.NET.Sdk">
+              <PropertyGroup>
+                <OutputType>Exe</OutputType>
+                <TargetFramework>net10.0</TargetFramework>
+                <ImplicitUsings>enable</ImplicitUsings>
+                <Nullable>enable</Nullable>
+              </PropertyGroup>
+              <ItemGroup>
+            {references}
+              </ItemGroup>
+              {extraItems}
+            </Project>
+            """);
+        WriteNugetConfig(dir);
+        return dir;
+    }
+
+    /// <summary>A nuget.config that adds the feed to the sources the machine already has (no &lt;clear/&gt;).</summary>
+    public void WriteNugetConfig(string dir) => File.WriteAllText(Path.Combine(dir, "nuget.config"), $"""
+        <?xml version="1.0" encoding="utf-8"?>
+        <configuration>
+          <packageSources>
+            <add key="raylab-test-feed" value="{Feed}" />
+          </packageSources>
+        </configuration>
+        """);
+
+    /// <summary>Runs a child with <see cref="Packages"/> as its NuGet cache (see <see cref="RunChildAsync"/>).</summary>
+    /// <returns>What the child wrote to stdout.</returns>
+    public Task<string> RunAsync(string workingDirectory, string fileName, params string[] args) =>
+        RunChildAsync(workingDirectory, Packages, null, fileName, args);
+
+    /// <summary>Runs a child process to completion; fails with its command line, stdout and stderr unless it exits 0.</summary>
+    /// <param name="workingDirectory">Where it runs.</param>
+    /// <param name="nugetPackages">Its NUGET_PACKAGES.</param>
+    /// <param name="setVariable">An environment variable set to 1 for it, or null.</param>
+    /// <param name="fileName">The program.</param>
+    /// <param name="args">Its arguments.</param>
+    /// <returns>What the child wrote to stdout.</returns>
+    public static async Task<string> RunChildAsync(string workingDirectory, string nugetPackages, string? setVariable, string fileName, params string[] args)
+    {
+        var psi = new ProcessStartInfo(fileName)
+        {
+            WorkingDirectory = workingDirectory,
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            UseShellExecute = false,
+        };
+        foreach (string arg in args)
+        {
+            psi.ArgumentList.Add(arg);
+        }
+
+        // What the test host inherited from the outer `dotnet test` build must not steer the child builds.
+        foreach (string key in psi.Environment.Keys.Where(k => k.StartsWith("MSBuild", StringComparison.OrdinalIgnoreCase)).ToList())
+        {
+            psi.Environment.Remove(key);
+        }
+
+        psi.Environment["NUGET_PACKAGES"] = nugetPackages;
+        psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
+        psi.Environment["DOTNET_NOLOGO"] = "1";
+        psi.Environment["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1";
+        psi.Environment.Remove("RAYLAB_NO_DISPATCH"); // the native tool chooses its build unless a test asks it not to
+        if (setVariable is not null)
+        {
+            psi.Environment[setVariable] = "1";
+        }
+
+        using var process = new Process { StartInfo = psi };
+        var stdout = new StringBuilder();
+        var stderr = new StringBuilder();
+        process.OutputDataReceived += (_, e) => { if (e.Data is not null) { lock (stdout) { stdout.AppendLine(e.Data); } } };
+        process.ErrorDataReceived += (_, e) => { if (e.Data is not null) { lock (stderr) { stderr.AppendLine(e.Data); } } };
+        process.Start();
+        process.BeginOutputReadLine();
+        process.BeginErrorReadLine();
+
+        string command = $"{fileName} {string.Join(' ', args)} (in {workingDirectory})";
+        using var timeout = CancellationTokenSource.CreateLinkedTokenSource(TestContext.Current.CancellationToken);
+        timeout.CancelAfter(ChildTimeout);
+        try
+        {
+            await process.WaitForExitAsync(timeout.Token);
+        }
+        catch (OperationCanceledException)
+        {
+            process.Kill(entireProcessTree: true);
+            throw new InvalidOperationException($"timed out after {ChildTimeout} or cancelled: {command}\n--- stdout\n{stdout}\n--- stderr\n{stderr}");
+        }
+
+        process.WaitForExit(); // drains the redirected streams
+        if (process.ExitCode != 0)
+        {
+            throw new InvalidOperationException($"exit code {process.ExitCode}: {command}\n--- stdout\n{stdout}\n--- stderr\n{stderr}");
+        }
+
+        return stdout.ToString();
+    }
+
+    private static string FindRepoRoot()
+    {
+        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
+        {
+            if (File.Exists(Path.Combine(dir.FullName, "RayLab.sln")))
+            {
+                return dir.FullName;
+            }
+        }
+
+        throw new InvalidOperationException($"RayLab.sln not found above {AppContext.BaseDirectory}");
+    }
+}

@@ -1,0 +1,116 @@
+using RayLab.Comparison;
+using RayLab.Sampling;
+
+namespace RayLab.Reports.Tests.Comparison;
+
+/// <summary>The report's arithmetic on results whose answers are known: slopes, costs to reach an RMSE, the winner.</summary>
+public class CompareReportTests
+{
+    [Fact]
+    public void TheSlopeOfAPowerLawIsItsExponent()
+    {
+        Assert.Equal(-0.75, CompareReport.Slope([(1, 3), (4, 3 * Math.Pow(4, -0.75)), (16, 3 * Math.Pow(16, -0.75)), (64, 3 * Math.Pow(64, -0.75))])!.Value, 12);
+        // Points with a zero coordinate cannot be on a log scale and are left out; one x is not enough for a line.
+        Assert.Equal(-0.5, CompareReport.Slope([(1, 2), (100, 0.2), (1000, 0)])!.Value, 12);
+        Assert.Null(CompareReport.Slope([(4, 1), (4, 2), (8, 0)]));
+    }
+
+    [Fact]
+    public void TheCostToReachAnRmseIsInterpolatedOnTheLogLogLine()
+    {
+        CompareResult[] line = [Result("jittered", 16, 0.25, 160), Result("jittered", 1, 4, 10), Result("jittered", 4, 1, 40)];
+
+        // RMSE 2 is halfway (in logs) from 4 to 1: halfway from 10 ms to 40 ms is 20 ms, from 1 ray to 4 is 2.
+        Assert.Equal(20, CompareReport.CostToReach(line, 2, r => r.Time.TotalMilliseconds)!.Value, 9);
+        Assert.Equal(2, CompareReport.CostToReach(line, 2, r => r.RaysPerPixel)!.Value, 9);
+        Assert.Equal(40, CompareReport.CostToReach(line, 1, r => r.Time.TotalMilliseconds)!.Value, 9);
+        Assert.Equal(10, CompareReport.CostToReach(line, 5, r => r.Time.TotalMilliseconds)!.Value, 9);
+        Assert.Null(CompareReport.CostToReach(line, 0.1, r => r.Time.TotalMilliseconds));
+    }
+
+    [Fact]
+    public void WithinOneLevelIsTheFastestSettingWithNoPixelMoreThanALevelOff()
+    {
+        CompareResult[] line = [Result("sobol", 4, 1, 50, max: 3), Result("sobol", 16, 0.5, 90, max: 1), Result("sobol", 64, 0.2, 70, max: 0)];
+
+        Assert.Same(line[2], CompareReport.WithinOneLevel(line));
+        Assert.Null(CompareReport.WithinOneLevel(line[..1]));
+    }
+
+    [Fact]
+    public void TheMarkdownRanksTheLinesAndLeavesOutSlopesItCannotFit()
+    {
+        CompareResult[] results =
+        [
+            Result("regular", 1, 4, 10), Result("regular", 4, 1, 20), Result("regular", 16, 0.25, 40),
+            Result("random", 1, 4, 10), Result("random", 4, 2, 40), Result("random", 16, 1, 160),
+            Adaptive(0, 1.00, 1.5, 30), Adaptive(3, 1.10, 1.2, 35),
+        ];
+
+        string md = new CompareReport("heading", "raylab compare x --out y", results, ["a note"]).Markdown();
+
+        Assert.Contains("| regular | -1.00 | -1.00 | 3 |", md, StringComparison.Ordinal);
+        Assert.Contains("| random | -0.50 | -0.50 | 3 |", md, StringComparison.Ordinal);
+        Assert.Contains("| adaptive c=0.1 | n/a | n/a (rays span less than 2×) | 2 |", md, StringComparison.Ordinal);
+        // Every line reaches 1.2 (the adaptive line's best); regular gets there first, between 10 and 20 ms (in logs).
+        Assert.Contains("## Time to RMSE ≤ 1.200 (the lowest RMSE every line reaches)", md, StringComparison.Ordinal);
+        double regular = Math.Exp(Math.Log(10) + (Math.Log(1.2 / 4) / Math.Log(1 / 4.0) * Math.Log(2)));
+        Assert.Contains(FormattableString.Invariant($"| regular | {regular:F1} | 1.00 |"), md, StringComparison.Ordinal);
+        Assert.Contains(FormattableString.Invariant($"| adaptive c=0.1 | 35.0 | {35 / regular:F2} | 1.10 |"), md, StringComparison.Ordinal);
+        // Every point sampler reaches 1 (random's best), adaptive does not.
+        Assert.Contains("## Time to RMSE ≤ 1.000 (the lowest RMSE every point sampler reaches)", md, StringComparison.Ordinal);
+        Assert.Contains("| adaptive c=0.1 | not reached | | |", md, StringComparison.Ordinal);
+        Assert.Contains("| random | 160.0 | 8.00 | 16.00 |", md, StringComparison.Ordinal);
+        Assert.Contains("- a note", md, StringComparison.Ordinal);
+        Assert.EndsWith("```\nraylab compare x --out y\n```\n", md, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void NoSlopeIsFittedThroughAPlateau()
+    {
+        // Falls as rays^-0.5 up to 16 rays, then stays flat: the slope is the falling part's, and says where it stops.
+        CompareResult[] results =
+        [
+            Adaptive(1, 1, 4, 10), Adaptive(2, 4, 2, 20), Adaptive(3, 16, 1, 40), Adaptive(4, 64, 0.99, 80), Adaptive(5, 256, 1.0, 160),
+            Result("random", 1, 4, 10), Result("random", 4, 3.9, 20), Result("random", 16, 3.95, 40),
+        ];
+
+        Assert.Equal(3, CompareReport.BeforePlateau([.. results[..5]]).Length);
+        string md = new CompareReport("heading", "raylab compare x --out y", results, []).Markdown();
+
+        Assert.Contains("| adaptive c=0.1 | -0.50 | -0.50 (fitted below 64 rays/px, where the error stops falling) | 3 |", md, StringComparison.Ordinal);
+        Assert.Contains("| random | n/a | n/a (the error stops falling at 4 rays/px) | 1 |", md, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void TheMarkdownSaysWhichTimesWereRenderedAgain()
+    {
+        CompareResult[] results = [Result("random", 1, 4, 1) with { Renders = 40, Retimed = true }, Result("random", 4, 2, 300) with { Renders = 3 }];
+
+        string md = new CompareReport("heading", "raylab compare x --out y", results, []).Markdown();
+
+        Assert.Contains("1 of 2 settings rendered in less than 250 ms", md, StringComparison.Ordinal);
+        Assert.Contains("up to 40 here", md, StringComparison.Ordinal);
+        Assert.DoesNotContain("rendered again", new CompareReport("h", "c", [results[1]], []).Markdown(), StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void TheMarkdownSaysWhichTimesAreOneLongRender()
+    {
+        CompareResult[] results = [Result("random", 1024, 0.1, 4000) with { TimedOnce = true }, Result("random", 4, 2, 300) with { Renders = 3 }];
+
+        string md = new CompareReport("heading", "raylab compare x --out y", results, []).Markdown();
+
+        Assert.Contains("1 of 2 settings took 1 s or more in their first render, which is their time", md, StringComparison.Ordinal);
+        Assert.DoesNotContain("first render", new CompareReport("h", "c", [results[1]], []).Markdown(), StringComparison.Ordinal);
+        Assert.Equal("time = median of 3 renders (1 for a render of 1 s or more)", CompareRunner.TimeRule(3));
+    }
+
+    private static CompareResult Result(string sampler, int spp, double rmse, double ms, int max = 9) => new(
+        CompareCase.Sampled(Samplers.Create(sampler, spp, 1), spp),
+        spp * 100L, spp, TimeSpan.FromMilliseconds(ms), new ImageError(rmse, rmse, max, 0.01), RenderKernel.Scalar);
+
+    private static CompareResult Adaptive(int depth, double raysPerPixel, double rmse, double ms) => new(
+        CompareCase.Adaptive(new AdaptiveSampler(0, depth, 0.1)),
+        (long)(raysPerPixel * 100), raysPerPixel, TimeSpan.FromMilliseconds(ms), new ImageError(rmse, rmse, 40, 0.01), RenderKernel.Scalar);
+}
