@@ -27,8 +27,8 @@ public class FrameBenchmarks
 
 /// <summary>
 /// The lab's adaptive sampler on the same frame at its default settings (depth 0–3, contrast 0.1), with and without
-/// the quincunx and the silhouette guard: the allocation column shows nothing per pixel (the corner grid, 8.3 MB,
-/// and O(threads + rows with silhouettes) besides).
+/// the quincunx and the silhouette guard: the allocation column shows nothing per pixel or per row (the renderer
+/// keeps its per-thread lines from one frame to the next).
 /// </summary>
 [MemoryDiagnoser]
 [SimpleJob(launchCount: 1, warmupCount: 2, iterationCount: 7)]

@@ -236,6 +236,28 @@ internal sealed class AdaptiveLattice
         /// <summary>What the pixel corners on the row's bottom edge hit, W + 1 entries.</summary>
         public readonly ReadOnlySpan<int> BottomCorners => _buffers.BottomCorners;
 
+        /// <summary>
+        /// The guard's notes on the blocks of block row <paramref name="blockRow"/>, <paramref name="count"/> of them:
+        /// kept while this thread renders that block row's rows, all −1 (untested) when it starts another.
+        /// </summary>
+        public readonly Span<sbyte> GuardBlocks(int blockRow, int count)
+        {
+            Buffers buffers = _buffers;
+            if (buffers.GuardBlocks.Length != count)
+            {
+                buffers.GuardBlocks = new sbyte[count];
+                buffers.GuardBlockRow = -1;
+            }
+
+            if (buffers.GuardBlockRow != blockRow)
+            {
+                buffers.GuardBlocks.AsSpan().Fill(-1);
+                buffers.GuardBlockRow = blockRow;
+            }
+
+            return buffers.GuardBlocks;
+        }
+
         /// <summary>Starts the row loop's band of rows <paramref name="first"/> to <paramref name="end"/> − 1 on this thread.</summary>
         public readonly void BeginBand(int first, int end)
         {
@@ -582,6 +604,12 @@ internal sealed class AdaptiveLattice
             /// <summary>Points of that band's bottom line traced again in double.</summary>
             public int BottomLineRetraced { get; set; }
 
+            /// <summary>The guard's notes on one block row's blocks (see <see cref="GuardBlocks"/>).</summary>
+            public sbyte[] GuardBlocks { get; set; } = [];
+
+            /// <summary>The block row <see cref="GuardBlocks"/> holds (−1: none).</summary>
+            public int GuardBlockRow { get; set; } = -1;
+
             /// <summary>The first row of the row loop's band this thread renders.</summary>
             public int BandFirst { get; set; }
 
@@ -610,7 +638,7 @@ internal sealed class AdaptiveLattice
                 BottomPoints.Clear();
                 AboveBottomPoints.Clear();
                 Stamp = 0;
-                CornerLine = DenseRow = -1;
+                CornerLine = DenseRow = GuardBlockRow = -1;
                 BottomLineRetraced = 0;
 
                 static T[] Sized<T>(T[] kept, int length) => kept.Length == length ? kept : new T[length];

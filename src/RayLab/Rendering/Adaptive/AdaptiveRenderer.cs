@@ -17,17 +17,27 @@ internal static class AdaptiveRenderer
 
     /// <summary>
     /// The guard for a flat pixel: false at once when its <see cref="GuardBlock"/>-pixel block is clear of every
-    /// silhouette (the test is conservative for every ray of the block, so for the pixel's too), else the pixel's own test.
+    /// silhouette (the test is conservative for every ray of the block, so for the pixel's too), else the pixel's own
+    /// test. A block's test serves its <see cref="GuardBlock"/> rows: the thread keeps it for the block row's other rows.
     /// </summary>
-    private static bool MayCross(SilhouetteGuard guard, int x, int row, long size, ref int block, ref bool blockFree)
+    private static bool MayCross(ref GuardState state, int x, int row)
     {
-        if (x / GuardBlock != block)
+        SilhouetteGuard guard = state.Guard!;
+        long size = state.Size;
+        if (x / GuardBlock != state.Block)
         {
-            block = x / GuardBlock;
-            blockFree = !guard.MayCross((long)block * GuardBlock * size, (long)(row / GuardBlock) * GuardBlock * size, GuardBlock * size);
+            int block = state.Block = x / GuardBlock;
+            sbyte known = state.Known[block];
+            if (known < 0)
+            {
+                known = guard.MayCross((long)block * GuardBlock * size, (long)(row / GuardBlock) * GuardBlock * size, GuardBlock * size) ? (sbyte)0 : (sbyte)1;
+                state.Known[block] = known;
+            }
+
+            state.BlockFree = known == 1;
         }
 
-        return !blockFree && guard.MayCross(x * size, row * size, size);
+        return !state.BlockFree && guard.MayCross(x * size, row * size, size);
     }
 
     /// <summary>How many entries from the start of <paramref name="line"/> equal <paramref name="id"/>.</summary>
@@ -49,18 +59,18 @@ internal static class AdaptiveRenderer
     /// Writes the flat pixels of the run of <paramref name="run"/> from <paramref name="x"/> up to the first one a
     /// silhouette may cross (<see cref="MayCross"/>); returns how many it wrote.
     /// </summary>
-    private static int FillGuarded(SilhouetteGuard guard, Span<Rgb24> pixels, Span<float> counts, int x, int run, int row, long size, Rgb24 colour, ref int block, ref bool blockFree)
+    private static int FillGuarded(ref GuardState state, Span<Rgb24> pixels, Span<float> counts, int x, int run, int row, Rgb24 colour)
     {
         int start = x, end = x + run;
         while (x < end)
         {
-            if (MayCross(guard, x, row, size, ref block, ref blockFree))
+            if (MayCross(ref state, x, row))
             {
                 break;
             }
 
             // The rest of the pixel's block is clear too when the block is.
-            int clear = blockFree ? Math.Min(end, (block + 1) * GuardBlock) : x + 1;
+            int clear = state.BlockFree ? Math.Min(end, (state.Block + 1) * GuardBlock) : x + 1;
             Fill(pixels[x..clear], counts.IsEmpty ? default : counts[x..clear], colour);
             x = clear;
         }
@@ -104,7 +114,7 @@ internal static class AdaptiveRenderer
             Span<Rgb24> pixels = image.GetRowSpan(row);
             source.BeginRow(row);
             Span<float> counts = raysPerPixel is null ? default : raysPerPixel.AsSpan((int)((long)row * pixels.Length), pixels.Length);
-            var guard = new GuardState(lattice.Guard, lattice.Size);
+            var guard = new GuardState(lattice.Guard, lattice.Size, lattice.Guard is null ? default : source.GuardBlocks(row / GuardBlock, (pixels.Length / GuardBlock) + 1));
             for (int x = 0; x < pixels.Length; x++)
             {
                 // Runs first: with neither minimum depth nor quincunx, flat pixels; with a minimum depth, uniform ones.
@@ -154,7 +164,7 @@ internal static class AdaptiveRenderer
 
             return guard.Guard is null
                 ? Fill(pixels.Slice(x, run), counts.IsEmpty ? default : counts.Slice(x, run), lattice.Level(id))
-                : FillGuarded(guard.Guard, pixels, counts, x, run, row, guard.Size, lattice.Level(id), ref guard.Block, ref guard.BlockFree);
+                : FillGuarded(ref guard, pixels, counts, x, run, row, lattice.Level(id));
         }
 
         /// <summary>
@@ -178,11 +188,12 @@ internal static class AdaptiveRenderer
         }
     }
 
-    /// <summary>A row's guard and the block its last test cleared (see <see cref="MayCross"/>).</summary>
-    private struct GuardState(SilhouetteGuard? guard, long size)
+    /// <summary>A row's guard, what this thread knows of its block row's blocks (−1 untested, 0 may be crossed, 1 clear), and the block its last test was in.</summary>
+    private ref struct GuardState(SilhouetteGuard? guard, long size, Span<sbyte> known)
     {
         public readonly SilhouetteGuard? Guard = guard;
         public readonly long Size = size;
+        public readonly Span<sbyte> Known = known;
         public int Block = -1;
         public bool BlockFree;
     }
