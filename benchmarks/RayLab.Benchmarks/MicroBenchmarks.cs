@@ -1,8 +1,8 @@
 using BenchmarkDotNet.Attributes;
 using System.Runtime.Intrinsics;
 using RayLab.Cameras;
-using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Simd;
 
 namespace RayLab.Benchmarks;
 
