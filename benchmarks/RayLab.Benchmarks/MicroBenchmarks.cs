@@ -1,6 +1,7 @@
 using BenchmarkDotNet.Attributes;
 using System.Runtime.Intrinsics;
 using RayLab.Cameras;
+using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
 using RayLab.Simd;
 
