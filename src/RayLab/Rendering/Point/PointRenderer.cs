@@ -2,6 +2,7 @@ using System.Diagnostics;
 using RayLab.Cameras;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Simd;
 
 namespace RayLab.Rendering.Point;
 
