@@ -40,21 +40,21 @@ internal static class Permutation
         do
         {
             v ^= p;
-            v *= 0xe170893du;
+            v *= Kensler.PermuteMultiplier1;
             v ^= p >> 16;
             v ^= (v & w) >> 4;
             v ^= p >> 8;
-            v *= 0x0929eb3fu;
+            v *= Kensler.PermuteMultiplier2;
             v ^= p >> 23;
             v ^= (v & w) >> 1;
             v *= 1u | (p >> 27);
-            v *= 0x6935fa69u;
+            v *= Kensler.PermuteMultiplier3;
             v ^= (v & w) >> 11;
-            v *= 0x74dcb303u;
+            v *= Kensler.PermuteMultiplier4;
             v ^= (v & w) >> 2;
-            v *= 0x9e501cc3u;
+            v *= Kensler.PermuteMultiplier5;
             v ^= (v & w) >> 2;
-            v *= 0xc860a3dfu;
+            v *= Kensler.PermuteMultiplier6;
             v &= w;
             v ^= v >> 5;
         }
