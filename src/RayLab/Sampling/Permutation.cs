@@ -29,13 +29,7 @@ internal static class Permutation
     internal static int PermutationElement(int i, int l, uint p)
     {
         uint length = (uint)l;
-        uint w = length - 1;
-        w |= w >> 1;
-        w |= w >> 2;
-        w |= w >> 4;
-        w |= w >> 8;
-        w |= w >> 16;
-
+        uint w = Mask(length);
         uint v = (uint)i;
         do
         {
@@ -64,5 +58,19 @@ internal static class Permutation
         // not a multiple of l the result then repeats values (p = 0xffffffff, l = 3 gives 1, 0, 0). Summing in
         // 64 bits gives Kensler's value whenever his sum does not wrap and keeps the map a bijection always.
         return (int)(((ulong)v + p) % length);
+    }
+
+    /// <summary>Kensler's mask w for a permutation of <paramref name="length"/> elements: the next power of two ≥ l, less one.</summary>
+    /// <param name="length">l, ≥ 1.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static uint Mask(uint length)
+    {
+        uint w = length - 1;
+        w |= w >> 1;
+        w |= w >> 2;
+        w |= w >> 4;
+        w |= w >> 8;
+        w |= w >> 16;
+        return w;
     }
 }

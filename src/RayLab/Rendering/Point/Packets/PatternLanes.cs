@@ -151,18 +151,12 @@ internal readonly struct LaneLength<TL>
     /// <param name="length">The permutation length.</param>
     public LaneLength(int length)
     {
-        uint w = (uint)length - 1;
-        w |= w >> 1;
-        w |= w >> 2;
-        w |= w >> 4;
-        w |= w >> 8;
-        w |= w >> 16;
         _length = (uint)length;
         _remainderMultiplier = unchecked((ulong.MaxValue / _length) + 1);
         IsPowerOfTwo = int.IsPow2(length);
         Length = TL.BroadcastBits((uint)length);
         Last = TL.BroadcastBits((uint)length - 1);
-        Mask = TL.BroadcastBits(w);
+        Mask = TL.BroadcastBits(Permutation.Mask((uint)length));
     }
 
     /// <summary>True when l is a power of two (p mod l is p and (l − 1)).</summary>
