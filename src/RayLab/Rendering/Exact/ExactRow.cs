@@ -109,6 +109,7 @@ internal sealed class ExactRow
 
     // Lists the outlines that reach into the row [y0, y1] and cuts it at their breaks (each an event of its
     // outline's); true when one of them is a horizontal segment.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private bool CutAtBreaks(double y0, double y1)
     {
         _cuts.Clear();
@@ -135,6 +136,7 @@ internal sealed class ExactRow
     }
 
     // Cuts the row (y0, y1) at every crossing of two outlines inside it (an event of each).
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void CutAtCrossings(double y0, double y1)
     {
         OutlineSet.Crossing[] crossings = _outlines.Crossings;

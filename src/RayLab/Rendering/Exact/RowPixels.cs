@@ -66,6 +66,7 @@ internal sealed class RowPixels
     }
 
     /// <summary>Adds the spans (the pixels wholly inside pieces) to <see cref="Values"/>: once per row, after every piece.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public void SumSpans()
     {
         double r = 0, g = 0, b = 0;

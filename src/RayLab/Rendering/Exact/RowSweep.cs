@@ -102,6 +102,7 @@ internal sealed class RowSweep
     }
 
     // Removes repeated cuts from the sorted list; returns how many remain.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static int Distinct(List<double> cuts)
     {
         int m = 1;
@@ -118,6 +119,7 @@ internal sealed class RowSweep
     }
 
     // The order at the row's top: every branch at the first strip's middle ym, each gap beginning at `top`.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void Start(double top, double ym)
     {
         Span<Branch> branches = _branches.At(ym);
@@ -136,6 +138,7 @@ internal sealed class RowSweep
 
     // Marks the outlines with an event at or above `cut` (from event e on) as moved, and those of a crossing as
     // crossed; the outlines still listed as moved from a thin strip above stay moved. Returns the next event.
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private int MarkMoved(List<(double Y, int Outline, bool Crossing)> events, int e, double cut)
     {
         foreach (int i in _moved)
