@@ -2,7 +2,7 @@ using RayLab.Sampling;
 using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Rendering.Point;
-using RayLab.Rendering.Point.Packets;
+using RayLab.Simd;
 
 namespace RayLab.Rendering.Adaptive;
 

@@ -1,6 +1,7 @@
 using RayLab.Cameras;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Simd;
 
 namespace RayLab.Rendering.Point;
 
