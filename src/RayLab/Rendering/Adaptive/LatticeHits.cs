@@ -2,7 +2,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
-using RayLab.Rendering.Point.Packets;
+using RayLab.Simd;
 
 namespace RayLab.Rendering.Adaptive;
 

@@ -1,7 +1,7 @@
 using RayLab.Cameras;
 using RayLab.Geometry;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// One frame's constants for the packet kernel, in float: the window vectors a, b, c, and per sphere its

@@ -4,7 +4,7 @@ using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using RayLab.Sampling;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// One of Kensler's permutations (<see cref="Permutation.PermutationElement"/>) per lane: the lane's pattern

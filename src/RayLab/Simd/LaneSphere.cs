@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
 using RayLab.Geometry;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// One sphere against a packet of rays in float: the stable discriminant <c>Δ = r² − |f⊥|²</c>, <c>f⊥ = f − (f·d / d·d) d</c>
