@@ -2,7 +2,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using System.Runtime.Intrinsics.X86;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>16 float lanes (AVX-512). See <see cref="ILanes{TSelf}"/>.</summary>
 /// <param name="V">The register.</param>

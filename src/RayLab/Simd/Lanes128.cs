@@ -2,7 +2,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using System.Runtime.Intrinsics.X86;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>4 float lanes (SSE or Arm NEON). See <see cref="ILanes{TSelf}"/>.</summary>
 /// <param name="V">The register.</param>
