@@ -1,7 +1,6 @@
 using RayLab.Sampling;
 using System.Collections.Concurrent;
 using RayLab.Cameras;
-using RayLab.Rendering.Point;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Adaptive;
@@ -52,7 +51,7 @@ internal sealed class AdaptiveLattice
         _corners = GC.AllocateUninitializedArray<int>(checked(stride * (plane.Height + 1)));
         _topPoints = new long[]?[plane.Height];
         _bottomPoints = new long[]?[plane.Height];
-        Kernel = PointRenderer.ChooseKernel(options.Kernel, scene, plane, out PacketFrame? frame, out _);
+        Kernel = KernelChoice.Choose(options.Kernel, scene, plane, out PacketFrame? frame, out _);
         _hits = Kernel == RenderKernel.Scalar ? null : LatticeHits.TryCreate(scene, plane, _size, frame);
         if (minDepth > 0)
         {
@@ -128,9 +127,9 @@ internal sealed class AdaptiveLattice
 
         return Kernel switch
         {
-            RenderKernel.Vector512 => TraceLine<Lanes512>(_hits, ly, lxStart, lxStep, ids),
-            RenderKernel.Vector256 => TraceLine<Lanes256>(_hits, ly, lxStart, lxStep, ids),
-            _ => TraceLine<Lanes128>(_hits, ly, lxStart, lxStep, ids),
+            RenderKernel.Vector512 => _hits.TraceRow<Lanes512>(ly, lxStart, lxStep, ids),
+            RenderKernel.Vector256 => _hits.TraceRow<Lanes256>(ly, lxStart, lxStep, ids),
+            _ => _hits.TraceRow<Lanes128>(ly, lxStart, lxStep, ids),
         };
     }
 
@@ -202,11 +201,6 @@ internal sealed class AdaptiveLattice
 
     /// <summary>Gives a thread's buffers back for the next thread.</summary>
     public void Return(Source source) => _buffers.Add(source.Storage);
-
-    private int TraceLine<TL>(LatticeHits hits, long ly, long lxStart, long lxStep, Span<int> ids)
-        where TL : struct, ILanes<TL> => _plane.IsOrthographic
-            ? hits.TraceRow<TL, OrthographicProjection>(ly, lxStart, lxStep, ids)
-            : hits.TraceRow<TL, PerspectiveProjection>(ly, lxStart, lxStep, ids);
 
     private int Trace(long lx, long ly) => LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lx, ly);
 
