@@ -46,7 +46,10 @@ public sealed class Renderer
     /// </summary>
     public CancellationToken CancellationToken { get; init; }
 
-    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken);
+    /// <summary>The per-thread buffers kept from one render to the next (the adaptive renderer's lines and caches).</summary>
+    private readonly ScratchPool _pool = new();
+
+    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool);
 
     /// <summary>
     /// Renders <paramref name="scene"/> into <paramref name="image"/> by <paramref name="method"/>: the one place

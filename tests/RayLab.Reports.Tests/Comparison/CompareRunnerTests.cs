@@ -146,11 +146,7 @@ public sealed class CompareRunnerTests : IDisposable
     [Fact]
     public void TheOwnMethodGuidesSnippetIsWhatTheSampleRuns()
     {
-        string repo = AppContext.BaseDirectory;
-        while (!File.Exists(Path.Combine(repo, "RayLab.sln")))
-        {
-            repo = Path.GetDirectoryName(repo) ?? throw new InvalidOperationException("RayLab.sln not found above the test's folder");
-        }
+        string repo = RepoPaths.Root();
 
         string readme = File.ReadAllText(Path.Combine(repo, "docs", "own-method.md"));
         string sample = File.ReadAllText(Path.Combine(repo, "samples", "RayLab.OwnMethod", "SpeedAgainstError.cs"));
