@@ -38,16 +38,15 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         _inverseColumns = TL.Broadcast(1f / sampler.Columns);
         _columnCount = TL.BroadcastBits((uint)sampler.Columns);
         _columnShift = BitOperations.Log2((uint)sampler.Columns);
-        const double Kensler = 1.0 / 4294967808.0;
-        _x = new WholeHashCellFormula(new CellFormula(Kensler, sampler.Rows, sampler.Columns));
-        _y = new WholeHashCellFormula(new CellFormula(Kensler, count, 1));
+        _x = new WholeHashCellFormula(new CellFormula(Kensler.RandFloatScale, sampler.Rows, sampler.Columns));
+        _y = new WholeHashCellFormula(new CellFormula(Kensler.RandFloatScale, count, 1));
 
         // 4, 16, 64, 256, 1024 … spp: N, m and n all powers of two, the cell formulas without a branch.
         _powersOfTwo = int.IsPow2(count) && int.IsPow2(sampler.Columns) && int.IsPow2(sampler.Rows);
         if (_powersOfTwo)
         {
-            _xPowerOfTwo = new PowerOfTwoCellFormula(Kensler, sampler.Rows, sampler.Columns);
-            _yPowerOfTwo = new PowerOfTwoCellFormula(Kensler, count, 1);
+            _xPowerOfTwo = new PowerOfTwoCellFormula(Kensler.RandFloatScale, sampler.Rows, sampler.Columns);
+            _yPowerOfTwo = new PowerOfTwoCellFormula(Kensler.RandFloatScale, count, 1);
         }
 
         // The column and row permutations have only m and n elements per pixel, where a pixel has N ≈ m·n samples:
@@ -68,18 +67,18 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
     public void BeginPacket(int x0, int row)
     {
         TL p = LaneHash.PixelKeys<TL>(x0, row, _salt);
-        _index.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x51633e2du)), _all, _scratch);
-        _column.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x68bc21ebu)), _columns, _scratch);
-        _row.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x02e5be93u)), _rows, _scratch);
+        _index.Set(TL.MultiplyBits(p, TL.BroadcastBits(Kensler.IndexSalt)), _all, _scratch);
+        _column.Set(TL.MultiplyBits(p, TL.BroadcastBits(Kensler.ColumnSalt)), _columns, _scratch);
+        _row.Set(TL.MultiplyBits(p, TL.BroadcastBits(Kensler.RowSalt)), _rows, _scratch);
         if (_tabled)
         {
             (_columnsLow, _columnsHigh) = Tabulate(_column, _columns, _m);
             (_rowsLow, _rowsHigh) = Tabulate(_row, _rows, _n);
         }
 
-        _jx = TL.MultiplyBits(p, TL.BroadcastBits(0x967a889bu));
+        _jx = TL.MultiplyBits(p, TL.BroadcastBits(Kensler.JitterXSalt));
         _jxMultiplier = TL.ShiftRightBits(_jx, 18) | TL.BroadcastBits(1);
-        _jy = TL.MultiplyBits(p, TL.BroadcastBits(0x368cc8b7u));
+        _jy = TL.MultiplyBits(p, TL.BroadcastBits(Kensler.JitterYSalt));
         _jyMultiplier = TL.ShiftRightBits(_jy, 18) | TL.BroadcastBits(1);
     }
 
@@ -206,11 +205,11 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         i = TL.Xor(i, p);
         i = TL.Xor(i, TL.ShiftRightBits(i, 17));
         i = TL.Xor(i, TL.ShiftRightBits(i, 10));
-        i = TL.MultiplyBits(i, TL.BroadcastBits(0xb36534e5u));
+        i = TL.MultiplyBits(i, TL.BroadcastBits(Kensler.RandFloatMultiplier1));
         i = TL.Xor(i, TL.ShiftRightBits(i, 12));
         i = TL.Xor(i, TL.ShiftRightBits(i, 21));
-        i = TL.MultiplyBits(i, TL.BroadcastBits(0x93fc4795u));
-        i = TL.Xor(i, TL.BroadcastBits(0xdf6e307fu));
+        i = TL.MultiplyBits(i, TL.BroadcastBits(Kensler.RandFloatMultiplier2));
+        i = TL.Xor(i, TL.BroadcastBits(Kensler.RandFloatXor));
         i = TL.Xor(i, TL.ShiftRightBits(i, 17));
         return TL.MultiplyBits(i, multiplier);
     }

@@ -10,7 +10,6 @@ namespace RayLab.Simd;
 internal struct HammersleyLanes<TL> : ILaneSampler<TL>
     where TL : struct, ILanes<TL>
 {
-    private const uint ShiftSalt = 0x68e31da4u;
 
     private readonly uint _salt;
     private readonly double[] _unshifted;
@@ -32,7 +31,7 @@ internal struct HammersleyLanes<TL> : ILaneSampler<TL>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void BeginPacket(int x0, int row)
     {
-        TL h1 = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(ShiftSalt)));
+        TL h1 = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(HammersleySampler.ShiftSalt)));
         _shiftX = TL.Top24(h1);
         _shiftY = TL.Top24(TL.Hash(h1));
     }

@@ -25,9 +25,9 @@ internal struct LanePermutation<TL>
         _p8 = TL.ShiftRightBits(_p, 8);
         _p23 = TL.ShiftRightBits(_p, 23);
 
-        // The listing multiplies by 1 | (p ≫ 27) and then by 0x6935fa69; products modulo 2³² associate, so one
+        // The listing multiplies by 1 | (p ≫ 27) and then by Kensler.PermuteMultiplier3; products modulo 2³² associate, so one
         // multiplier per lane does both.
-        _multiplier = TL.MultiplyBits(TL.ShiftRightBits(_p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(0x6935fa69u));
+        _multiplier = TL.MultiplyBits(TL.ShiftRightBits(_p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(Kensler.PermuteMultiplier3));
 
         // The final rotation (v + p) mod l, with v < l, is v + (p mod l) less l if that reaches l: p mod l is
         // made here once per pixel, a mask when l is a power of two, else Lemire's multiply-only remainder.
@@ -118,20 +118,20 @@ internal struct LanePermutation<TL>
     private readonly TL Round(TL v, TL w)
     {
         v = TL.Xor(v, _p);
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0xe170893du));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier1));
         v = TL.Xor(v, _p16);
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 4));
         v = TL.Xor(v, _p8);
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0x0929eb3fu));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier2));
         v = TL.Xor(v, _p23);
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 1));
         v = TL.MultiplyBits(v, _multiplier);
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 11));
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0x74dcb303u));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier4));
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0x9e501cc3u));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier5));
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0xc860a3dfu));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier6));
         v &= w;
         return TL.Xor(v, TL.ShiftRightBits(v, 5));
     }
@@ -149,18 +149,12 @@ internal readonly struct LaneLength<TL>
     /// <param name="length">The permutation length.</param>
     public LaneLength(int length)
     {
-        uint w = (uint)length - 1;
-        w |= w >> 1;
-        w |= w >> 2;
-        w |= w >> 4;
-        w |= w >> 8;
-        w |= w >> 16;
         _length = (uint)length;
         _remainderMultiplier = unchecked((ulong.MaxValue / _length) + 1);
         IsPowerOfTwo = int.IsPow2(length);
         Length = TL.BroadcastBits((uint)length);
         Last = TL.BroadcastBits((uint)length - 1);
-        Mask = TL.BroadcastBits(w);
+        Mask = TL.BroadcastBits(Permutation.Mask((uint)length));
     }
 
     /// <summary>True when l is a power of two (p mod l is p and (l − 1)).</summary>

@@ -12,8 +12,6 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
 {
     private readonly float[] _block = PointBlock.Create<TL>();
-    private const uint ColumnSalt = 0x2f5a1c37u;
-    private const uint RowSalt = 0xc13fa9a9u;
 
     private readonly uint _salt;
     private readonly int _n;
@@ -50,7 +48,7 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     public void BeginPacket(int x0, int row)
     {
         _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
-        TL columnKeys = TL.Xor(_keys, TL.BroadcastBits(ColumnSalt)), rowKeys = TL.Xor(_keys, TL.BroadcastBits(RowSalt));
+        TL columnKeys = TL.Xor(_keys, TL.BroadcastBits(MultiJitteredSampler.ColumnSalt)), rowKeys = TL.Xor(_keys, TL.BroadcastBits(MultiJitteredSampler.RowSalt));
         for (int k = 0; k < _n; k++)
         {
             _columns[k].Set(LaneHash.SampleHash(columnKeys, k), _length, _scratch);

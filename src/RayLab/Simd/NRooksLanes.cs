@@ -37,8 +37,8 @@ internal struct NRooksLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     public void BeginPacket(int x0, int row)
     {
         _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
-        _columns.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(0xa511e9b3u)), _length, _scratch);
-        _rows.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(0x63d83595u)), _length, _scratch);
+        _columns.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(NRooksSampler.ColumnSalt)), _length, _scratch);
+        _rows.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(NRooksSampler.RowSalt)), _length, _scratch);
     }
 
     /// <inheritdoc />

@@ -16,7 +16,7 @@ namespace RayLab.Simd;
 /// <para>
 /// The kernel tests each ray in float with the stable discriminant <c>Δ = r² − |f|²</c>,
 /// <c>f = (o − C) − ((o − C)·d / d·d) d</c> (Ray Tracing Gems, ch. 7). Its rounding error is below
-/// <c>32 ε (r² + |o − C|²)</c> with ε = 2⁻²³ (a generous multiple of the error analysis), so where
+/// <see cref="FloatRounding.DiscriminantError"/>, so where
 /// |Δ| exceeds that bound the float answer — hit or miss — is the exact one; only where it does not (rays
 /// within float resolution of a silhouette) is the sample traced again in double (Shewchuk's adaptive
 /// predicates: fast float with an error bound, exact fallback only where the bound is crossed).
@@ -34,9 +34,6 @@ namespace RayLab.Simd;
 /// </remarks>
 internal sealed class PacketFrame
 {
-    /// <summary>Twice float's unit roundoff.</summary>
-    private const double Epsilon = 1.0 / (1 << 23);
-
     /// <summary>The most (in pixels) that float rounding may move a ray's direction or origin: 1/50 pixel.</summary>
     private const double Resolution = 0.02;
 
@@ -60,7 +57,7 @@ internal sealed class PacketFrame
         {
             Sphere sphere = spheres[k];
             (Double3 offset, double largest) = rays.SphereOffset(sphere.Center);
-            double bound = 32 * Epsilon * ((sphere.Radius * sphere.Radius) + (largest * largest));
+            double bound = FloatRounding.DiscriminantError(sphere.Radius, largest);
             Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(scene.ColourOf(kept[k])));
             depthBounds[k] = DepthBound.Of(bound, sphere.Radius, largest);
             reach[k] = 3e-3 * (sphere.Radius + largest);
@@ -199,7 +196,7 @@ internal sealed class PacketFrame
                 return false;
             }
 
-            if (!(8 * Epsilon * rays.OriginRoundingSize(largest) <= Resolution * pixel))
+            if (!(8 * FloatRounding.MachineEpsilon * rays.OriginRoundingSize(largest) <= Resolution * pixel))
             {
                 reason = $"float cannot resolve the ray origins a pixel apart near sphere {k}";
                 return false;
@@ -208,7 +205,7 @@ internal sealed class PacketFrame
             kept.Add(k);
         }
 
-        if (!(8 * Epsilon * rays.DirectionRoundingSize <= Resolution * pixel))
+        if (!(8 * FloatRounding.MachineEpsilon * rays.DirectionRoundingSize <= Resolution * pixel))
         {
             reason = "float cannot resolve the ray directions a pixel apart (field of view too narrow for the image size)";
             return false;

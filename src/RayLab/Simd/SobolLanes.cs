@@ -14,7 +14,6 @@ internal struct SobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
 {
     private readonly float[] _block = PointBlock.Create<TL>();
-    private const uint IndexSalt = 0x1b873593u;
 
     private readonly uint _salt;
     private TL _indexSeed, _xSeed, _ySeed;
@@ -26,7 +25,7 @@ internal struct SobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void BeginPacket(int x0, int row)
     {
-        _indexSeed = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(IndexSalt)));
+        _indexSeed = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(SobolSampler.IndexSalt)));
         _xSeed = TL.Hash(_indexSeed);
         _ySeed = TL.Hash(_xSeed);
     }
@@ -71,10 +70,10 @@ internal struct SobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static TL LaineKarras(TL x)
     {
-        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0x6c50b47cu)));
-        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0xb82f1e52u)));
-        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0xc7afe638u)));
-        return TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0x8d22f6e6u)));
+        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras1)));
+        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras2)));
+        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras3)));
+        return TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras4)));
     }
 
     /// <summary>Bit j of the result is the XOR of the bits k ⊇ j of <paramref name="x"/>: <see cref="LowDiscrepancy.SobolDimension1"/> before its final reversal.</summary>
