@@ -2,7 +2,7 @@ using ArchUnitNET.Domain;
 using ArchUnitNET.Domain.Dependencies;
 using ArchUnitNET.Loader;
 
-namespace RayLab.Tests;
+namespace RayLab.Tests.Architecture;
 
 /// <summary>
 /// The core's layers (docs/architecture.md), read from its IL: every type's dependencies on the core's other types,
@@ -11,7 +11,7 @@ namespace RayLab.Tests;
 /// in <c>RayLab.Sampling</c>) while their files sit in a concept folder: those are listed here by name with their
 /// folder's layer, and a new type in one of those namespaces fails <see cref="EveryTypeHasALayer"/> until it is listed.
 /// </summary>
-public sealed class ArchitectureTests
+public sealed class LayerTests
 {
     /// <summary>The layers, bottom up, each with the layers it may use (itself always).</summary>
     private static readonly Dictionary<string, string[]> Allowed = new()
@@ -80,13 +80,13 @@ public sealed class ArchitectureTests
         ["RayLab.RenderMethod"] = "Facade",
     };
 
-    private static readonly Lazy<Architecture> Core = new(() => new ArchLoader().LoadAssemblies(typeof(Scene).Assembly).Build());
+    private static readonly Lazy<ArchUnitNET.Domain.Architecture> Core = new(() => new ArchLoader().LoadAssemblies(typeof(Scene).Assembly).Build());
 
     [Fact]
     public void EveryTypeHasALayer()
     {
         string[] unplaced = [.. CoreTypes().Where(type => LayerOf(type) is null).Select(type => type.FullName)];
-        Assert.True(unplaced.Length == 0, $"No layer for: {string.Join(", ", unplaced)} (list it in {nameof(ArchitectureTests)}).");
+        Assert.True(unplaced.Length == 0, $"No layer for: {string.Join(", ", unplaced)} (list it in {nameof(LayerTests)}).");
     }
 
     [Fact]
