@@ -16,9 +16,8 @@ public sealed partial class LongMethodTests
     // list may only shrink.
     private static readonly string[] Pending =
     [
-        "AdaptiveRenderer.cs: Render",
         "LatticeHits.cs: TraceRow",
-        "PacketKernel.cs: LaneColour",
+        "PacketKernel.cs: SumPacket",
         "ComparePlan.cs: BuiltIn",
         "CompareReport.cs: Markdown",
         "CompareRunner.cs: Measure",
@@ -29,6 +28,7 @@ public sealed partial class LongMethodTests
     {
         string src = Path.Combine(RepositoryRoot(), "src");
         var offenders = new List<string>();
+        var unexplained = new HashSet<string>();
         int methods = 0;
         foreach (string file in SourceFiles(src))
         {
@@ -38,8 +38,14 @@ public sealed partial class LongMethodTests
             foreach (SourceMethods.Method method in SourceMethods.Find(text))
             {
                 methods++;
-                if (method.Lines > Limit && !SourceMethods.HasReason(lines, method.SignatureLine)
-                    && !Pending.Contains($"{Path.GetFileName(file)}: {method.Name}"))
+                if (method.Lines <= Limit || SourceMethods.HasReason(lines, method.SignatureLine))
+                {
+                    continue;
+                }
+
+                string name = $"{Path.GetFileName(file)}: {method.Name}";
+                unexplained.Add(name);
+                if (!Pending.Contains(name))
                 {
                     offenders.Add($"{relative}:{method.SignatureLine} {method.Name} is {method.Lines} lines");
                 }
@@ -47,6 +53,8 @@ public sealed partial class LongMethodTests
         }
 
         Assert.True(methods > 300, $"the parser found only {methods} methods in {src}");
+        string[] stale = [.. Pending.Except(unexplained)];
+        Assert.True(stale.Length == 0, $"No longer long or now explained, so take them off the pending list: {string.Join(", ", stale)}");
         Assert.True(offenders.Count == 0, $"Shorten these methods or give each a '// Long: reason' line above it:\n{string.Join('\n', offenders)}");
     }
 
@@ -82,6 +90,8 @@ public sealed partial class LongMethodTests
 
                 public static C operator +(C a, C b) { return a; }
 
+                private static List<T> Make<T, U>(T t) where T : struct { return [t]; }
+
                 extension(string s)
                 {
                     public int Twice(int k = 2) { return k * s.Length; }
@@ -90,7 +100,7 @@ public sealed partial class LongMethodTests
             """;
         string[] lines = Source.Split('\n');
         SourceMethods.Method[] found = [.. SourceMethods.Find(Source)];
-        Assert.Equal(["C", "Pair", "operator", "Twice"], found.Select(m => m.Name));
+        Assert.Equal(["C", "Pair", "operator", "Make", "Twice"], found.Select(m => m.Name));
         SourceMethods.Method pair = found[1];
         Assert.Equal((14, 10), (pair.SignatureLine, pair.Lines));
         Assert.True(SourceMethods.HasReason(lines, pair.SignatureLine));
@@ -198,7 +208,7 @@ internal static partial class SourceMethods
     }
 
     // The name of the member whose header this is, when it has a parameter list: the identifier just before the first
-    // "(" or "<…>(" at depth 0 (so not a tuple return type), or "operator"; null for any other block.
+    // "(" or "<…>(" (so not a tuple return type's), or "operator"; null for any other block.
     private static string? MethodName(string header)
     {
         if (!ParameterListEnd().IsMatch(header))
@@ -211,8 +221,47 @@ internal static partial class SourceMethods
             return "operator";
         }
 
-        Match m = Name().Match(header);
-        return m.Success && !Keywords.Contains(m.Groups[1].Value) && !header.Split('(')[0].Contains('=', StringComparison.Ordinal) ? m.Groups[1].Value : null;
+        string? name = NameBeforeParameters(header);
+        return name is not null && !Keywords.Contains(name) && !header.Split('(')[0].Contains('=', StringComparison.Ordinal) ? name : null;
+    }
+
+    // The identifier right before the first "(" that follows one (after its type arguments, if any).
+    private static string? NameBeforeParameters(string header)
+    {
+        for (int i = 0; i < header.Length; i++)
+        {
+            if (header[i] != '(')
+            {
+                continue;
+            }
+
+            int j = i - 1;
+            if (j >= 0 && header[j] == '>')
+            {
+                for (int depth = 0; j >= 0; j--)
+                {
+                    depth += header[j] == '>' ? 1 : header[j] == '<' ? -1 : 0;
+                    if (depth == 0)
+                    {
+                        j--;
+                        break;
+                    }
+                }
+            }
+
+            int end = j + 1;
+            while (j >= 0 && (char.IsLetterOrDigit(header[j]) || header[j] == '_'))
+            {
+                j--;
+            }
+
+            if (end > j + 1)
+            {
+                return header[(j + 1)..end];
+            }
+        }
+
+        return null;
     }
 
     private static int LineOf(string code, int pos)
@@ -360,6 +409,4 @@ internal static partial class SourceMethods
     [GeneratedRegex(@"\boperator\s*[^\s(]+\s*\(")]
     private static partial Regex Operator();
 
-    [GeneratedRegex(@"\b([A-Za-z_]\w*)(<[^()]*>)?\(")]
-    private static partial Regex Name();
 }
