@@ -88,13 +88,23 @@ public readonly struct Intensity : IEquatable<Intensity>, IAdditionOperators<Int
 
     /// <summary>
     /// The lab's conversion of one component to an 8-bit level (section 2.2): <c>level = int(256 · I)</c>,
-    /// clamped to 0..255 (the lab's rule gives 256 at I = 1), and 0 for NaN: <see cref="EightBit.Level"/>,
-    /// which every pixel writer uses.
+    /// clamped to 0..255 (the lab's rule gives 256 at I = 1), and 0 for NaN. The one scalar form of the rule:
+    /// <see cref="EightBit.Level"/>, which every pixel writer uses, is this.
     /// </summary>
     /// <param name="component">A component value.</param>
     /// <returns>The level, 0..255.</returns>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static byte ToLevel(double component) => EightBit.Level(component);
+    public static byte ToLevel(double component)
+    {
+        double scaled = component * 256.0;
+        // NaN fails both comparisons and lands on 0; +inf lands on 255.
+        if (!(scaled > 0))
+        {
+            return 0;
+        }
+
+        return scaled >= 255.0 ? (byte)255 : (byte)scaled;
+    }
 
     /// <inheritdoc />
     public bool Equals(Intensity other) => R.Equals(other.R) && G.Equals(other.G) && B.Equals(other.B);

@@ -1,4 +1,6 @@
 using System.Runtime.CompilerServices;
+using RayLab.Geometry;
+using RayLab.Simd;
 
 namespace RayLab.Cameras;
 
@@ -15,10 +17,10 @@ namespace RayLab.Cameras;
 /// the projection's: each camera's plane is an <c>ImagePlane&lt;TProjection&gt;</c> whose projection type
 /// (<see cref="OrthoCamera"/>: orthographic, <see cref="PerspectiveCamera"/>: perspective) holds the formulas.
 /// </remarks>
-public abstract class ImagePlane
+public abstract class ImagePlane : IRayFrame
 {
     private protected ImagePlane(int width, int height, Double3 eye, Double3 u, Double3 v, Double3 w, Window window,
-        double distance, bool orthographic, Double3 corner, double depthPerT, double near, double far)
+        double distance, bool orthographic, Double3 corner, double depthPerT, double near, double far, Double3 parallelDirection, Double3 originShift)
     {
         Width = width;
         Height = height;
@@ -39,7 +41,15 @@ public abstract class ImagePlane
         TMax = far / depthPerT;
         PixelWidth = window.Width / width;
         PixelHeight = window.Height / height;
+        NearDepth = near;
+        FarDepth = far;
+        ParallelDirection = parallelDirection;
+        OriginShift = originShift;
+        FixedPoint = eye + originShift;
     }
+
+    /// <summary>The relative margin of <see cref="Visibility"/>: a sphere within 10⁻⁹ of a plane's depth counts as cut by it.</summary>
+    private const double PlaneMargin = 1e-9;
 
     /// <summary>The image width W in pixels.</summary>
     public int Width { get; }
@@ -89,6 +99,27 @@ public abstract class ImagePlane
     /// <summary>The depth along the gaze per unit of the ray parameter t (s for the perspective camera, 1 for the orthographic).</summary>
     internal double DepthPerT { get; }
 
+    /// <summary>The near plane's depth along the gaze.</summary>
+    internal double NearDepth { get; }
+
+    /// <summary>The far plane's depth along the gaze.</summary>
+    internal double FarDepth { get; }
+
+    /// <summary>The direction every ray shares: −w (orthographic), else zero.</summary>
+    internal Double3 ParallelDirection { get; }
+
+    /// <summary>Where the ray through α = β = 0 starts, relative to e: c (orthographic), else zero.</summary>
+    internal Double3 OriginShift { get; }
+
+    /// <summary>Where the ray through α = β = 0 starts: e + <see cref="OriginShift"/>, the point sphere offsets are taken from.</summary>
+    internal Double3 FixedPoint { get; }
+
+    /// <summary>A bound on how far the ray origins lie from <see cref="FixedPoint"/>: |a| + |b| + |c| (orthographic), else 0.</summary>
+    internal abstract double OriginReach { get; }
+
+    /// <summary>How large the ray directions are where float rounds them: |c| + |a| + |b| (perspective), else 0.</summary>
+    internal abstract double DirectionRoundingSize { get; }
+
     /// <summary>The window's width per pixel, su = (u1 − u0)/W.</summary>
     internal double PixelWidth { get; }
 
@@ -106,6 +137,128 @@ public abstract class ImagePlane
     /// <param name="sy">The sample's offset inside the pixel, top to bottom.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public double Beta(int row, double sy) => WindowMapping.Beta(row + sy, Height);
+
+    /// <summary>α of a lattice point: X/W with X and W counted in lattice steps of 1/<paramref name="size"/> pixel.</summary>
+    /// <param name="x">X, in lattice steps from the image's left edge.</param>
+    /// <param name="size">Lattice steps per pixel.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal double LatticeAlpha(double x, long size) => WindowMapping.Alpha(x, Width * (double)size);
+
+    /// <summary>β of a lattice point: 1 − Y/H with Y and H counted in lattice steps of 1/<paramref name="size"/> pixel.</summary>
+    /// <param name="y">Y, in lattice steps from the image's top edge.</param>
+    /// <param name="size">Lattice steps per pixel.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal double LatticeBeta(double y, long size) => WindowMapping.Beta(y, Height * (double)size);
+
+    /// <summary>
+    /// Whether a sphere lies wholly between the near and far planes, is cut by one, or is never visible: its depth
+    /// range along the gaze against [near, far], with one relative margin of 10⁻⁹ (a sphere that close to a plane
+    /// counts as cut by it) for every renderer.
+    /// </summary>
+    /// <param name="centre">The centre.</param>
+    /// <param name="radius">The radius.</param>
+    internal SphereVisibility Visibility(Double3 centre, double radius)
+    {
+        double depth = Double3.Dot(centre - Eye, -W);
+        double near = NearDepth, far = FarDepth;
+        if (depth + radius < near * (1 - PlaneMargin) || depth - radius > far * (1 + PlaneMargin))
+        {
+            return SphereVisibility.Hidden;
+        }
+
+        return depth - radius > near * (1 + PlaneMargin) && depth + radius < far * (1 - PlaneMargin)
+            ? SphereVisibility.Whole
+            : SphereVisibility.Clipped;
+    }
+
+    /// <summary>A sphere's o − C for the ray through α = β = 0, and the largest |o − C| over the window.</summary>
+    /// <param name="centre">The sphere's centre C.</param>
+    internal (Double3 Offset, double Largest) SphereOffset(Double3 centre)
+    {
+        Double3 offset = Eye - centre + OriginShift;
+        return (offset, LargestOffset(offset));
+    }
+
+    /// <summary>The largest |o − C| over the window, given o − C at α = β = 0.</summary>
+    /// <param name="offset">o − C at α = β = 0.</param>
+    internal abstract double LargestOffset(Double3 offset);
+
+    /// <summary>How large the ray origins are near a sphere whose largest |o − C| is <paramref name="largest"/>, where float rounds them (orthographic), else 0.</summary>
+    /// <param name="largest">The largest |o − C|.</param>
+    internal abstract double OriginRoundingSize(double largest);
+
+    /// <summary>A bound on how much the float rounding of a ray moves a sphere's stable discriminant (see <see cref="IProjection.RayRoundingBound"/>).</summary>
+    /// <param name="offset">o − C at α = β = 0.</param>
+    /// <param name="largest">The largest |o − C|.</param>
+    /// <param name="epsilon">Float's unit roundoff, doubled.</param>
+    internal abstract double RayRoundingBound(Double3 offset, double largest, double epsilon);
+
+    /// <summary>How far the rays of a window square of half-diagonal δ pass from its central ray: <c>Constant + reach · PerReach</c> (see <see cref="IProjection.SquareSpread"/>).</summary>
+    /// <param name="delta">The half-diagonal δ.</param>
+    /// <param name="directionLengthSquared">d·d of the central ray.</param>
+    internal abstract (double Constant, double PerReach) SquareSpread(double delta, double directionLengthSquared);
+
+    /// <summary>False when a sphere (camera coordinates) lies wholly outside the rays through the window.</summary>
+    /// <param name="centre">The centre in camera coordinates.</param>
+    /// <param name="radius">The radius.</param>
+    internal abstract bool MayBeInView(Double3 centre, double radius);
+
+    /// <summary>True when a sphere at <paramref name="depth"/> lies far enough in front of the eye for its outline to be an ellipse (always, orthographic).</summary>
+    /// <param name="depth">The centre's depth along the gaze.</param>
+    /// <param name="radius">The radius.</param>
+    internal abstract bool IsAheadOfEye(double depth, double radius);
+
+    /// <summary>Window units per world unit at <paramref name="depth"/> along the gaze: s/depth (perspective), 1 (orthographic).</summary>
+    /// <param name="depth">The depth.</param>
+    internal abstract double WindowScale(double depth);
+
+    /// <summary>
+    /// Runs <paramref name="action"/> compiled for this plane's projection: the one place the orthographic or
+    /// perspective choice is made, for every renderer.
+    /// </summary>
+    /// <param name="action">The work, generic over the projection.</param>
+    internal abstract TResult Dispatch<TAction, TResult>(ref TAction action)
+        where TAction : struct, IProjectionAction<TResult>, allows ref struct;
+
+    /// <summary>The five planes that bound the rays through [α0, α1] × [β0, β1] (see <see cref="IRayFrame.Frustum"/>).</summary>
+    private protected abstract Double3 SideFrustum(double alpha0, double alpha1, double beta0, double beta1, Span<Plane> planes);
+
+    int IRayFrame.Width => Width;
+
+    int IRayFrame.Height => Height;
+
+    Double3 IRayFrame.A => A;
+
+    Double3 IRayFrame.B => B;
+
+    Double3 IRayFrame.C => C;
+
+    Double3 IRayFrame.ParallelDirection => ParallelDirection;
+
+    Double3 IRayFrame.FixedPoint => FixedPoint;
+
+    double IRayFrame.OriginReach => OriginReach;
+
+    double IRayFrame.DirectionRoundingSize => DirectionRoundingSize;
+
+    double IRayFrame.TMin => TMin;
+
+    double IRayFrame.TMax => TMax;
+
+    (Double3 Offset, double Largest) IRayFrame.SphereOffset(Double3 centre) => SphereOffset(centre);
+
+    SphereVisibility IRayFrame.Visibility(Double3 centre, double radius) => Visibility(centre, radius);
+
+    double IRayFrame.OriginRoundingSize(double largest) => OriginRoundingSize(largest);
+
+    Ray IRayFrame.GetPixelRay(int x, int row, double sx, double sy) => GetPixelRay(x, row, sx, sy);
+
+    Double3 IRayFrame.Frustum(double alpha0, double alpha1, double beta0, double beta1, Span<Plane> planes)
+    {
+        Double3 centre = SideFrustum(alpha0, alpha1, beta0, beta1, planes);
+        planes[4] = new Plane(-W, 0); // nothing behind the eye (or the orthographic window's plane)
+        return centre;
+    }
 
     /// <summary>
     /// The ray through window point (α, β) ∈ [0, 1]², α left to right and β bottom to top. Perspective: the

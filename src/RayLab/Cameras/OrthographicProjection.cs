@@ -21,9 +21,59 @@ internal readonly struct OrthographicProjection : IProjection
     public static double DepthPerT(double distance) => 1;
 
     /// <inheritdoc />
+    public static Double3 ParallelDirection(Double3 w) => -w;
+
+    /// <inheritdoc />
+    public static Double3 OriginShift(Double3 c) => c;
+
+    /// <inheritdoc />
+    /// <remarks>|o − C| is convex over the window: its largest value is at a corner.</remarks>
+    public static double LargestOffset(Double3 offset, Double3 a, Double3 b) =>
+        Math.Max(Math.Max(offset.Length, (offset + a).Length), Math.Max((offset + b).Length, (offset + a + b).Length));
+
+    /// <inheritdoc />
+    public static double OriginReach(Double3 a, Double3 b, Double3 c) => a.Length + b.Length + c.Length;
+
+    /// <inheritdoc />
+    public static double OriginRoundingSize(double largest) => largest;
+
+    /// <inheritdoc />
+    public static double DirectionRoundingSize(Double3 a, Double3 b, Double3 c) => 0;
+
+    /// <inheritdoc />
+    /// <remarks>An origin off by δ ≤ 8 ε (|e + c − C| + |a| + |b| + L) moves Δ by at most 3 L δ; the direction −w rounded by 8 ε moves it by 3 L² · 8 ε.</remarks>
+    public static double RayRoundingBound(ImagePlane plane, Double3 offset, double largest, double epsilon) =>
+        2 * ((3 * largest * 8 * epsilon * (offset.Length + plane.A.Length + plane.B.Length + largest)) + (3 * largest * largest * 8 * epsilon));
+
+    /// <inheritdoc />
+    public static (double Constant, double PerReach) SquareSpread(double delta, double directionLengthSquared) => (delta, 0);
+
+    /// <inheritdoc />
+    /// <remarks>Not culled: every sphere is kept (a sphere outside the window costs time, never accuracy).</remarks>
+    public static bool MayBeInView(ImagePlane plane, Double3 centre, double radius) => true;
+
+    /// <inheritdoc />
+    public static bool IsAheadOfEye(double depth, double radius) => true;
+
+    /// <inheritdoc />
+    public static double WindowScale(double distance, double depth) => 1;
+
+    /// <inheritdoc />
+    /// <remarks>Origins α a + β b (from e + c), direction −w: four planes along −w through the window's edges.</remarks>
+    public static Double3 Frustum(ImagePlane plane, double alpha0, double alpha1, double beta0, double beta1, Span<Plane> planes)
+    {
+        Double3 a = plane.A, b = plane.B, gaze = -plane.W;
+        planes[0] = Plane.Side(Double3.Cross(b, gaze), a, alpha0 * a);
+        planes[1] = Plane.Side(Double3.Cross(b, gaze), -a, alpha1 * a);
+        planes[2] = Plane.Side(Double3.Cross(a, gaze), b, beta0 * b);
+        planes[3] = Plane.Side(Double3.Cross(a, gaze), -b, beta1 * b);
+        return gaze;
+    }
+
+    /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Ray GetRay(ImagePlane plane, double alpha, double beta) =>
-        new(plane.Eye + (plane.C + (alpha * plane.A) + (beta * plane.B)), -plane.W);
+        new(plane.Eye + (plane.C + (alpha * plane.A) + (beta * plane.B)), plane.ParallelDirection);
 
     /// <inheritdoc />
     /// <remarks>o = α a + β b relative to e + c, which the frame's sphere offsets e + c − C already hold; d = −w.</remarks>

@@ -6,10 +6,10 @@ using RayLab.Simd;
 namespace RayLab;
 
 /// <summary>
-/// The lab's 8-bit rule (section 2.2), the one place for it: a component I becomes the level
+/// The lab's 8-bit rule (section 2.2) for pixel writers: a component I becomes the level
 /// <c>int(256 · I)</c>, clamped to 0..255 (the rule gives 256 at I = 1). Every pixel writer uses it: the scalar
-/// form (<see cref="Level"/>, through <see cref="Rgb24.FromIntensity"/>) and, side by side, the lane form the
-/// packet kernel writes its pixels with.
+/// form (<see cref="Level"/>, through <see cref="Rgb24.FromIntensity"/>; its code is <see cref="Intensity.ToLevel"/>)
+/// and, side by side, the lane form the packet kernel writes its pixels with.
 /// </summary>
 public static class EightBit
 {
@@ -17,22 +17,13 @@ public static class EightBit
     private const float Top = 255f;
 
     /// <summary>
-    /// The level of one component: <c>int(256 · I)</c> clamped to 0..255, and 0 for NaN.
+    /// The level of one component: <c>int(256 · I)</c> clamped to 0..255, and 0 for NaN (the rule itself is
+    /// <see cref="Intensity.ToLevel"/>, beside the value it converts, so that the scene model needs no imaging).
     /// </summary>
     /// <param name="component">A component value.</param>
     /// <returns>The level, 0..255.</returns>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static byte Level(double component)
-    {
-        double scaled = component * 256.0;
-        // NaN fails both comparisons and lands on 0; +inf lands on 255.
-        if (!(scaled > 0))
-        {
-            return 0;
-        }
-
-        return scaled >= 255.0 ? (byte)255 : (byte)scaled;
-    }
+    public static byte Level(double component) => Intensity.ToLevel(component);
 
     /// <summary>
     /// The lane form: writes one pixel per lane, levels <c>int(scale · I)</c> clamped to 255 with I the lanes of

@@ -1,4 +1,3 @@
-using RayLab.Cameras;
 using RayLab.Geometry;
 
 namespace RayLab.Simd;
@@ -38,17 +37,16 @@ internal sealed class PacketFrame
     /// <summary>The most (in pixels) that float rounding may move a ray's direction or origin: 1/50 pixel.</summary>
     private const double Resolution = 0.02;
 
-    private PacketFrame(ImagePlane plane, Scene scene, int[] kept)
+    private PacketFrame(IRayFrame rays, Scene scene, int[] kept)
     {
-        Plane = plane;
+        Rays = rays;
         Scene = scene;
-        IsOrthographic = plane.IsOrthographic;
-        Width = plane.Width;
-        Height = plane.Height;
-        A = plane.A;
-        B = plane.B;
-        C = plane.C;
-        Direction = plane.IsOrthographic ? -plane.W : Double3.Zero;
+        Width = rays.Width;
+        Height = rays.Height;
+        A = rays.A;
+        B = rays.B;
+        C = rays.C;
+        Direction = rays.ParallelDirection;
         Background = Vector(scene.ColourOf(-1));
         Sphere[] spheres = [.. kept.Select(index => scene.Spheres[index])];
         Spheres = new SphereConstants[spheres.Length];
@@ -58,7 +56,7 @@ internal sealed class PacketFrame
         for (int k = 0; k < spheres.Length; k++)
         {
             Sphere sphere = spheres[k];
-            (Double3 offset, double largest) = OffsetOf(sphere, plane);
+            (Double3 offset, double largest) = rays.SphereOffset(sphere.Center);
             double bound = FloatRounding.DiscriminantError(sphere.Radius, largest);
             Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(scene.ColourOf(kept[k])));
             depthBounds[k] = DepthBound.Of(bound, sphere.Radius, largest);
@@ -77,7 +75,7 @@ internal sealed class PacketFrame
         if (hierarchy is not null)
         {
             double largestRadius = spheres.Length == 0 ? 0 : spheres.Max(sphere => sphere.Radius);
-            Hierarchy = PacketHierarchy.Create(hierarchy, plane, index => (Spheres[position[index]], depthBounds[position[index]]), largestRadius);
+            Hierarchy = PacketHierarchy.Create(hierarchy, rays, index => (Spheres[position[index]], depthBounds[position[index]]), largestRadius);
         }
     }
 
@@ -132,11 +130,10 @@ internal sealed class PacketFrame
     private static bool Close(Sphere a, Sphere b, double reachA, double reachB) =>
         (a.Center - b.Center).Length - a.Radius - b.Radius <= 2 * (reachA + reachB);
 
-    public ImagePlane Plane { get; }
+    /// <summary>The frame's rays in double (the camera's image plane): the uncertain samples are traced again through it.</summary>
+    public IRayFrame Rays { get; }
 
     public Scene Scene { get; }
-
-    public bool IsOrthographic { get; }
 
     public int Width { get; }
 
@@ -170,14 +167,13 @@ internal sealed class PacketFrame
 
     /// <summary>The frame, when float with the error bounds can render it; else null and why not.</summary>
     /// <param name="scene">The scene.</param>
-    /// <param name="plane">The camera's image plane.</param>
+    /// <param name="rays">The camera's rays for the frame (its image plane).</param>
     /// <param name="frame">The frame constants.</param>
     /// <param name="reason">Why the frame needs the double path.</param>
-    public static bool TryCreate(Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
+    public static bool TryCreate(Scene scene, IRayFrame rays, out PacketFrame? frame, out string? reason)
     {
         frame = null;
-        double depthPerT = plane.DepthPerT;
-        double pixel = Math.Min(plane.A.Length / plane.Width, plane.B.Length / plane.Height);
+        double pixel = Math.Min(rays.A.Length / rays.Width, rays.B.Length / rays.Height);
         var kept = new List<int>();
         for (int k = 0; k < scene.Spheres.Count; k++)
         {
@@ -187,21 +183,20 @@ internal sealed class PacketFrame
                 continue;
             }
 
-            double depth = Double3.Dot(sphere.Center - plane.Eye, -plane.W);
-            if (!((depth - sphere.Radius) / depthPerT > plane.TMin * (1 + 1e-9)) || !((depth + sphere.Radius) / depthPerT < plane.TMax * (1 - 1e-9)))
+            if (rays.Visibility(sphere.Center, sphere.Radius) != SphereVisibility.Whole)
             {
                 reason = $"sphere {k} reaches past the near or far plane";
                 return false;
             }
 
-            (_, double largest) = OffsetOf(sphere, plane);
+            (_, double largest) = rays.SphereOffset(sphere.Center);
             if (!(largest + sphere.Radius < 1e18))
             {
                 reason = $"sphere {k} is too far away for float";
                 return false;
             }
 
-            if (plane.IsOrthographic && !(8 * FloatRounding.MachineEpsilon * largest <= Resolution * pixel))
+            if (!(8 * FloatRounding.MachineEpsilon * rays.OriginRoundingSize(largest) <= Resolution * pixel))
             {
                 reason = $"float cannot resolve the ray origins a pixel apart near sphere {k}";
                 return false;
@@ -210,31 +205,16 @@ internal sealed class PacketFrame
             kept.Add(k);
         }
 
-        double direction = plane.C.Length + plane.A.Length + plane.B.Length;
-        if (!plane.IsOrthographic && !(8 * FloatRounding.MachineEpsilon * direction <= Resolution * pixel))
+        if (!(8 * FloatRounding.MachineEpsilon * rays.DirectionRoundingSize <= Resolution * pixel))
         {
             reason = "float cannot resolve the ray directions a pixel apart (field of view too narrow for the image size)";
             return false;
         }
 
         reason = null;
-        frame = new PacketFrame(plane, scene, [.. kept]);
+        frame = new PacketFrame(rays, scene, [.. kept]);
         return true;
     }
-
-    /// <summary>
-    /// A sphere's o − C at the window's corner α = β = 0, and the largest |o − C| over the window. Perspective:
-    /// o − C = e − C for every ray. Orthographic: o − C = (e + c − C) + α a + β b.
-    /// </summary>
-    private static (Double3 Offset, double Largest) OffsetOf(Sphere sphere, ImagePlane plane)
-    {
-        Double3 offset = plane.Eye - sphere.Center + (plane.IsOrthographic ? plane.C : Double3.Zero);
-        return (offset, plane.IsOrthographic ? LargestOffset(offset, plane.A, plane.B) : offset.Length);
-    }
-
-    /// <summary>The largest |offset + α a + β b| over the window (a convex function: its maximum is at a corner).</summary>
-    private static double LargestOffset(Double3 offset, Double3 a, Double3 b) =>
-        Math.Max(Math.Max(offset.Length, (offset + a).Length), Math.Max((offset + b).Length, (offset + a + b).Length));
 
     private static Float3 Vector(Intensity i) => new((float)i.R, (float)i.G, (float)i.B);
 }

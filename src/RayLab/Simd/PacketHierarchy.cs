@@ -1,5 +1,4 @@
 using System.Runtime.CompilerServices;
-using RayLab.Cameras;
 using RayLab.Geometry;
 
 namespace RayLab.Simd;
@@ -26,17 +25,17 @@ internal sealed class PacketHierarchy
     /// <summary>The widening of each box, relative to its distance from the eye.</summary>
     private const double Widening = 1e-4;
 
-    private PacketHierarchy(PacketNode[] nodes, SphereConstants[] spheres, DepthBound[] depthBounds, int depth, float radiusSlack, ImagePlane plane)
+    private PacketHierarchy(PacketNode[] nodes, SphereConstants[] spheres, DepthBound[] depthBounds, int depth, float radiusSlack, IRayFrame frame)
     {
         Nodes = nodes;
         Spheres = spheres;
         DepthBounds = depthBounds;
         Depth = depth;
         RadiusSlack = radiusSlack;
-        _plane = plane;
+        _frame = frame;
     }
 
-    private readonly ImagePlane _plane;
+    private readonly IRayFrame _frame;
 
     /// <summary>The nodes in the hierarchy's order.</summary>
     public PacketNode[] Nodes { get; }
@@ -55,13 +54,13 @@ internal sealed class PacketHierarchy
 
     /// <summary>The frame's copy of <paramref name="hierarchy"/>.</summary>
     /// <param name="hierarchy">The scene's hierarchy.</param>
-    /// <param name="plane">The camera's image plane.</param>
+    /// <param name="frame">The frame's rays.</param>
     /// <param name="constantsOf">A sphere's kernel constants and depth error constants, by its index in the scene.</param>
     /// <param name="largestRadius">The largest radius in the scene.</param>
-    public static PacketHierarchy Create(SphereHierarchy hierarchy, ImagePlane plane, Func<int, (SphereConstants Constants, DepthBound Bound)> constantsOf, double largestRadius)
+    public static PacketHierarchy Create(SphereHierarchy hierarchy, IRayFrame frame, Func<int, (SphereConstants Constants, DepthBound Bound)> constantsOf, double largestRadius)
     {
-        Double3 fixedPoint = plane.Eye + (plane.IsOrthographic ? plane.C : Double3.Zero);
-        double window = plane.IsOrthographic ? plane.A.Length + plane.B.Length + plane.C.Length : 0;
+        Double3 fixedPoint = frame.FixedPoint;
+        double window = frame.OriginReach;
         ReadOnlySpan<HierarchyNode> nodes = hierarchy.Nodes;
         var packetNodes = new PacketNode[nodes.Length];
         for (int i = 0; i < nodes.Length; i++)
@@ -82,7 +81,7 @@ internal sealed class PacketHierarchy
             (spheres[i], bounds[i]) = constantsOf(order[i]);
         }
 
-        return new PacketHierarchy(packetNodes, spheres, bounds, hierarchy.Depth, (float)(0.01 * largestRadius), plane);
+        return new PacketHierarchy(packetNodes, spheres, bounds, hierarchy.Depth, (float)(0.01 * largestRadius), frame);
     }
 
     /// <summary>
@@ -162,29 +161,10 @@ internal sealed class PacketHierarchy
     /// </summary>
     private int Frustum(int x0, int lanes, int row, Span<Plane> planes)
     {
-        ImagePlane plane = _plane;
-        double alpha0 = (x0 - 1.0) / plane.Width, alpha1 = (x0 + lanes + 1.0) / plane.Width;
-        double beta0 = 1 - ((row + 2.0) / plane.Height), beta1 = 1 - ((row - 1.0) / plane.Height);
-        Double3 a = plane.A, b = plane.B, c = plane.C, gaze = -plane.W;
-        if (plane.IsOrthographic)
-        {
-            // Origins α a + β b (from e + c), direction −w: four planes along −w through the window's edges.
-            planes[0] = Side(Double3.Cross(b, gaze), a, alpha0 * a);
-            planes[1] = Side(Double3.Cross(b, gaze), -a, alpha1 * a);
-            planes[2] = Side(Double3.Cross(a, gaze), b, beta0 * b);
-            planes[3] = Side(Double3.Cross(a, gaze), -b, beta1 * b);
-        }
-        else
-        {
-            // Directions c + α a + β b from e: four planes through e.
-            planes[0] = Side(Double3.Cross(c + (alpha0 * a), b), a, Double3.Zero);
-            planes[1] = Side(Double3.Cross(c + (alpha1 * a), b), -a, Double3.Zero);
-            planes[2] = Side(Double3.Cross(c + (beta0 * b), a), b, Double3.Zero);
-            planes[3] = Side(Double3.Cross(c + (beta1 * b), a), -b, Double3.Zero);
-        }
-
-        planes[4] = new Plane(gaze, 0); // nothing behind the eye (or the orthographic window's plane)
-        Double3 centre = plane.IsOrthographic ? gaze : c + (0.5 * (alpha0 + alpha1) * a) + (0.5 * (beta0 + beta1) * b);
+        IRayFrame frame = _frame;
+        double alpha0 = (x0 - 1.0) / frame.Width, alpha1 = (x0 + lanes + 1.0) / frame.Width;
+        double beta0 = 1 - ((row + 2.0) / frame.Height), beta1 = 1 - ((row - 1.0) / frame.Height);
+        Double3 centre = frame.Frustum(alpha0, alpha1, beta0, beta1, planes);
         return (centre.X < 0 ? 1 : 0) | (centre.Y < 0 ? 2 : 0) | (centre.Z < 0 ? 4 : 0);
     }
 
@@ -207,13 +187,6 @@ internal sealed class PacketHierarchy
         return false;
     }
 
-    /// <summary>The half-space n·x + d ≥ 0 with n = ±<paramref name="normal"/> pointing along <paramref name="inward"/>, through <paramref name="point"/>.</summary>
-    private static Plane Side(Double3 normal, Double3 inward, Double3 point)
-    {
-        Double3 n = Double3.Dot(normal, inward) >= 0 ? normal : -normal;
-        return new Plane(n, -Double3.Dot(n, point));
-    }
-
     /// <summary>
     /// The nearest hit per lane among the spheres of the packet's <paramref name="leaves"/> (from
     /// <see cref="CollectLeaves"/>): each leaf's box tested against the lanes first, as in <see cref="Nearest{TL, TP}"/>.
@@ -221,7 +194,7 @@ internal sealed class PacketHierarchy
     [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
     public static LaneHit<TL> NearestInLeaves<TL, TP>(PacketHierarchy hierarchy, ReadOnlySpan<int> leaves, in Lanes3<TL> origin, in Lanes3<TL> direction, TL dd, TL rdd, TL inverseLength, bool checkOrder, in LaneHit<TL> background)
         where TL : struct, ILanes<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         (TL dx, TL dy, TL dz) = (direction.X, direction.Y, direction.Z);
         TL minusOne = TL.Broadcast(-1f);
@@ -250,7 +223,7 @@ internal sealed class PacketHierarchy
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static bool Enters<TL, TP>(in PacketNode node, in Lanes3<TL> origin, TL nx, TL ny, TL nz, TL nearest, TL slack)
         where TL : struct, ILanes<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         TL ax = TP.AddOrigin(TL.Broadcast(node.Lo.X), origin.X) * nx, bx = TP.AddOrigin(TL.Broadcast(node.Hi.X), origin.X) * nx;
         TL ay = TP.AddOrigin(TL.Broadcast(node.Lo.Y), origin.Y) * ny, by = TP.AddOrigin(TL.Broadcast(node.Hi.Y), origin.Y) * ny;
@@ -266,7 +239,7 @@ internal sealed class PacketHierarchy
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static void TestLeaf<TL, TP>(SphereConstants[] spheres, DepthBound[] bounds, in PacketNode node, in Lanes3<TL> origin, TL dx, TL dy, TL dz, TL dd, TL rdd, TL inverseLength, bool checkOrder, ref LaneHit<TL> state)
         where TL : struct, ILanes<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         (TL nearest, TL red, TL green, TL blue, TL closest, TL unsure, TL nearestError) = state;
         for (int i = node.Start; i < node.Start + node.Count; i++)
@@ -291,7 +264,7 @@ internal sealed class PacketHierarchy
     [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
     public static LaneHit<TL> Nearest<TL, TP>(PacketHierarchy hierarchy, in Lanes3<TL> origin, in Lanes3<TL> direction, TL dd, TL rdd, TL inverseLength, bool checkOrder, in LaneHit<TL> background)
         where TL : struct, ILanes<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         (TL dx, TL dy, TL dz) = (direction.X, direction.Y, direction.Z);
         TL zero = default;
@@ -351,7 +324,15 @@ internal readonly record struct PacketNode(Float3 Lo, Float3 Hi, int Start, int 
 /// <summary>A half-space n·x + d ≥ 0 (relative to the frame's fixed point).</summary>
 /// <param name="Normal">n, pointing inside.</param>
 /// <param name="Offset">d.</param>
-internal readonly record struct Plane(Double3 Normal, double Offset);
+internal readonly record struct Plane(Double3 Normal, double Offset)
+{
+    /// <summary>The half-space n·x + d ≥ 0 with n = ±<paramref name="normal"/> pointing along <paramref name="inward"/>, through <paramref name="point"/>.</summary>
+    public static Plane Side(Double3 normal, Double3 inward, Double3 point)
+    {
+        Double3 n = Double3.Dot(normal, inward) >= 0 ? normal : -normal;
+        return new Plane(n, -Double3.Dot(n, point));
+    }
+}
 
 /// <summary>A packet's nearest hits: −t, colour, the smallest |Δ|/bound, the lanes uncertain in depth order and the error bound of each lane's t.</summary>
 internal readonly record struct LaneHit<TL>(TL Nearest, TL R, TL G, TL B, TL Closest, TL Unsure, TL NearestError)

@@ -1,7 +1,6 @@
 using RayLab.Sampling;
 using System.Runtime.InteropServices;
 using RayLab.Cameras;
-using RayLab.Rendering.Point;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Adaptive;
@@ -57,7 +56,7 @@ internal sealed class AdaptiveLattice
         _options = options;
         _edges = options.Rent<BandEdges>();
         _edges.Prepare((plane.Height + BandHeight - 1) / BandHeight);
-        Kernel = PointRenderer.ChooseKernel(options.Kernel, scene, plane, out PacketFrame? frame, out _);
+        Kernel = KernelChoice.Choose(options.Kernel, scene, plane, out PacketFrame? frame, out _);
         _hits = Kernel == RenderKernel.Scalar ? null : LatticeHits.TryCreate(scene, plane, _size, frame);
         if (minDepth > 0)
         {
@@ -123,9 +122,9 @@ internal sealed class AdaptiveLattice
 
         return Kernel switch
         {
-            RenderKernel.Vector512 => TraceLine<Lanes512>(_hits, ly, lxStart, lxStep, ids),
-            RenderKernel.Vector256 => TraceLine<Lanes256>(_hits, ly, lxStart, lxStep, ids),
-            _ => TraceLine<Lanes128>(_hits, ly, lxStart, lxStep, ids),
+            RenderKernel.Vector512 => _hits.TraceRow<Lanes512>(ly, lxStart, lxStep, ids),
+            RenderKernel.Vector256 => _hits.TraceRow<Lanes256>(ly, lxStart, lxStep, ids),
+            _ => _hits.TraceRow<Lanes128>(ly, lxStart, lxStep, ids),
         };
     }
 
@@ -196,11 +195,6 @@ internal sealed class AdaptiveLattice
 
     /// <summary>Gives a thread's buffers back for the next thread or render.</summary>
     public void Return(Source source) => _options.Return(source.Storage);
-
-    private int TraceLine<TL>(LatticeHits hits, long ly, long lxStart, long lxStep, Span<int> ids)
-        where TL : struct, ILanes<TL> => _plane.IsOrthographic
-            ? hits.TraceRow<TL, OrthographicProjection>(ly, lxStart, lxStep, ids)
-            : hits.TraceRow<TL, PerspectiveProjection>(ly, lxStart, lxStep, ids);
 
     private int Trace(long lx, long ly) => LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lx, ly);
 

@@ -44,10 +44,9 @@ internal sealed class LatticeHits
         A = plane.A;
         B = plane.B;
         C = plane.C;
-        Direction = plane.IsOrthographic ? -plane.W : Double3.Zero;
+        Direction = plane.ParallelDirection;
         CheckDepthOrder = frame.CheckDepthOrder;
         var spheres = new List<HitSphere>();
-        double rayError = 8 * FloatRounding.MachineEpsilon * (plane.C.Length + plane.A.Length + plane.B.Length);
         for (int k = 0; k < scene.Spheres.Count; k++)
         {
             Sphere sphere = scene.Spheres[k];
@@ -56,15 +55,10 @@ internal sealed class LatticeHits
                 continue;
             }
 
-            Double3 offset = plane.Eye - sphere.Center + (plane.IsOrthographic ? plane.C : Double3.Zero);
-            double largest = plane.IsOrthographic
-                ? Math.Max(Math.Max(offset.Length, (offset + plane.A).Length), Math.Max((offset + plane.B).Length, (offset + plane.A + plane.B).Length))
-                : offset.Length;
+            (Double3 offset, double largest) = plane.SphereOffset(sphere.Center);
             double r2 = sphere.Radius * sphere.Radius;
             double arithmetic = FloatRounding.DiscriminantError(sphere.Radius, largest);
-            double ray = plane.IsOrthographic
-                ? 2 * ((3 * largest * 8 * FloatRounding.MachineEpsilon * (offset.Length + plane.A.Length + plane.B.Length + largest)) + (3 * largest * largest * 8 * FloatRounding.MachineEpsilon))
-                : 2 * 3 * largest * largest * rayError / plane.Distance;
+            double ray = plane.RayRoundingBound(offset, largest, FloatRounding.MachineEpsilon);
             spheres.Add(new HitSphere(offset, (float)r2, (float)(1 / (arithmetic + ray)), k + 1, DepthBound.Of(arithmetic + ray, sphere.Radius, largest)));
         }
 
@@ -118,12 +112,23 @@ internal sealed class LatticeHits
 
     /// <summary>
     /// Fills <paramref name="ids"/> with the indices hit by lattice points (<paramref name="lxStart"/> + k·<paramref name="lxStep"/>,
+    /// <paramref name="ly"/>), k = 0 … ids.Length − 1, compiled for the plane's projection; returns how many were traced again in double.
+    /// </summary>
+    public int TraceRow<TL>(long ly, long lxStart, long lxStep, Span<int> ids)
+        where TL : struct, ILanes<TL>
+    {
+        var line = new LineTrace<TL>(this, ly, lxStart, lxStep, ids);
+        return _plane.Dispatch<LineTrace<TL>, int>(ref line);
+    }
+
+    /// <summary>
+    /// Fills <paramref name="ids"/> with the indices hit by lattice points (<paramref name="lxStart"/> + k·<paramref name="lxStep"/>,
     /// <paramref name="ly"/>), k = 0 … ids.Length − 1; returns how many were traced again in double.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public int TraceRow<TL, TP>(long ly, long lxStart, long lxStep, Span<int> ids)
         where TL : struct, ILanes<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         int lanes = TL.Count;
         Span<float> buffer = stackalloc float[lanes];
@@ -207,5 +212,15 @@ internal sealed class LatticeHits
         /// <summary>The packet kernel's constants with the index + 1 as the bits of the colour's red.</summary>
         public (SphereConstants Constants, DepthBound Bound) ToConstants() =>
             (new SphereConstants(Offset, RadiusSquared, InverseBound, new Float3(BitConverter.UInt32BitsToSingle(Id), 0, 0)), Bound);
+    }
+
+    /// <summary>One line of the lattice, traced by the packet loop compiled for the plane's projection.</summary>
+    private readonly ref struct LineTrace<TL>(LatticeHits hits, long ly, long lxStart, long lxStep, Span<int> ids) : IProjectionAction<int>
+        where TL : struct, ILanes<TL>
+    {
+        private readonly Span<int> _ids = ids;
+
+        public int Run<TP>(ImagePlane<TP> plane)
+            where TP : struct, IProjection => hits.TraceRow<TL, TP>(ly, lxStart, lxStep, _ids);
     }
 }

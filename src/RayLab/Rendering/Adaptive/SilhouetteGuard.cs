@@ -1,4 +1,5 @@
 using RayLab.Cameras;
+using RayLab.Geometry;
 using RayLab.Sampling;
 
 namespace RayLab.Rendering.Adaptive;
@@ -26,17 +27,16 @@ internal sealed class SilhouetteGuard
 {
     private readonly ImagePlane _plane;
     private readonly (Double3 Center, double Radius, bool Clipped)[] _spheres;
-    private readonly double _latticeWidth, _latticeHeight, _stepWidth, _stepHeight;
+    private readonly long _size;
+    private readonly double _stepWidth, _stepHeight;
 
     /// <summary>The guard for <paramref name="scene"/> seen on <paramref name="plane"/>, with <paramref name="size"/> lattice steps per pixel.</summary>
     public SilhouetteGuard(Scene scene, ImagePlane plane, long size)
     {
         _plane = plane;
-        _latticeWidth = plane.Width * (double)size;
-        _latticeHeight = plane.Height * (double)size;
-        _stepWidth = plane.A.Length / _latticeWidth;
-        _stepHeight = plane.B.Length / _latticeHeight;
-        double depthPerT = plane.IsOrthographic ? 1 : plane.Distance;
+        _size = size;
+        _stepWidth = plane.A.Length / (plane.Width * (double)size);
+        _stepHeight = plane.B.Length / (plane.Height * (double)size);
         var spheres = new List<(Double3, double, bool)>();
         foreach (Sphere sphere in scene.Spheres)
         {
@@ -45,15 +45,11 @@ internal sealed class SilhouetteGuard
                 continue;
             }
 
-            double depth = Double3.Dot(sphere.Center - plane.Eye, -plane.W);
-            double near = plane.TMin * depthPerT, far = plane.TMax * depthPerT;
-            if (depth + sphere.Radius < near * (1 - 1e-9) || depth - sphere.Radius > far * (1 + 1e-9))
+            SphereVisibility visibility = plane.Visibility(sphere.Center, sphere.Radius);
+            if (visibility != SphereVisibility.Hidden)
             {
-                continue; // never visible
+                spheres.Add((sphere.Center, sphere.Radius, visibility == SphereVisibility.Clipped));
             }
-
-            bool clipped = !(depth - sphere.Radius > near * (1 + 1e-9)) || !(depth + sphere.Radius < far * (1 - 1e-9));
-            spheres.Add((sphere.Center, sphere.Radius, clipped));
         }
 
         _spheres = [.. spheres];
@@ -63,17 +59,17 @@ internal sealed class SilhouetteGuard
     public bool MayCross(long x0, long y0, long size)
     {
         double half = size * 0.5;
-        Ray ray = _plane.GetRay((x0 + half) / _latticeWidth, 1.0 - ((y0 + half) / _latticeHeight));
+        Ray ray = _plane.GetRay(_plane.LatticeAlpha(x0 + half, _size), _plane.LatticeBeta(y0 + half, _size));
         double delta = half * Math.Sqrt((_stepWidth * _stepWidth) + (_stepHeight * _stepHeight));
         Double3 d = ray.Direction;
         double dd = Double3.Dot(d, d);
-        double turn = _plane.IsOrthographic ? 0 : Math.Asin(Math.Min(1, delta / Math.Sqrt(dd)));
+        (double spread, double turn) = _plane.SquareSpread(delta, dd);
         foreach ((Double3 center, double radius, bool clipped) in _spheres)
         {
             Double3 f = ray.Origin - center;
             Double3 perp = f - ((Double3.Dot(f, d) / dd) * d);
             double p = perp.Length, reach = f.Length;
-            double margin = (_plane.IsOrthographic ? delta : reach * turn) + (1e-9 * (reach + radius));
+            double margin = spread + (reach * turn) + (1e-9 * (reach + radius));
             if (clipped ? p - margin <= radius : Math.Abs(p - radius) <= margin)
             {
                 return true;

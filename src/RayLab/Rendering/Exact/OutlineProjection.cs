@@ -28,23 +28,6 @@ internal readonly struct OutlineProjection
     public Double3 ToCamera(Double3 world) => _plane.ToCamera(world);
 
     /// <summary>
-    /// True when a sphere (camera coordinates) lies wholly outside one of the four planes through the eye and the
-    /// window's edges (perspective only): no visible ray can reach it.
-    /// </summary>
-    /// <param name="centre">The centre in camera coordinates.</param>
-    /// <param name="radius">The radius.</param>
-    public bool OutsideFrustum(Double3 centre, double radius)
-    {
-        Window win = _plane.Window;
-        double s = _plane.Distance;
-        // Inside ⇔ s·du + u0·dw ≥ 0, −s·du − u1·dw ≥ 0, s·dv + v0·dw ≥ 0, −s·dv − v1·dw ≥ 0.
-        return Outside(new Double3(s, 0, win.U0)) || Outside(new Double3(-s, 0, -win.U1))
-            || Outside(new Double3(0, s, win.V0)) || Outside(new Double3(0, -s, -win.V1));
-
-        bool Outside(Double3 normal) => Double3.Dot(normal, centre) < -radius * normal.Length;
-    }
-
-    /// <summary>
     /// How far, in pixels, double rounding alone can move the picture of a sphere: its camera coordinates and the
     /// window's corners are known to about 1e-16 of their size, and a pixel is su world units on the window (for
     /// the perspective camera, su/s of the depth at the sphere's nearest point). A tiny window far from the axis,
@@ -57,10 +40,7 @@ internal readonly struct OutlineProjection
         Window win = _plane.Window;
         double corners = Math.Max(Math.Max(Math.Abs(win.U0), Math.Abs(win.U1)), Math.Max(Math.Abs(win.V0), Math.Abs(win.V1)));
         double size = centre.Length + radius;
-        if (!_plane.IsOrthographic)
-        {
-            size *= _plane.Distance / (-centre.Z - radius);
-        }
+        size *= _plane.WindowScale(-centre.Z - radius);
 
         return 1e-15 * (size + corners) / Math.Min(_plane.PixelWidth, _plane.PixelHeight);
     }

@@ -64,12 +64,12 @@ internal sealed class OutlineSet
             double r = sphere.Radius;
             Double3 c = projection.ToCamera(sphere.Center);
             double depth = -c.Z;
-            if (r == 0 || depth + r < near || depth - r > far || (!plane.IsOrthographic && projection.OutsideFrustum(c, r)))
+            if (r == 0 || plane.Visibility(sphere.Center, r) == SphereVisibility.Hidden || !plane.MayBeInView(c, r))
             {
                 continue;
             }
 
-            if (!plane.IsOrthographic && !(depth - r > 1e-4 * r))
+            if (!plane.IsAheadOfEye(depth, r))
             {
                 string span = string.Create(CultureInfo.InvariantCulture, $"from {depth - r:G6} to {depth + r:G6}");
                 throw new UnsupportedSceneException(i, $"reaches behind the perspective camera (its depth along the gaze runs {span}): "

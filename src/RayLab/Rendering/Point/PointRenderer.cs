@@ -18,46 +18,23 @@ internal static class PointRenderer
     public static RenderStatistics Render(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
     {
         long rays = (long)image.Width * image.Height * sampler.SamplesPerPixel;
-        RenderKernel kernel = ChooseKernel(options.Kernel, scene, plane, out PacketFrame? frame, out string? reason);
+        RenderKernel kernel = KernelChoice.Choose(options.Kernel, scene, plane, out PacketFrame? frame, out string? reason);
         var loop = RowLoop.Start(options, image.Height);
         long retraced = kernel switch
         {
-            RenderKernel.Vector512 => RenderPackets<Lanes512>(frame!, sampler, image, loop),
-            RenderKernel.Vector256 => RenderPackets<Lanes256>(frame!, sampler, image, loop),
-            RenderKernel.Vector128 => RenderPackets<Lanes128>(frame!, sampler, image, loop),
+            RenderKernel.Vector512 => RenderPackets<Lanes512>(plane, frame!, sampler, image, loop),
+            RenderKernel.Vector256 => RenderPackets<Lanes256>(plane, frame!, sampler, image, loop),
+            RenderKernel.Vector128 => RenderPackets<Lanes128>(plane, frame!, sampler, image, loop),
             _ => RenderScalar(scene, plane, sampler, image, loop),
         };
         return loop.Finish(rays, kernel, retraced, reason);
     }
 
-    /// <summary>The kernel that renders: the one asked for, the widest native packet for Auto, or scalar when the frame needs double.</summary>
-    internal static RenderKernel ChooseKernel(RenderKernel requested, Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
+    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RowLoop loop)
     {
-        frame = null;
-        reason = null;
-        if (requested == RenderKernel.Scalar)
-        {
-            return RenderKernel.Scalar;
-        }
-
-        if (!PacketFrame.TryCreate(scene, plane, out frame, out reason))
-        {
-            return RenderKernel.Scalar;
-        }
-
-        return requested switch
-        {
-            RenderKernel.Auto when Lanes512.IsHardwareAccelerated => RenderKernel.Vector512,
-            RenderKernel.Auto when Lanes256.IsHardwareAccelerated => RenderKernel.Vector256,
-            RenderKernel.Auto when Lanes128.IsHardwareAccelerated => RenderKernel.Vector128,
-            RenderKernel.Auto => RenderKernel.Scalar,
-            _ => requested,
-        };
+        var rows = new ScalarLoop(scene, sampler, image, loop);
+        return plane.Dispatch<ScalarLoop, long>(ref rows);
     }
-
-    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RowLoop loop) => plane.IsOrthographic
-        ? RenderScalar<OrthographicProjection>(scene, plane, sampler, image, loop)
-        : RenderScalar<PerspectiveProjection>(scene, plane, sampler, image, loop);
 
     private static long RenderScalar<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RowLoop loop)
         where TP : struct, IProjection
@@ -66,28 +43,30 @@ internal static class PointRenderer
         return 0;
     }
 
-    private static long RenderPackets<TL>(PacketFrame frame, IPixelSampler sampler, Image image, RowLoop loop)
+    private static long RenderPackets<TL>(ImagePlane plane, PacketFrame frame, IPixelSampler sampler, Image image, RowLoop loop)
         where TL : struct, ILanes<TL> => sampler switch
         {
-            JitteredSampler jittered => RenderPackets<TL, JitteredLanes<TL>>(frame, () => new(jittered), sampler.SamplesPerPixel, image, loop),
-            RandomSampler random => RenderPackets<TL, RandomLanes<TL>>(frame, () => new(random), sampler.SamplesPerPixel, image, loop),
-            RegularSampler regular => RenderPackets<TL, RegularLanes<TL>>(frame, () => new(regular), sampler.SamplesPerPixel, image, loop),
-            SobolSampler sobol => RenderPackets<TL, SobolLanes<TL>>(frame, () => new(sobol), sampler.SamplesPerPixel, image, loop),
-            HammersleySampler hammersley => RenderPackets<TL, HammersleyLanes<TL>>(frame, () => new(hammersley), sampler.SamplesPerPixel, image, loop),
+            JitteredSampler jittered => RenderPackets<TL, JitteredLanes<TL>>(plane, frame, () => new(jittered), sampler.SamplesPerPixel, image, loop),
+            RandomSampler random => RenderPackets<TL, RandomLanes<TL>>(plane, frame, () => new(random), sampler.SamplesPerPixel, image, loop),
+            RegularSampler regular => RenderPackets<TL, RegularLanes<TL>>(plane, frame, () => new(regular), sampler.SamplesPerPixel, image, loop),
+            SobolSampler sobol => RenderPackets<TL, SobolLanes<TL>>(plane, frame, () => new(sobol), sampler.SamplesPerPixel, image, loop),
+            HammersleySampler hammersley => RenderPackets<TL, HammersleyLanes<TL>>(plane, frame, () => new(hammersley), sampler.SamplesPerPixel, image, loop),
             CorrelatedMultiJitteredSampler cmj when cmj.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, CorrelatedMultiJitteredLanes<TL>>(frame, () => new(cmj), sampler.SamplesPerPixel, image, loop),
+                RenderPackets<TL, CorrelatedMultiJitteredLanes<TL>>(plane, frame, () => new(cmj), sampler.SamplesPerPixel, image, loop),
             MultiJitteredSampler multiJittered when multiJittered.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, MultiJitteredLanes<TL>>(frame, () => new(multiJittered), sampler.SamplesPerPixel, image, loop),
+                RenderPackets<TL, MultiJitteredLanes<TL>>(plane, frame, () => new(multiJittered), sampler.SamplesPerPixel, image, loop),
             NRooksSampler nrooks when nrooks.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, NRooksLanes<TL>>(frame, () => new(nrooks), sampler.SamplesPerPixel, image, loop),
-            _ => RenderPackets<TL, BufferedLanes<TL>>(frame, () => new(sampler), sampler.SamplesPerPixel, image, loop),
+                RenderPackets<TL, NRooksLanes<TL>>(plane, frame, () => new(nrooks), sampler.SamplesPerPixel, image, loop),
+            _ => RenderPackets<TL, BufferedLanes<TL>>(plane, frame, () => new(sampler), sampler.SamplesPerPixel, image, loop),
         };
 
-    private static long RenderPackets<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RowLoop loop)
+    private static long RenderPackets<TL, TS>(ImagePlane plane, PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RowLoop loop)
         where TL : struct, ILanes<TL>
-        where TS : struct, ILaneSampler<TL> => frame.IsOrthographic
-            ? RenderPackets<TL, TS, OrthographicProjection>(frame, newSampler, samplesPerPixel, image, loop)
-            : RenderPackets<TL, TS, PerspectiveProjection>(frame, newSampler, samplesPerPixel, image, loop);
+        where TS : struct, ILaneSampler<TL>
+    {
+        var rows = new PacketLoop<TL, TS>(frame, newSampler, samplesPerPixel, image, loop);
+        return plane.Dispatch<PacketLoop<TL, TS>, long>(ref rows);
+    }
 
     private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RowLoop loop)
         where TL : struct, ILanes<TL>
@@ -133,9 +112,11 @@ internal static class PointRenderer
     }
 
     /// <summary>The mean of a pixel's samples, in linear intensity (before the 8-bit rule): the scalar double loop.</summary>
-    public static Intensity RenderPixel(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row) => plane.IsOrthographic
-        ? RenderPixel<OrthographicProjection>(scene, plane, sampler, x, row)
-        : RenderPixel<PerspectiveProjection>(scene, plane, sampler, x, row);
+    public static Intensity RenderPixel(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row)
+    {
+        var pixel = new PixelMean(scene, sampler, x, row);
+        return plane.Dispatch<PixelMean, Intensity>(ref pixel);
+    }
 
     /// <summary>The scalar double loop for one pixel, compiled for the plane's projection <typeparamref name="TP"/>.</summary>
     private static Intensity RenderPixel<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row)
@@ -154,5 +135,28 @@ internal static class PointRenderer
         }
 
         return new Intensity(r / n, g / n, b / n);
+    }
+
+    /// <summary>The scalar loop over the image's rows, compiled for the plane's projection.</summary>
+    private readonly struct ScalarLoop(Scene scene, IPixelSampler sampler, Image image, RowLoop loop) : IProjectionAction<long>
+    {
+        public long Run<TP>(ImagePlane<TP> plane)
+            where TP : struct, IProjection => RenderScalar<TP>(scene, plane, sampler, image, loop);
+    }
+
+    /// <summary>The packet loop over the image's rows, compiled for the plane's projection.</summary>
+    private readonly struct PacketLoop<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RowLoop loop) : IProjectionAction<long>
+        where TL : struct, ILanes<TL>
+        where TS : struct, ILaneSampler<TL>
+    {
+        public long Run<TP>(ImagePlane<TP> plane)
+            where TP : struct, IProjection => RenderPackets<TL, TS, TP>(frame, newSampler, samplesPerPixel, image, loop);
+    }
+
+    /// <summary>One pixel's mean by the scalar loop, compiled for the plane's projection.</summary>
+    private readonly struct PixelMean(Scene scene, IPixelSampler sampler, int x, int row) : IProjectionAction<Intensity>
+    {
+        public Intensity Run<TP>(ImagePlane<TP> plane)
+            where TP : struct, IProjection => RenderPixel<TP>(scene, plane, sampler, x, row);
     }
 }

@@ -25,7 +25,7 @@ internal static partial class PacketKernel
     private static int RenderRowThroughHierarchy<TL, TS, TP>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int row, Span<Rgb24> pixels)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         PacketHierarchy hierarchy = frame.Hierarchy!;
         int lanes = TL.Count;
@@ -59,7 +59,7 @@ internal static partial class PacketKernel
     private static LaneColour<TL> SumPacketThroughHierarchy<TL, TS, TP>(PacketFrame frame, PacketHierarchy hierarchy, ref TS sampler, int samplesPerPixel, int x0, int row, ReadOnlySpan<int> leaves, ref int retracedCount)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         TL one = TL.Broadcast(1f);
         TL invWidth = TL.Broadcast(1f / frame.Width), invHeight = TL.Broadcast(1f / frame.Height);

@@ -26,7 +26,7 @@ internal static partial class PacketKernel
     public static int RenderRow<TL, TS, TP>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int row, Span<Rgb24> pixels)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         if (frame.Hierarchy is not null)
         {
@@ -58,7 +58,7 @@ internal static partial class PacketKernel
     private static (LaneColour<TL> Sum, int Retraced) SumPacketCarefully<TL, TS, TP>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int x0, int row)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         sampler.BeginPacket(x0, row);
         int count = 0;
@@ -70,7 +70,7 @@ internal static partial class PacketKernel
     private static LaneColour<TL> SumPacket<TL, TS, TP, TMode>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int x0, int row)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
         where TMode : struct, IPacketMode
     {
         int ignored = 0;
@@ -85,7 +85,7 @@ internal static partial class PacketKernel
     private static LaneColour<TL> SumPacket<TL, TS, TP, TMode>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int x0, int row, ref int retracedCount)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
         where TMode : struct, IPacketMode
     {
         TL one = TL.Broadcast(1f);
@@ -167,7 +167,7 @@ internal static partial class PacketKernel
     [MethodImpl(MethodImplOptions.NoInlining)]
     private static LaneColour<TL> Retrace<TL, TP>(PacketFrame frame, int x0, int row, TL sx, TL sy, LaneColour<TL> colour)
         where TL : struct, ILanes<TL>
-        where TP : struct, IProjection
+        where TP : struct, ILaneRays
     {
         int count = TL.Count;
         Span<float> values = stackalloc float[count * 5];
@@ -177,13 +177,13 @@ internal static partial class PacketKernel
         colour.G.Store(values[(3 * count)..]);
         colour.B.Store(values[(4 * count)..]);
         uint lanes = colour.Unsure & (uint)((1UL << Math.Min(count, frame.Width - x0)) - 1); // not the lanes past the image
-        ImagePlane plane = frame.Plane;
+        IRayFrame rays = frame.Rays;
         for (uint rest = lanes; rest != 0; rest &= rest - 1)
         {
             int lane = BitOperations.TrailingZeroCount(rest);
 
-            Ray ray = TP.GetRay(plane, plane.Alpha(x0 + lane, values[lane]), plane.Beta(row, values[count + lane]));
-            Intensity value = frame.Scene.Trace(ray, plane.TMin, plane.TMax);
+            Ray ray = rays.GetPixelRay(x0 + lane, row, values[lane], values[count + lane]);
+            Intensity value = frame.Scene.Trace(ray, rays.TMin, rays.TMax);
             values[(2 * count) + lane] = (float)value.R;
             values[(3 * count) + lane] = (float)value.G;
             values[(4 * count) + lane] = (float)value.B;

@@ -1,0 +1,178 @@
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using RayLab.Sampling;
+
+namespace RayLab.Simd;
+
+/// <summary>
+/// One of Kensler's permutations (<see cref="Permutation.PermutationElement"/>) per lane: the lane's pattern
+/// number and the values derived from it that every element of that permutation needs, made once per packet.
+/// </summary>
+/// <typeparam name="TL">The lane type.</typeparam>
+internal struct LanePermutation<TL>
+    where TL : struct, ILanes<TL>
+{
+    private TL _p, _p16, _p8, _p23, _multiplier, _rotation;
+
+    /// <summary>Sets the lanes' pattern numbers.</summary>
+    /// <param name="patterns">Each lane's pattern number p.</param>
+    /// <param name="length">The permutations' common length l.</param>
+    /// <param name="scratch">Room for <see cref="ILanes{TSelf}.Count"/> values.</param>
+    public void Set(TL patterns, in LaneLength<TL> length, Span<uint> scratch)
+    {
+        _p = patterns;
+        _p16 = TL.ShiftRightBits(_p, 16);
+        _p8 = TL.ShiftRightBits(_p, 8);
+        _p23 = TL.ShiftRightBits(_p, 23);
+
+        // The listing multiplies by 1 | (p ≫ 27) and then by Kensler.PermuteMultiplier3; products modulo 2³² associate, so one
+        // multiplier per lane does both.
+        _multiplier = TL.MultiplyBits(TL.ShiftRightBits(_p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(Kensler.PermuteMultiplier3));
+
+        // The final rotation (v + p) mod l, with v < l, is v + (p mod l) less l if that reaches l: p mod l is
+        // made here once per pixel, a mask when l is a power of two, else Lemire's multiply-only remainder.
+        if (length.IsPowerOfTwo)
+        {
+            _rotation = _p & length.Last;
+        }
+        else
+        {
+            _p.Store(MemoryMarshal.Cast<uint, float>(scratch));
+            for (int lane = 0; lane < scratch.Length; lane++)
+            {
+                scratch[lane] = length.Remainder(scratch[lane]);
+            }
+
+            _rotation = TL.Load(MemoryMarshal.Cast<uint, float>(scratch));
+        }
+    }
+
+    /// <summary>
+    /// Element <paramref name="i"/> of each lane's permutation, bit for bit the scalar one. With l a power of two
+    /// one round always lands below l and this is inlined; otherwise it calls <see cref="Walk"/>.
+    /// </summary>
+    /// <param name="i">Each lane's position, 0 ≤ i &lt; l.</param>
+    /// <param name="length">The lengths l (all lanes equal, l ≤ 2³⁰).</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly TL Element(TL i, in LaneLength<TL> length)
+    {
+        if (length.IsPowerOfTwo)
+        {
+            // w = l − 1: the rotation wraps with the mask.
+            TL w = length.Mask;
+            return TL.AddBits(Round(i, w), _rotation) & w;
+        }
+
+        return Walk(i, length);
+    }
+
+    /// <summary>
+    /// <see cref="Element"/> of two permutations at once. Each round is a chain of dependent multiplies, so its
+    /// latency, not its instruction count, sets the time; two independent chains side by side overlap. With both
+    /// lengths powers of two (one round each) the two chains are written out here; otherwise each is an
+    /// <see cref="Element"/>.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static (TL A, TL B) Pair(in LanePermutation<TL> a, TL ia, in LaneLength<TL> la, in LanePermutation<TL> b, TL ib, in LaneLength<TL> lb)
+    {
+        if (la.IsPowerOfTwo && lb.IsPowerOfTwo)
+        {
+            TL wa = la.Mask, wb = lb.Mask;
+            TL va = a.Round(ia, wa);
+            TL vb = b.Round(ib, wb);
+            return (TL.AddBits(va, a._rotation) & wa, TL.AddBits(vb, b._rotation) & wb);
+        }
+
+        return Apart(a, ia, la, b, ib, lb);
+    }
+
+    /// <summary><see cref="Pair"/> when a length is not a power of two: two <see cref="Element"/>s, in a call of its own (inlined, the JIT's inlining budget runs out).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    private static (TL A, TL B) Apart(in LanePermutation<TL> a, TL ia, in LaneLength<TL> la, in LanePermutation<TL> b, TL ib, in LaneLength<TL> lb) =>
+        (a.Element(ia, la), b.Element(ib, lb));
+
+    /// <summary>
+    /// Kensler's cycle walking for a length that is not a power of two: a loop that runs until every lane has left
+    /// the range [l, w], lanes that are done kept as they are.
+    /// </summary>
+    /// <remarks>A call of its own: inlined into a sampler's stage beside the power-of-two rounds it would use up the JIT's inlining budget.</remarks>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    private readonly TL Walk(TL i, in LaneLength<TL> length)
+    {
+        TL w = length.Mask, last = length.Last;
+        TL v = i;
+        TL pending = TL.BroadcastBits(uint.MaxValue);
+        do
+        {
+            TL next = Round(v, w);
+            v = TL.Select(pending, next, v);
+            pending = TL.LessThanBits(last, v);
+        }
+        while (TL.MaskBits(pending) != 0);
+
+        TL rotated = TL.AddBits(v, _rotation);
+        return TL.Select(TL.LessThanBits(last, rotated), TL.SubtractBits(rotated, length.Length), rotated);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private readonly TL Round(TL v, TL w)
+    {
+        v = TL.Xor(v, _p);
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier1));
+        v = TL.Xor(v, _p16);
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 4));
+        v = TL.Xor(v, _p8);
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier2));
+        v = TL.Xor(v, _p23);
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 1));
+        v = TL.MultiplyBits(v, _multiplier);
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 11));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier4));
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier5));
+        v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier6));
+        v &= w;
+        return TL.Xor(v, TL.ShiftRightBits(v, 5));
+    }
+}
+
+/// <summary>A permutation length l in every lane, with l − 1 and Kensler's mask w (the next power of two ≥ l, less one).</summary>
+/// <typeparam name="TL">The lane type.</typeparam>
+internal readonly struct LaneLength<TL>
+    where TL : struct, ILanes<TL>
+{
+    private readonly uint _length;
+    private readonly ulong _remainderMultiplier;
+
+    /// <summary>Broadcasts <paramref name="length"/> (1 … 2³⁰) and the values derived from it.</summary>
+    /// <param name="length">The permutation length.</param>
+    public LaneLength(int length)
+    {
+        _length = (uint)length;
+        _remainderMultiplier = unchecked((ulong.MaxValue / _length) + 1);
+        IsPowerOfTwo = int.IsPow2(length);
+        Length = TL.BroadcastBits((uint)length);
+        Last = TL.BroadcastBits((uint)length - 1);
+        Mask = TL.BroadcastBits(Permutation.Mask((uint)length));
+    }
+
+    /// <summary>True when l is a power of two (p mod l is p and (l − 1)).</summary>
+    public bool IsPowerOfTwo { get; }
+
+    /// <summary>l.</summary>
+    public TL Length { get; }
+
+    /// <summary>l − 1.</summary>
+    public TL Last { get; }
+
+    /// <summary>w.</summary>
+    public TL Mask { get; }
+
+    /// <summary>
+    /// <paramref name="p"/> mod l without a division (Lemire, Kaser and Kurz, "Faster remainder by direct
+    /// computation", 2019: exact for every 32-bit p and l).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public uint Remainder(uint p) => (uint)Math.BigMul(unchecked(_remainderMultiplier * p), _length, out _);
+}
