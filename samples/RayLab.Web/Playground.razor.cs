@@ -117,7 +117,7 @@ public sealed partial class Playground : IDisposable
             var clock = Stopwatch.StartNew();
             var image = new Image(_state.Width, _state.Height);
             var rays = new float[image.Width * image.Height];
-            RenderStatistics stats = await RenderInBandsAsync(prepared.Scene, prepared.Camera, prepared.Method, image, rays, cancel.Token);
+            RenderStatistics stats = await RenderInBandsAsync(prepared.Scene, prepared.Camera, prepared.Method, image, rays, _state.View == "picture", cancel.Token);
             double wall = clock.Elapsed.TotalMilliseconds;
             Paint(image.PixelBytes.ToArray(), image.Width, image.Height);
             _firstMs ??= _module?.Invoke<double>("now");
@@ -135,7 +135,7 @@ public sealed partial class Playground : IDisposable
             else
             {
                 exact = new Image(image.Width, image.Height);
-                await RenderInBandsAsync(prepared.Scene, prepared.Camera, RenderMethod.Exact, exact, null, cancel.Token);
+                await RenderInBandsAsync(prepared.Scene, prepared.Camera, RenderMethod.Exact, exact, null, false, cancel.Token);
             }
 
             _exact = (key, exact);
@@ -174,16 +174,43 @@ public sealed partial class Playground : IDisposable
     }
 
     /// <summary>
-    /// Renders <paramref name="image"/> a band of rows at a time (Renderer.RenderRows), yielding to the browser between
-    /// bands so input is never blocked for longer than a band.
+    /// Renders <paramref name="image"/> a band of rows at a time (<see cref="Renderer.RenderRows"/>), yielding to the
+    /// browser between bands so that input is never blocked for longer than a band; each band's rows are painted as
+    /// they come when <paramref name="paint"/> is set. The band height follows the measured speed, aiming at
+    /// <see cref="BandMilliseconds"/> a band.
     /// </summary>
-    private static async Task<RenderStatistics> RenderInBandsAsync(Scene scene, Camera camera, RenderMethod method, Image image, float[]? rays, CancellationToken cancel)
+    private async Task<RenderStatistics> RenderInBandsAsync(Scene scene, Camera camera, RenderMethod method, Image image, float[]? rays, bool paint, CancellationToken cancel)
     {
         var renderer = new Renderer { MaxDegreeOfParallelism = 1, CancellationToken = cancel };
-        RenderStatistics stats = renderer.Render(scene, camera, method, image, rays);
-        await Task.Yield();
-        return stats;
+        long primary = 0;
+        TimeSpan time = default;
+        RenderKernel kernel = RenderKernel.Scalar;
+        int rows = _bandRows.GetValueOrDefault(method.Name, 8);
+        for (int first = 0; first < image.Height;)
+        {
+            int count = Math.Min(rows, image.Height - first);
+            RenderStatistics band = renderer.RenderRows(scene, camera, method, image, first, count, rays);
+            primary += band.PrimaryRays;
+            time += band.RenderTime;
+            kernel = band.Kernel;
+            if (paint)
+            {
+                _module?.InvokeVoid("paintRows", "view", image.PixelBytes.Slice(first * image.Width * 3, count * image.Width * 3).ToArray(), image.Width, first);
+            }
+
+            first += count;
+            rows = Math.Clamp((int)(count * BandMilliseconds / Math.Max(band.RenderTime.TotalMilliseconds, 0.5)), 1, image.Height);
+            await Task.Delay(1, cancel);
+        }
+
+        _bandRows[method.Name] = rows;
+        return new RenderStatistics(primary, time) { Kernel = kernel };
     }
+
+    /// <summary>What one band of a full render aims to take: short enough for input and painting to go on between bands.</summary>
+    private const double BandMilliseconds = 40;
+
+    private readonly Dictionary<string, int> _bandRows = [];
 
     /// <summary>A camera move from the pointer: an exact preview at a reduced size, sized to stay near 30 ms.</summary>
     [JSInvokable]
@@ -218,7 +245,7 @@ public sealed partial class Playground : IDisposable
             return;
         }
 
-        Paint(preview.PixelBytes.ToArray(), w, h);
+        _module?.InvokeVoid("paintPreview", "view", preview.PixelBytes.ToArray(), w, h, _state.Width, _state.Height);
         double ms = clock.Elapsed.TotalMilliseconds;
         _previewMs = ms;
         // Keep the preview near 30 ms: its pixel count scales with the square of the scale.

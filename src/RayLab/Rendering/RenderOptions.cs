@@ -10,6 +10,15 @@ namespace RayLab.Rendering;
 /// <param name="CancellationToken">Cancels the render: it then throws <see cref="OperationCanceledException"/>.</param>
 internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, RenderKernel Kernel, RenderProgress? Progress, CancellationToken CancellationToken)
 {
+    /// <summary>The first row to render, 0 the top (<see cref="Renderer.RenderRows"/>).</summary>
+    public int FirstRow { get; init; }
+
+    /// <summary>One past the last row to render; <see cref="int.MaxValue"/> for every row to the bottom.</summary>
+    public int EndRow { get; init; } = int.MaxValue;
+
+    /// <summary>The rows [Start, End) of an image <paramref name="height"/> rows tall that this render fills.</summary>
+    public (int Start, int End) Rows(int height) => (Math.Min(FirstRow, height), Math.Min(EndRow, height));
+
     /// <summary>The options for <see cref="Parallel.For(int, int, ParallelOptions, Action{int})"/>: threads and cancellation.</summary>
     public ParallelOptions Parallel => new() { MaxDegreeOfParallelism = MaxDegreeOfParallelism, CancellationToken = CancellationToken };
 }

@@ -2,17 +2,45 @@
 // (mouse drag, wheel, touch drag and pinch, click) into calls to the .NET component.
 
 export function paint(id, rgb, width, height) {
+  const ctx = sized(id, width, height);
+  if (ctx) ctx.putImageData(imageData(ctx, rgb, width, height), 0, 0);
+}
+
+function sized(id, width, height) {
   const canvas = document.getElementById(id);
-  if (!canvas) return;
+  if (!canvas) return null;
   if (canvas.width !== width) canvas.width = width;
   if (canvas.height !== height) canvas.height = height;
-  const ctx = canvas.getContext('2d');
+  return canvas.getContext('2d');
+}
+
+function imageData(ctx, rgb, width, height) {
   const image = ctx.createImageData(width, height);
   const d = image.data;
   for (let i = 0, j = 0, k = 0; i < width * height; i++, j += 3, k += 4) {
     d[k] = rgb[j]; d[k + 1] = rgb[j + 1]; d[k + 2] = rgb[j + 2]; d[k + 3] = 255;
   }
-  ctx.putImageData(image, 0, 0);
+  return image;
+}
+
+// A band of rows of the full picture, as a full render finishes it.
+export function paintRows(id, rgb, width, firstRow) {
+  const canvas = document.getElementById(id);
+  if (!canvas || canvas.width !== width) return;
+  const ctx = canvas.getContext('2d');
+  ctx.putImageData(imageData(ctx, rgb, width, rgb.length / 3 / width), 0, firstRow);
+}
+
+// A preview at a reduced size, scaled up (pixelated) over the whole canvas, which keeps the full size.
+const offscreen = document.createElement('canvas');
+export function paintPreview(id, rgb, width, height, fullWidth, fullHeight) {
+  const ctx = sized(id, fullWidth, fullHeight);
+  if (!ctx) return;
+  offscreen.width = width; offscreen.height = height;
+  const small = offscreen.getContext('2d');
+  small.putImageData(imageData(small, rgb, width, height), 0, 0);
+  ctx.imageSmoothingEnabled = false;
+  ctx.drawImage(offscreen, 0, 0, fullWidth, fullHeight);
 }
 
 // Pointer input. One orbit call at a time: moves that arrive while .NET renders a preview are summed into the next call,

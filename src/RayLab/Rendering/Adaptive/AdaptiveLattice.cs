@@ -67,7 +67,11 @@ internal sealed class AdaptiveLattice
 
         CentreLine = quincunx && DenseDepth == 0;
         long retraced = 0;
-        Parallel.For(0, plane.Height + 1, options.Parallel, j =>
+        // The rows this render fills (all, or a band of Renderer.RenderRows) need the corner lines from their top to their bottom.
+        (int first, int end) = options.Rows(plane.Height);
+        _rows = end - first;
+        CornerRays = (long)stride * (end > first ? _rows + 1 : 0);
+        Parallel.For(first, end > first ? end + 1 : first, options.Parallel, j =>
         {
             int again = TraceLine(j * _size, 0, _size, _corners.AsSpan(j * stride, stride));
             if (again != 0)
@@ -79,6 +83,9 @@ internal sealed class AdaptiveLattice
     }
 
     private long _retraced;
+
+    /// <summary>How many rows of pixels this render fills.</summary>
+    private readonly int _rows;
 
     /// <summary>
     /// With a minimum depth m ≥ 1, every pixel's squares at depth m have their corners and centres traced whatever
@@ -95,8 +102,8 @@ internal sealed class AdaptiveLattice
     /// line between two rows of pixels is traced by both when they are on different threads.
     /// </summary>
     public long DenseRays => DenseDepth == 0 ? 0
-        : (((_plane.Width * (1L << DenseDepth)) + 1) * ((_plane.Height * (1L << DenseDepth)) + 1)) - CornerRays
-          + ((long)_plane.Width * _plane.Height << (2 * DenseDepth));
+        : (((_plane.Width * (1L << DenseDepth)) + 1) * ((_rows * (1L << DenseDepth)) + 1)) - CornerRays
+          + ((long)_plane.Width * _rows << (2 * DenseDepth));
 
     /// <summary>
     /// With the quincunx (and no minimum depth): every pixel's centre is traced, a row at a time as one lattice line,
@@ -105,7 +112,7 @@ internal sealed class AdaptiveLattice
     public bool CentreLine { get; }
 
     /// <summary>Rays for the pixel centres of <see cref="CentreLine"/>.</summary>
-    public long CentreRays => CentreLine ? (long)_plane.Width * _plane.Height : 0;
+    public long CentreRays => CentreLine ? (long)_plane.Width * _rows : 0;
 
     /// <summary>Points whose float answer was uncertain and were traced again in double.</summary>
     public long RetracedPoints => Interlocked.Read(ref _retraced);
@@ -144,7 +151,7 @@ internal sealed class AdaptiveLattice
     public long Size => _size;
 
     /// <summary>Rays traced for the pixel corners.</summary>
-    public long CornerRays => _corners.LongLength;
+    public long CornerRays { get; }
 
     /// <summary>What the pixel corners on horizontal pixel line <paramref name="j"/> (0 the top edge) hit, W + 1 entries.</summary>
     public ReadOnlySpan<int> CornerLine(int j) => _corners.AsSpan(j * (_plane.Width + 1), _plane.Width + 1);

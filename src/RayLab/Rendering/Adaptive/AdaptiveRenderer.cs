@@ -72,12 +72,13 @@ internal static class AdaptiveRenderer
     /// <summary>Renders with <paramref name="sampler"/>'s settings; <paramref name="raysPerPixel"/>, if given, receives each pixel's rays.</summary>
     public static RenderStatistics Render(Scene scene, ImagePlane plane, AdaptiveSampler sampler, Image image, RenderOptions options, float[]? raysPerPixel)
     {
-        options.Progress?.Start(image.Height);
+        (int first, int end) = options.Rows(image.Height);
+        options.Progress?.Start(end - first);
         var clock = Stopwatch.StartNew();
         var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, sampler.Quincunx, sampler.Guard, options);
         long rays = lattice.CornerRays + lattice.DenseRays + lattice.CentreRays;
         bool flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
-        Parallel.For(0, image.Height, options.Parallel, lattice.Rent, (row, _, source) =>
+        Parallel.For(first, end, options.Parallel, lattice.Rent, (row, _, source) =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
             source.BeginRow(row);

@@ -158,8 +158,9 @@ public sealed class ExactRenderer
     {
         var clock = Stopwatch.StartNew();
         OutlineSet outlines = OutlineSet.Build(scene, plane, parallel: options.Parallel);
-        options.Progress?.Start(plane.Height);
-        Parallel.For(0, plane.Height, options.Parallel, () => new ExactRow(scene, plane, outlines, sweep), (row, _, worker) =>
+        (int first, int end) = options.Rows(plane.Height);
+        options.Progress?.Start(end - first);
+        Parallel.For(first, end, options.Parallel, () => new ExactRow(scene, plane, outlines, sweep), (row, _, worker) =>
         {
             worker.Integrate(row);
             writeRow(row, worker);

@@ -17,7 +17,8 @@ internal static class PixelMethodRenderer
         RenderOptions options, float[]? raysPerPixel)
     {
         long rays = 0;
-        options.Progress?.Start(image.Height);
+        (int first, int end) = options.Rows(image.Height);
+        options.Progress?.Start(end - first);
         var clock = Stopwatch.StartNew();
         try
         {
@@ -37,7 +38,8 @@ internal static class PixelMethodRenderer
         RenderOptions options, float[]? raysPerPixel, ref long rays)
     {
         long total = 0;
-        Parallel.For(0, image.Height, options.Parallel,
+        (int first, int end) = options.Rows(image.Height);
+        Parallel.For(first, end, options.Parallel,
             () => new ThreadState<TScratch>(new PixelTracer(scene, plane), method.CreateScratch()),
             (row, _, state) =>
             {

@@ -18,9 +18,10 @@ internal static class PointRenderer
     /// <summary>Renders the scene with <paramref name="sampler"/> into <paramref name="image"/>.</summary>
     public static RenderStatistics Render(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
     {
-        long rays = (long)image.Width * image.Height * sampler.SamplesPerPixel;
+        (int first, int end) = options.Rows(image.Height);
+        long rays = (long)image.Width * (end - first) * sampler.SamplesPerPixel;
         RenderKernel kernel = ChooseKernel(options.Kernel, scene, plane, out PacketFrame? frame, out string? reason);
-        options.Progress?.Start(image.Height);
+        options.Progress?.Start(end - first);
         var clock = Stopwatch.StartNew();
         long retraced = kernel switch
         {
@@ -65,7 +66,8 @@ internal static class PointRenderer
     private static long RenderScalar<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
         where TP : struct, IProjection
     {
-        Parallel.For(0, image.Height, options.Parallel, row =>
+        (int first, int end) = options.Rows(image.Height);
+        Parallel.For(first, end, options.Parallel, row =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
             for (int x = 0; x < pixels.Length; x++)
@@ -107,8 +109,9 @@ internal static class PointRenderer
         where TP : struct, IProjection
     {
         long retraced = 0;
+        (int first, int end) = options.Rows(image.Height);
         // Each thread gets its own lane sampler (the buffered one owns arrays); rows are independent.
-        Parallel.For(0, image.Height, options.Parallel, newSampler, (row, _, sampler) =>
+        Parallel.For(first, end, options.Parallel, newSampler, (row, _, sampler) =>
         {
             int count = PacketKernel.RenderRow<TL, TS, TP>(frame, ref sampler, samplesPerPixel, row, image.GetRowSpan(row));
             if (count != 0)
