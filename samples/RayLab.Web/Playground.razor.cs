@@ -40,6 +40,8 @@ public sealed partial class Playground : IDisposable
     private double _previewScale = 0.5;
     private double _longestGap;
     private double? _firstMs;
+    private double? _startMs;
+    private double? _firstBandMs;
     private readonly List<Trial> _trials = [];
     private IJSInProcessObjectReference? _module;
     private DotNetObjectReference<Playground>? _self;
@@ -68,6 +70,7 @@ public sealed partial class Playground : IDisposable
         }
 
         _module = await JS.InvokeAsync<IJSInProcessObjectReference>("import", "./js/raylab.js");
+        _startMs = _module.Invoke<double>("now");
         _self = DotNetObjectReference.Create(this);
         _module.InvokeVoid("attach", "view", _self);
         await RenderFullAsync();
@@ -196,6 +199,7 @@ public sealed partial class Playground : IDisposable
             if (paint)
             {
                 _module?.InvokeVoid("paintRows", "view", image.PixelBytes.Slice(first * image.Width * 3, count * image.Width * 3).ToArray(), image.Width, first);
+                _firstBandMs ??= _module?.Invoke<double>("now");
             }
 
             first += count;
@@ -465,7 +469,9 @@ public sealed partial class Playground : IDisposable
         return Change(s => s with { Camera = s.Camera with { Window = w } });
     }
 
-    private static string F(double value, string format = "0.###") => value.ToString(format, CultureInfo.InvariantCulture);
+    // (+ 0.0 turns −0 into 0; a value that rounds to zero prints as 0, not −0)
+    private static string F(double value, string format = "0.###") =>
+        (format != "R" && Math.Abs(value) < 5e-5 ? 0.0 : value + 0.0).ToString(format, CultureInfo.InvariantCulture);
 
     private static string Vec(Double3 v) => $"{F(v.X)}, {F(v.Y)}, {F(v.Z)}";
 

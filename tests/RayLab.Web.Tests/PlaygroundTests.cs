@@ -152,6 +152,13 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
             $"{await c.GetAttributeAsync("data-label")} {await c.GetAttributeAsync("data-x")},{await c.GetAttributeAsync("data-y")} {await c.GetAttributeAsync("data-weight")}"))];
         Assert.Equal(edge.Points.Select(p => $"{p.Label} {R(p.X)},{R(p.Y)} {R(p.Weight)}"), shown);
         Assert.True(edge.Points.Count > 5, "an edge pixel is subdivided");
+        // The README's screenshot, when asked for: RAYLAB_WEB_SCREENSHOT=docs/playground.png dotnet test tests/RayLab.Web.Tests.
+        if (Environment.GetEnvironmentVariable("RAYLAB_WEB_SCREENSHOT") is { Length: > 0 } screenshot)
+        {
+            await s.Page.SetViewportSizeAsync(1280, 800);
+            await s.Page.ScreenshotAsync(new() { Path = Path.GetFullPath(screenshot, StaticSite.RepositoryRoot) });
+        }
+
         Assert.Empty(s.Errors);
     }
 
@@ -211,7 +218,8 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         var lines = new List<string> { site.PublishNote, $"site: {site.BrotliBytes() / 1e6:0.00} MB with brotli (each file's .br copy, else the file)" };
         await using (Session cold = await OpenAsync())
         {
-            lines.Add($"first picture (two-spheres adaptive 640x360): {await cold.Page.GetAttributeAsync("#lab", "data-first-ms")} ms after navigation, cold cache");
+            lines.Add($"first picture (two-spheres adaptive 640x360), ms after navigation, cold cache: .NET and the page up {await cold.Page.GetAttributeAsync("#lab", "data-start-ms")}, "
+                + $"first band painted {await cold.Page.GetAttributeAsync("#lab", "data-first-band-ms")}, whole picture {await cold.Page.GetAttributeAsync("#lab", "data-first-ms")}");
         }
 
         foreach ((string name, string query) in new[] { ("exact 640x360", "m=exact"), ("jittered 4 spp 640x360", "m=jittered&n=4&seed=1"), ("adaptive (scene's) 640x360", "") })
