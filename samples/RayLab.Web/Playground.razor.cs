@@ -81,7 +81,17 @@ public sealed partial class Playground : IDisposable
     {
         try
         {
-            _prepared = _state.Describe().Prepare();
+            if (OwnMethods.IsOwn(_state.Sampler.Type))
+            {
+                // The library checks everything but the method, which is the sample project's.
+                RenderMethod own = OwnMethods.Create(_state.Sampler);
+                _prepared = (_state with { Sampler = SamplerSettings.Default }).Describe().Prepare() with { Method = own };
+            }
+            else
+            {
+                _prepared = _state.Describe().Prepare();
+            }
+
             _plane = _prepared.Camera.GetImagePlane(_state.Width, _state.Height);
             _error = null;
             return true;
@@ -89,6 +99,11 @@ public sealed partial class Playground : IDisposable
         catch (SceneFileException e)
         {
             _error = e.Message;
+            return false;
+        }
+        catch (ArgumentOutOfRangeException e)
+        {
+            _error = new SceneFileException(_state.Source, "sampler.samples", e.Message.Split('(')[0].Trim()).Message;
             return false;
         }
     }
@@ -310,7 +325,15 @@ public sealed partial class Playground : IDisposable
             return;
         }
 
-        IPixelSampler sampler = settings.CreateSampler();
+        if (OwnMethods.IsOwn(settings.Type) && OwnMethods.Sampler(settings) is null)
+        {
+            // Mitchell's method decides its points pixel by pixel: the inspector shows its value only.
+            var level = new Intensity(rendered.R / 255.0, rendered.G / 255.0, rendered.B / 255.0);
+            _inspection = new Inspection(x, y, _prepared.SamplerDescription, [], [], level, exact, rendered, inside);
+            return;
+        }
+
+        IPixelSampler sampler = OwnMethods.Sampler(settings) ?? settings.CreateSampler();
         var samples = new SamplePoint[sampler.SamplesPerPixel];
         sampler.GetSamples(x, y, samples);
         double weight = 1.0 / samples.Length;

@@ -63,10 +63,11 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         SceneFile.Load(Path.Combine(StaticSite.RepositoryRoot, "samples", "scenes", preset + ".json")) with { Width = width, Height = height };
 
     /// <summary>The library's picture of the same scene, method and size, with the kernel the page reports, as a SHA-256.</summary>
-    private static async Task<string> LibraryHash(IPage page, SceneDescription description)
+    private static async Task<string> LibraryHash(IPage page, SceneDescription description, RenderMethod? method = null)
     {
         RenderKernel kernel = Enum.Parse<RenderKernel>(await page.GetAttributeAsync("#lab", "data-kernel") ?? "Auto");
         PreparedScene prepared = description.Prepare();
+        prepared = method is null ? prepared : prepared with { Method = method };
         Image image = prepared.CreateImage();
         prepared.Render(new Renderer { Kernel = kernel }, image);
         return Convert.ToHexStringLower(SHA256.HashData(image.PixelBytes));
@@ -99,6 +100,20 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         Assert.Equal(await LibraryHash(jittered.Page, Scene("two-spheres") with { Sampler = new SamplerSettings("jittered", 4, 1) }), await CanvasHash(jittered.Page));
         Assert.Empty(s.Errors);
         Assert.Empty(jittered.Errors);
+    }
+
+    [Fact]
+    public async Task The_sample_projects_own_methods_render_the_librarys_picture()
+    {
+        await using Session grid = await OpenAsync("?scene=off-axis&m=rotated-grid&n=4");
+        Assert.Equal(await LibraryHash(grid.Page, Scene("off-axis"), RenderMethod.Sampled(new RayLab.OwnMethod.RotatedGridSampler(4))), await CanvasHash(grid.Page));
+        await ClickPixel(grid.Page, 100, 100);
+        await grid.Page.WaitForSelectorAsync("#inspector[data-points='4']");
+
+        await using Session mitchell = await OpenAsync("?scene=off-axis&m=mitchell");
+        Assert.Equal(await LibraryHash(mitchell.Page, Scene("off-axis"), RenderMethod.Custom(new RayLab.OwnMethod.MitchellMethod())), await CanvasHash(mitchell.Page));
+        Assert.Empty(grid.Errors);
+        Assert.Empty(mitchell.Errors);
     }
 
     [Fact]

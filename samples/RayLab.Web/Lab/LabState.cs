@@ -55,7 +55,10 @@ internal sealed record LabState
 
     /// <summary>The scene description this state renders (the library checks it in <see cref="SceneDescription.Prepare"/>).</summary>
     public SceneDescription Describe() =>
-        SceneFile.Parse(SceneText, Preset == Custom ? "editor" : Preset) with { Width = Width, Height = Height, Camera = Camera, Sampler = Sampler };
+        SceneFile.Parse(SceneText, Source) with { Width = Width, Height = Height, Camera = Camera, Sampler = Sampler };
+
+    /// <summary>The name the library's messages give the scene: the preset's, or <c>editor</c>.</summary>
+    public string Source => Preset == Custom ? "editor" : Preset;
 
     /// <summary>The state as a query string (without the leading <c>?</c>).</summary>
     public string ToQuery()
@@ -145,7 +148,7 @@ internal sealed record LabState
         SamplerSettings s = state.Sampler;
         s = s with
         {
-            Type = q.GetValueOrDefault("m") is string m && SamplerSettings.Types.Contains(m) ? m : s.Type,
+            Type = q.GetValueOrDefault("m") is string m && (SamplerSettings.Types.Contains(m) || OwnMethods.IsOwn(m)) ? m : s.Type,
             Samples = (int?)Num(q, "n") ?? s.Samples,
             Seed = q.TryGetValue("seed", out string? seed) && uint.TryParse(seed, NumberStyles.None, CultureInfo.InvariantCulture, out uint sd) ? sd : s.Seed,
             MinDepth = (int?)Num(q, "min") ?? s.MinDepth,
