@@ -199,7 +199,7 @@ public sealed partial class Playground : IDisposable
     /// </summary>
     private async Task<RenderStatistics> RenderInBandsAsync(Scene scene, Camera camera, RenderMethod method, Image image, float[]? rays, bool paint, CancellationToken cancel)
     {
-        var renderer = new Renderer { MaxDegreeOfParallelism = 1, CancellationToken = cancel };
+        var renderer = new Renderer { MaxDegreeOfParallelism = 1, CancellationToken = cancel, Kernel = _state.Kernel };
         long primary = 0;
         TimeSpan time = default;
         RenderKernel kernel = RenderKernel.Scalar;

@@ -237,7 +237,11 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
                 + $"first band painted {await cold.Page.GetAttributeAsync("#lab", "data-first-band-ms")}, whole picture {await cold.Page.GetAttributeAsync("#lab", "data-first-ms")}");
         }
 
-        foreach ((string name, string query) in new[] { ("exact 640x360", "m=exact"), ("jittered 4 spp 640x360", "m=jittered&n=4&seed=1"), ("adaptive (scene's) 640x360", "") })
+        foreach ((string name, string query) in new[]
+        {
+            ("exact 640x360", "m=exact"), ("jittered 4 spp 640x360", "m=jittered&n=4&seed=1"),
+            ("jittered 4 spp 640x360, scalar kernel", "m=jittered&n=4&seed=1&k=scalar"), ("adaptive (scene's) 640x360", ""),
+        })
         {
             await using Session s = await OpenAsync("?scene=two-spheres&" + query);
             var ms = new List<string> { await s.Page.GetAttributeAsync("#lab", "data-render-ms") ?? "" };

@@ -31,6 +31,12 @@ internal sealed record LabState
     /// <summary>Which picture the canvas shows: <c>picture</c>, <c>rays</c> (rays per pixel) or <c>error</c> (against exact).</summary>
     public string View { get; init; } = "picture";
 
+    /// <summary>The loop that renders point samples: <c>Auto</c> (the library's choice), <c>Scalar</c> or <c>Vector128</c>.</summary>
+    public RenderKernel Kernel { get; init; } = RenderKernel.Auto;
+
+    /// <summary>The kernels the page offers (the browser's SIMD is 128 bits wide).</summary>
+    public static IReadOnlyList<RenderKernel> Kernels { get; } = [RenderKernel.Auto, RenderKernel.Scalar, RenderKernel.Vector128];
+
     /// <summary>The inspected pixel, if any.</summary>
     public (int X, int Y)? Pick { get; init; }
 
@@ -92,6 +98,11 @@ internal sealed record LabState
         q.Add(("q", Sampler.Quincunx ? "1" : "0"));
         q.Add(("g", Sampler.Guard ? "1" : "0"));
         q.Add(("view", View));
+        if (Kernel != RenderKernel.Auto)
+        {
+            q.Add(("k", Kernel.ToString().ToLowerInvariant()));
+        }
+
         if (Pick is (int px, int py))
         {
             q.Add(("px", $"{I(px)},{I(py)}"));
@@ -167,6 +178,7 @@ internal sealed record LabState
             Camera = c,
             Sampler = s,
             View = q.GetValueOrDefault("view") is string v && Views.Contains(v) ? v : "picture",
+            Kernel = q.TryGetValue("k", out string? k) && Enum.TryParse(k, ignoreCase: true, out RenderKernel kernel) && Kernels.Contains(kernel) ? kernel : RenderKernel.Auto,
             Pick = pick is (int a, int b) && a < width && b < height ? pick : null,
         };
     }
