@@ -180,6 +180,13 @@ public sealed partial class Playground : IDisposable
         {
             // A newer render took over.
         }
+        catch (ArgumentException e)
+        {
+            // What the scene check does not catch, e.g. a scene the exact reference cannot take: a message, the page stays.
+            _error = SceneFileException.OneLine(e.Message);
+            _status = "error";
+            StateHasChanged();
+        }
     }
 
     /// <summary>Cancels the render under way and returns the source for the next one.</summary>
@@ -256,7 +263,7 @@ public sealed partial class Playground : IDisposable
         var clock = Stopwatch.StartNew();
         try
         {
-            OneThread.Render(_prepared!.Scene, _prepared.Camera, RenderMethod.Exact, preview);
+            OneThread.Render(_prepared!.Scene, _prepared.Camera, PreviewMethod(), preview);
         }
         catch (ArgumentException e)
         {
@@ -273,6 +280,20 @@ public sealed partial class Playground : IDisposable
         _status = "preview";
         StateHasChanged();
         await Task.Yield();
+    }
+
+    /// <summary>The exact picture, or one ray per pixel for a scene the exact reference cannot take.</summary>
+    private RenderMethod PreviewMethod()
+    {
+        try
+        {
+            ExactRenderer.Check(_prepared!.Scene, _prepared.Camera, _state.Width, _state.Height);
+            return RenderMethod.Exact;
+        }
+        catch (UnsupportedSceneException)
+        {
+            return RenderMethod.Sampled(new RegularSampler(1));
+        }
     }
 
     /// <summary>The pointer let go (or the wheel stopped): the full render, and the URL follows the camera.</summary>
@@ -293,7 +314,16 @@ public sealed partial class Playground : IDisposable
         }
 
         _state = _state with { Pick = (x, y) };
-        Inspect(x, y);
+        try
+        {
+            Inspect(x, y);
+        }
+        catch (ArgumentException e)
+        {
+            _inspection = null;
+            _error = SceneFileException.OneLine(e.Message);
+        }
+
         UpdateUrl();
         StateHasChanged();
     }
