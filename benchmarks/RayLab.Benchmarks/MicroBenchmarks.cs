@@ -3,6 +3,7 @@ using System.Runtime.Intrinsics;
 using RayLab.Cameras;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Simd;
 
 namespace RayLab.Benchmarks;
 

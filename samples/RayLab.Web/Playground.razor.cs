@@ -231,6 +231,12 @@ public sealed partial class Playground : IDisposable
         }
 
         _bandRows[method.Name] = rows;
+        // Adaptive bands each count the whole image's pixel corners: the rays charged to the pixels are the cost.
+        if (rays is not null && method.Name == "adaptive")
+        {
+            primary = (long)Math.Round(rays.Sum(r => (double)r));
+        }
+
         return new RenderStatistics(primary, time) { Kernel = kernel };
     }
 

@@ -1,4 +1,5 @@
 using System.Globalization;
+using System.Numerics;
 using System.Runtime.CompilerServices;
 
 namespace RayLab;
@@ -12,7 +13,7 @@ namespace RayLab;
 /// Only ambient light exists in this lab, so an object's colour on screen is its colour multiplied
 /// component-wise by the ambient intensity: <c>color * ambient</c>.
 /// </remarks>
-public readonly struct Intensity : IEquatable<Intensity>
+public readonly struct Intensity : IEquatable<Intensity>, IAdditionOperators<Intensity, Intensity, Intensity>, IMultiplyOperators<Intensity, double, Intensity>
 {
     /// <summary>Black: all components 0.</summary>
     public static Intensity Black => default;

@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Text.RegularExpressions;
 using System.Xml.Linq;
 using RayLab.Comparison;
+using RayLab.Metrics;
 using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Rendering.Exact;
@@ -23,7 +24,7 @@ public sealed partial class CompareTests : IDisposable
         }
         """;
 
-    private static readonly string[] ReportFiles = ["error-vs-rays.png", "error-vs-rays.svg", "error-vs-time.png", "error-vs-time.svg", "index.html", "results.csv", "results.md"];
+    private static readonly string[] ReportFiles = [.. CompareReport.ChartStems.SelectMany(c => new[] { c + ".png", c + ".svg" }), "index.html", "results.csv", "results.md"];
 
     private readonly TempDirectory _dir = new();
 
@@ -57,6 +58,9 @@ public sealed partial class CompareTests : IDisposable
             Assert.Equal(error.Max, row.Max);
             Assert.Equal(error.FractionOverOneLevel, row.OverOneLevel, 6);
             Assert.True(Load(Path.Combine(report, row.ErrorImage)).Width > 48, "the error image has a legend");
+            Assert.Equal(Flip.Compute(exact, Load(Path.Combine(report, row.Image))).Mean, row.MeanFlip, 8);
+            Assert.Equal($"flip/{Path.GetFileName(row.Image)}", row.FlipMap);
+            Assert.True(Load(Path.Combine(report, row.FlipMap)).Width > 48, "the FLIP map has a legend");
         }
 
         // The exact image is the exact renderer's, and jittered sampling gets closer to it with every budget.
@@ -71,13 +75,13 @@ public sealed partial class CompareTests : IDisposable
         string[] lines = stdout.TrimEnd('\n').Split('\n');
         Assert.StartsWith("| sampler | setting |", lines[0], StringComparison.Ordinal);
         Assert.Equal(rows.Length + 4, lines.Length);
-        Assert.All(lines[2..^2], l => Assert.Equal(9, l.Count(c => c == '|')));
+        Assert.All(lines[2..^2], l => Assert.Equal(10, l.Count(c => c == '|')));
         Assert.All(rows.Select((r, i) => (r, i)), p => Assert.StartsWith($"| {p.r.Series} | {p.r.Setting} |", lines[2 + p.i], StringComparison.Ordinal));
         Assert.Contains("index.html", lines[^2], StringComparison.Ordinal);
         Assert.Matches(@"^total time \d+\.\d s$", lines[^1]);
 
         // The charts (ScottPlot, PNG and SVG) name every series; index.html links every file it names, and they all exist.
-        foreach (string chart in new[] { "error-vs-time", "error-vs-rays" })
+        foreach (string chart in CompareReport.ChartStems)
         {
             string text = string.Concat(XDocument.Load(Path.Combine(report, chart + ".svg")).Descendants(XName.Get("text", "http://www.w3.org/2000/svg")).Select(t => t.Value));
             Assert.All(expectedSeries, name => Assert.Contains(name, text, StringComparison.Ordinal));
@@ -85,12 +89,14 @@ public sealed partial class CompareTests : IDisposable
         }
 
         string[] links = [.. Href().Matches(File.ReadAllText(Path.Combine(report, "index.html"))).Select(m => m.Groups[1].Value).Distinct()];
-        Assert.Equal((2 * rows.Length) + 5, links.Length);
+        Assert.Equal((3 * rows.Length) + 7, links.Length);
         Assert.All(links, l => Assert.True(File.Exists(Path.Combine(report, l)), l));
         Assert.DoesNotContain(_dir.Entries(), e => e.EndsWith(".tmp", StringComparison.Ordinal));
 
         string md = File.ReadAllText(Path.Combine(report, "results.md"));
         Assert.Contains("## Convergence slopes", md, StringComparison.Ordinal);
+        Assert.Contains("## Time to mean FLIP ≤", md, StringComparison.Ordinal);
+        Assert.Contains("## RMSE and FLIP: the same ranking?", md, StringComparison.Ordinal);
         Assert.Contains($"raylab compare {scene} --out {report} --budgets 1,4,16 --repeats 2", md, StringComparison.Ordinal);
     }
 
@@ -172,13 +178,13 @@ public sealed partial class CompareTests : IDisposable
 
     // ---- helpers --------------------------------------------------------------------------------------
 
-    private sealed record Row(string Series, string Sampler, string Setting, int SamplesPerPixel, double RaysPerPixel, double Rmse, int Max, double OverOneLevel, string Image, string ErrorImage);
+    private sealed record Row(string Series, string Sampler, string Setting, int SamplesPerPixel, double RaysPerPixel, double Rmse, int Max, double OverOneLevel, double MeanFlip, string Image, string ErrorImage, string FlipMap);
 
     private static Row[] ReadCsv(string path)
     {
         string[] lines = File.ReadAllLines(path);
         string[] header = lines[0].Split(',');
-        Assert.Equal(17, header.Length);
+        Assert.Equal(19, header.Length);
         int Col(string name) => Array.IndexOf(header, name) is >= 0 and int i ? i : throw new InvalidOperationException($"no column {name}");
         return [.. lines[1..].Select(line =>
         {
@@ -189,8 +195,8 @@ public sealed partial class CompareTests : IDisposable
             Assert.True(long.Parse(f[Col("rays")], CultureInfo.InvariantCulture) > 0);
             return new Row(f[Col("series")], f[Col("sampler")], f[Col("setting")],
                 f[Col("samples_per_pixel")] is { Length: > 0 } spp ? int.Parse(spp, CultureInfo.InvariantCulture) : 0,
-                D("rays_per_pixel"), D("rmse"), int.Parse(f[Col("max")], CultureInfo.InvariantCulture), D("over_one_level"),
-                f[Col("image")], f[Col("error_image")]);
+                D("rays_per_pixel"), D("rmse"), int.Parse(f[Col("max")], CultureInfo.InvariantCulture), D("over_one_level"), D("mean_flip"),
+                f[Col("image")], f[Col("error_image")], f[Col("flip_map")]);
         })];
     }
 

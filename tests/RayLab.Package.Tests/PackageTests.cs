@@ -95,6 +95,22 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
     }
 
     [Fact]
+    public void The_reports_package_depends_on_exactly_the_core_it_was_built_with()
+    {
+        // RayLab.Reports uses the core's internals, so "this core or later" would let NuGet pair it with a core whose
+        // internals moved; the nuspec must name the one version, in brackets.
+        string package = Path.Combine(feed.Feed, $"RayLab.Reports.{feed.Version}.nupkg");
+        using var zip = System.IO.Compression.ZipFile.OpenRead(package);
+        System.IO.Compression.ZipArchiveEntry nuspec = zip.Entries.Single(e => e.FullName.EndsWith(".nuspec", StringComparison.Ordinal));
+        using var reader = new StreamReader(nuspec.Open());
+        System.Xml.Linq.XDocument document = System.Xml.Linq.XDocument.Load(reader);
+        string[] versions = [.. document.Descendants().Where(e => e.Name.LocalName == "dependency" && (string?)e.Attribute("id") == "RayLab")
+            .Select(e => (string?)e.Attribute("version") ?? "")];
+        Assert.NotEmpty(versions);
+        Assert.All(versions, v => Assert.Equal($"[{feed.Version}]", v));
+    }
+
+    [Fact]
     public async Task An_app_on_both_packages_writes_webp_and_draws_a_chart()
     {
         string app = feed.NewProject("reports-app", ["RayLab", "RayLab.Reports"]);

@@ -1,6 +1,4 @@
-using System.Diagnostics;
 using System.Runtime.InteropServices;
-using System.Text;
 
 namespace RayLab.Package.Tests;
 
@@ -19,7 +17,7 @@ public sealed class PackedFeed : IAsyncLifetime
     public string Root { get; } = Directory.CreateTempSubdirectory("raylab-packaging-").FullName;
 
     /// <summary>The repository's folder (the one with RayLab.sln).</summary>
-    public string Repo { get; } = FindRepoRoot();
+    public string Repo { get; } = RepoPaths.Root();
 
     /// <summary>The folder feed.</summary>
     public string Feed => Path.Combine(Root, "feed");
@@ -124,77 +122,18 @@ public sealed class PackedFeed : IAsyncLifetime
     /// <param name="fileName">The program.</param>
     /// <param name="args">Its arguments.</param>
     /// <returns>What the child wrote to stdout.</returns>
-    public static async Task<string> RunChildAsync(string workingDirectory, string nugetPackages, string? setVariable, string fileName, params string[] args)
+    public static Task<string> RunChildAsync(string workingDirectory, string nugetPackages, string? setVariable, string fileName, params string[] args)
     {
-        var psi = new ProcessStartInfo(fileName)
+        var environment = new Dictionary<string, string?>
         {
-            WorkingDirectory = workingDirectory,
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            UseShellExecute = false,
+            ["NUGET_PACKAGES"] = nugetPackages,
+            ["RAYLAB_NO_DISPATCH"] = null, // the native tool chooses its build unless a test asks it not to
         };
-        foreach (string arg in args)
-        {
-            psi.ArgumentList.Add(arg);
-        }
-
-        // What the test host inherited from the outer `dotnet test` build must not steer the child builds.
-        foreach (string key in psi.Environment.Keys.Where(k => k.StartsWith("MSBuild", StringComparison.OrdinalIgnoreCase)).ToList())
-        {
-            psi.Environment.Remove(key);
-        }
-
-        psi.Environment["NUGET_PACKAGES"] = nugetPackages;
-        psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
-        psi.Environment["DOTNET_NOLOGO"] = "1";
-        psi.Environment["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1";
-        psi.Environment.Remove("RAYLAB_NO_DISPATCH"); // the native tool chooses its build unless a test asks it not to
         if (setVariable is not null)
         {
-            psi.Environment[setVariable] = "1";
+            environment[setVariable] = "1";
         }
 
-        using var process = new Process { StartInfo = psi };
-        var stdout = new StringBuilder();
-        var stderr = new StringBuilder();
-        process.OutputDataReceived += (_, e) => { if (e.Data is not null) { lock (stdout) { stdout.AppendLine(e.Data); } } };
-        process.ErrorDataReceived += (_, e) => { if (e.Data is not null) { lock (stderr) { stderr.AppendLine(e.Data); } } };
-        process.Start();
-        process.BeginOutputReadLine();
-        process.BeginErrorReadLine();
-
-        string command = $"{fileName} {string.Join(' ', args)} (in {workingDirectory})";
-        using var timeout = CancellationTokenSource.CreateLinkedTokenSource(TestContext.Current.CancellationToken);
-        timeout.CancelAfter(ChildTimeout);
-        try
-        {
-            await process.WaitForExitAsync(timeout.Token);
-        }
-        catch (OperationCanceledException)
-        {
-            process.Kill(entireProcessTree: true);
-            throw new InvalidOperationException($"timed out after {ChildTimeout} or cancelled: {command}\n--- stdout\n{stdout}\n--- stderr\n{stderr}");
-        }
-
-        process.WaitForExit(); // drains the redirected streams
-        if (process.ExitCode != 0)
-        {
-            throw new InvalidOperationException($"exit code {process.ExitCode}: {command}\n--- stdout\n{stdout}\n--- stderr\n{stderr}");
-        }
-
-        return stdout.ToString();
-    }
-
-    private static string FindRepoRoot()
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            if (File.Exists(Path.Combine(dir.FullName, "RayLab.sln")))
-            {
-                return dir.FullName;
-            }
-        }
-
-        throw new InvalidOperationException($"RayLab.sln not found above {AppContext.BaseDirectory}");
+        return ChildProcess.RunCheckedAsync(workingDirectory, environment, ChildTimeout, fileName, args);
     }
 }

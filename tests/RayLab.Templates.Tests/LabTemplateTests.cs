@@ -133,7 +133,7 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
     public async Task HelpDescribesEveryOption()
     {
         string help = Collapse(await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "--help"));
-        using JsonDocument template = JsonDocument.Parse(File.ReadAllText(Path.Combine(TemplateFeed.RepoRoot(),
+        using JsonDocument template = JsonDocument.Parse(File.ReadAllText(Path.Combine(RepoPaths.Root(),
             "templates", "RayLab.Templates", "content", "raylab-lab", ".template.config", "template.json")));
         int options = 0;
         foreach (JsonProperty symbol in template.RootElement.GetProperty("symbols").EnumerateObject())

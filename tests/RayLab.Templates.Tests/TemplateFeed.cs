@@ -1,5 +1,3 @@
-using System.Diagnostics;
-using System.Text;
 
 namespace RayLab.Templates.Tests;
 
@@ -30,7 +28,7 @@ public sealed class TemplateFeed : IAsyncLifetime
 
     public async ValueTask InitializeAsync()
     {
-        string repo = RepoRoot();
+        string repo = RepoPaths.Root();
         string artifacts = Path.Combine(Root, "artifacts");
         Directory.CreateDirectory(CliHome);
         foreach (string project in new[] { "src/RayLab/RayLab.csproj", "src/RayLab.Reports/RayLab.Reports.csproj", "templates/RayLab.Templates/RayLab.Templates.csproj" })
@@ -60,86 +58,24 @@ public sealed class TemplateFeed : IAsyncLifetime
         return ValueTask.CompletedTask;
     }
 
-    /// <summary>The repository's folder (the one with RayLab.sln) above the test assembly.</summary>
-    public static string RepoRoot()
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            if (File.Exists(Path.Combine(dir.FullName, "RayLab.sln")))
-            {
-                return dir.FullName;
-            }
-        }
-
-        throw new InvalidOperationException($"RayLab.sln not found above {AppContext.BaseDirectory}");
-    }
-
     /// <summary>Runs a child to completion; fails with its command line and output unless it exits 0.</summary>
     /// <returns>What the child wrote to stdout.</returns>
-    public async Task<string> RunAsync(string workingDirectory, string fileName, params string[] args)
-    {
-        (int exit, string output, string errors) = await StartAsync(workingDirectory, fileName, args);
-        Assert.True(exit == 0, $"exit code {exit}: {fileName} {string.Join(' ', args)} (in {workingDirectory})\n--- stdout\n{output}\n--- stderr\n{errors}");
-        return output;
-    }
+    public Task<string> RunAsync(string workingDirectory, string fileName, params string[] args) =>
+        ChildProcess.RunCheckedAsync(workingDirectory, Environment(), ChildTimeout, fileName, args);
 
     /// <summary>Runs a child to completion, whatever its exit code.</summary>
     /// <returns>Its exit code, and stdout followed by stderr.</returns>
     public async Task<(int ExitCode, string Output)> RunUncheckedAsync(string workingDirectory, string fileName, params string[] args)
     {
-        (int exit, string output, string errors) = await StartAsync(workingDirectory, fileName, args);
-        return (exit, output + errors);
+        ChildResult result = await ChildProcess.RunAsync(workingDirectory, Environment(), ChildTimeout, fileName, args);
+        return (result.ExitCode, result.Output + result.Errors);
     }
 
-    private async Task<(int ExitCode, string Output, string Errors)> StartAsync(string workingDirectory, string fileName, string[] args)
+    /// <summary>The children's own CLI home and NuGet cache, and no HTTPS certificate prompt.</summary>
+    private Dictionary<string, string?> Environment() => new()
     {
-        var psi = new ProcessStartInfo(fileName)
-        {
-            WorkingDirectory = workingDirectory,
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            UseShellExecute = false,
-        };
-        foreach (string arg in args)
-        {
-            psi.ArgumentList.Add(arg);
-        }
-
-        // What the test host inherited from the outer `dotnet test` build must not steer the child builds.
-        foreach (string key in psi.Environment.Keys.Where(k => k.StartsWith("MSBuild", StringComparison.OrdinalIgnoreCase)).ToList())
-        {
-            psi.Environment.Remove(key);
-        }
-
-        psi.Environment["DOTNET_CLI_HOME"] = CliHome;
-        psi.Environment["NUGET_PACKAGES"] = Packages;
-        psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
-        psi.Environment["DOTNET_NOLOGO"] = "1";
-        psi.Environment["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1";
-        psi.Environment["DOTNET_GENERATE_ASPNET_CERTIFICATE"] = "false";
-
-        using var process = new Process { StartInfo = psi };
-        var stdout = new StringBuilder();
-        var stderr = new StringBuilder();
-        process.OutputDataReceived += (_, e) => { if (e.Data is not null) { lock (stdout) { stdout.AppendLine(e.Data); } } };
-        process.ErrorDataReceived += (_, e) => { if (e.Data is not null) { lock (stderr) { stderr.AppendLine(e.Data); } } };
-        process.Start();
-        process.BeginOutputReadLine();
-        process.BeginErrorReadLine();
-
-        using var timeout = CancellationTokenSource.CreateLinkedTokenSource(TestContext.Current.CancellationToken);
-        timeout.CancelAfter(ChildTimeout);
-        try
-        {
-            await process.WaitForExitAsync(timeout.Token);
-        }
-        catch (OperationCanceledException)
-        {
-            process.Kill(entireProcessTree: true);
-            Assert.Fail($"timed out after {ChildTimeout} or cancelled: {fileName} {string.Join(' ', args)} (in {workingDirectory})\n--- stdout\n{stdout}\n--- stderr\n{stderr}");
-        }
-
-        process.WaitForExit(); // drains the redirected streams
-        return (process.ExitCode, stdout.ToString(), stderr.ToString());
-    }
+        ["DOTNET_CLI_HOME"] = CliHome,
+        ["NUGET_PACKAGES"] = Packages,
+        ["DOTNET_GENERATE_ASPNET_CERTIFICATE"] = "false",
+    };
 }

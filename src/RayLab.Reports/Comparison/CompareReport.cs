@@ -5,9 +5,11 @@ using System.Text;
 namespace RayLab.Comparison;
 
 /// <summary>
-/// The speed-against-error report (<c>raylab compare</c>, <see cref="CompareRunner.Run"/>): the table (Markdown and CSV), each sampler's fitted convergence slope,
-/// the time each needs to reach "maximum error ≤ 1 level" and a common RMSE, two log-log charts and an
-/// <c>index.html</c> that links them with every image.
+/// The speed-against-error report (<c>raylab compare</c>, <see cref="CompareRunner.Run"/>): the table (Markdown and CSV) with
+/// RMSE and mean FLIP, each sampler's fitted convergence slopes, the time each needs to reach "maximum error ≤ 1 level",
+/// a common RMSE and a common mean FLIP, where the two measures rank the samplers differently, four log-log charts
+/// (each measure against time and against rays) and an <c>index.html</c> that shows them with every image, its error
+/// image and its FLIP map.
 /// </summary>
 /// <param name="heading">One line saying what was compared (scene, size, camera, seed, threads, repeats).</param>
 /// <param name="command">The command line that reproduces the run, or empty when there is none (a run through <see cref="CompareRunner"/>).</param>
@@ -18,33 +20,47 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     private const string Definition =
         "Error: per channel of every pixel, the image's 8-bit level minus the exact image's level (both by the lab's rule "
         + "int(256·I)), in levels; RMSE and mean absolute error over all pixels and channels, max = the largest, "
-        + "\"> 1 level\" = the fraction of pixels with some channel off by 2 or more. Time: median render time "
+        + "\"> 1 level\" = the fraction of pixels with some channel off by 2 or more. FLIP: the mean of the image's "
+        + "LDR-FLIP map against the exact image (Andersson et al. 2020; 0 = indistinguishable, 1 = the largest "
+        + "difference; 0.7 m from a 0.7 m wide display of 3840 pixels), the error a viewer sees. Time: median render time "
         + "(the render loop only). Rays: primary rays traced per pixel.";
 
     /// <summary>The results, grouped into the chart's lines in the order they first appear.</summary>
     public IReadOnlyList<IGrouping<string, CompareResult>> Series { get; } = [.. results.GroupBy(r => r.Case.Series)];
 
-    /// <summary>Writes results.csv, results.md, the charts error-vs-time and error-vs-rays (each .png and .svg) and index.html into <paramref name="folder"/>.</summary>
-    /// <param name="folder">An existing folder (the images are already in its <c>images/</c> and <c>errors/</c>).</param>
+    /// <summary>The charts' file stems, RMSE's then FLIP's, each against time and against rays (each written as .png and .svg).</summary>
+    public static IReadOnlyList<string> ChartStems { get; } = ["error-vs-time", "error-vs-rays", "flip-vs-time", "flip-vs-rays"];
+
+    /// <summary>Writes results.csv, results.md, the <see cref="ChartStems"/> charts (each .png and .svg) and index.html into <paramref name="folder"/>.</summary>
+    /// <param name="folder">An existing folder (the images are already in its <c>images/</c>, <c>errors/</c> and <c>flip/</c>).</param>
     public void WriteTo(string folder)
     {
         File.WriteAllText(Path.Combine(folder, "results.csv"), Csv());
         File.WriteAllText(Path.Combine(folder, "results.md"), Markdown());
-        Chart(Path.Combine(folder, "error-vs-time"), "RMSE against time", r => r.Time.TotalMilliseconds, "median render time (ms)");
-        Chart(Path.Combine(folder, "error-vs-rays"), "RMSE against rays", r => r.RaysPerPixel, "primary rays per pixel");
+        Chart(Path.Combine(folder, ChartStems[0]), "RMSE against time", r => r.Time.TotalMilliseconds, "median render time (ms)", Rmse);
+        Chart(Path.Combine(folder, ChartStems[1]), "RMSE against rays", r => r.RaysPerPixel, "primary rays per pixel", Rmse);
+        Chart(Path.Combine(folder, ChartStems[2]), "FLIP against time", r => r.Time.TotalMilliseconds, "median render time (ms)", MeanFlip);
+        Chart(Path.Combine(folder, ChartStems[3]), "FLIP against rays", r => r.RaysPerPixel, "primary rays per pixel", MeanFlip);
         File.WriteAllText(Path.Combine(folder, "index.html"), Html());
     }
+
+    /// <summary>A measure of error the report tabulates, fits and charts.</summary>
+    private sealed record Measure(string Name, string Axis, Func<double, string> Format, Func<CompareResult, double?> Of);
+
+    private static readonly Measure Rmse = new("RMSE", "RMSE (8-bit levels)", e => e.ToString("F3", CultureInfo.InvariantCulture), r => r.Error.Rmse);
+
+    private static readonly Measure MeanFlip = new("mean FLIP", "mean FLIP", e => FlipText(e), r => r.MeanFlip);
 
     /// <summary>The results as CSV, one row per setting, numbers in invariant culture.</summary>
     public string Csv()
     {
-        var csv = new StringBuilder("series,sampler,setting,budget,samples_per_pixel,max_depth,contrast,rays,rays_per_pixel,median_ms,rmse,mean_abs,max,over_one_level,kernel,image,error_image\n");
+        var csv = new StringBuilder("series,sampler,setting,budget,samples_per_pixel,max_depth,contrast,rays,rays_per_pixel,median_ms,rmse,mean_abs,max,over_one_level,mean_flip,kernel,image,error_image,flip_map\n");
         foreach (CompareResult r in results)
         {
             CompareCase c = r.Case;
             csv.Append(Invariant($"{c.Series},{c.Sampler},{c.Setting},{c.Budget},{c.SamplesPerPixel},{c.MaxDepth},{c.Contrast:G6},"))
-               .Append(Invariant($"{r.Rays},{r.RaysPerPixel:G9},{r.Time.TotalMilliseconds:F3},{r.Error.Rmse:G9},{r.Error.MeanAbsolute:G9},{r.Error.Max},{r.Error.FractionOverOneLevel:G9},{r.Kernel},"))
-               .Append($"images/{c.FileStem}.png,errors/{c.FileStem}.png\n");
+               .Append(Invariant($"{r.Rays},{r.RaysPerPixel:G9},{r.Time.TotalMilliseconds:F3},{r.Error.Rmse:G9},{r.Error.MeanAbsolute:G9},{r.Error.Max},{r.Error.FractionOverOneLevel:G9},{r.MeanFlip:G9},{r.Kernel},"))
+               .Append($"images/{c.FileStem}.png,errors/{c.FileStem}.png,{(r.MeanFlip is null ? "" : $"flip/{c.FileStem}.png")}\n");
         }
 
         return csv.ToString();
@@ -53,10 +69,10 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     /// <summary>The table, as Markdown.</summary>
     public string Table()
     {
-        var md = new StringBuilder("| sampler | setting | rays/px | time (ms) | RMSE | mean abs. | max | > 1 level |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
+        var md = new StringBuilder("| sampler | setting | rays/px | time (ms) | RMSE | mean FLIP | mean abs. | max | > 1 level |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
         foreach (CompareResult r in results)
         {
-            md.Append(Invariant($"| {r.Case.Series} | {r.Case.Setting} | {r.RaysPerPixel:F2} | {r.Time.TotalMilliseconds:F1} | {r.Error.Rmse:F3} | {r.Error.MeanAbsolute:F4} | {r.Error.Max} | {100 * r.Error.FractionOverOneLevel:F3}% |\n"));
+            md.Append(Invariant($"| {r.Case.Series} | {r.Case.Setting} | {r.RaysPerPixel:F2} | {r.Time.TotalMilliseconds:F1} | {r.Error.Rmse:F3} | {FlipText(r.MeanFlip)} | {r.Error.MeanAbsolute:F4} | {r.Error.Max} | {100 * r.Error.FractionOverOneLevel:F3}% |\n"));
         }
 
         return md.ToString();
@@ -90,18 +106,20 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
           .Append("Least-squares slope of ln(error) against ln(rays per pixel) over each line's settings with error > 0 (rays, "
                   + "not time: rays are exact, times are noisy). Theory for pixels on an edge (Mitchell 1996): random −0.5, "
                   + "jittered −0.75. Once the error is below about a level, quantisation makes the RMSE fall only as the "
-                  + "square root of the true error (half the slope); the mean absolute error keeps the true slope.\n\n")
-          .Append("| sampler | slope of RMSE | slope of mean abs. | settings |\n|---|---:|---:|---:|\n");
+                  + "square root of the true error (half the slope); the mean absolute error keeps the true slope. FLIP "
+                  + "has no such floor but is not a power of the error either (it saturates on large differences).\n\n")
+          .Append("| sampler | slope of RMSE | slope of mean abs. | slope of mean FLIP | settings |\n|---|---:|---:|---:|---:|\n");
         foreach (IGrouping<string, CompareResult> s in Series)
         {
             CompareResult[] measured = [.. s.Where(r => r.Error.Rmse > 0).OrderBy(r => r.RaysPerPixel)];
             CompareResult[] falling = BeforePlateau(measured);
             double[] rays = [.. falling.Select(r => r.RaysPerPixel)];
-            string rmse = "n/a", mean = "n/a (rays span less than 2×)";
+            string rmse = "n/a", mean = "n/a (rays span less than 2×)", flip = "n/a";
             if (rays.Length > 1 && rays.Max() >= 2 * rays.Min())
             {
                 rmse = Format(Slope(falling.Select(r => (r.RaysPerPixel, r.Error.Rmse))));
                 mean = Format(Slope(falling.Select(r => (r.RaysPerPixel, r.Error.MeanAbsolute))));
+                flip = Format(Slope(falling.Where(r => r.MeanFlip is not null).Select(r => (r.RaysPerPixel, r.MeanFlip!.Value))));
                 if (falling.Length < measured.Length)
                 {
                     mean += Invariant($" (fitted below {measured[falling.Length].RaysPerPixel:0.##} rays/px, where the error stops falling)");
@@ -112,7 +130,7 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
                 mean = Invariant($"n/a (the error stops falling at {measured[falling.Length].RaysPerPixel:0.##} rays/px)");
             }
 
-            md.Append(Invariant($"| {s.Key} | {rmse} | {mean} | {rays.Length} |\n"));
+            md.Append(Invariant($"| {s.Key} | {rmse} | {mean} | {flip} | {rays.Length} |\n"));
         }
 
         md.Append("\n## Time to maximum error ≤ 1 level\n\n")
@@ -125,17 +143,22 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
                 : Invariant($"| {s.Key} | not reached | best max {s.Min(r => r.Error.Max)} levels | |\n"));
         }
 
-        double? everyLine = LowestCommonRmse(Series);
-        double? everyPointSampler = LowestCommonRmse([.. Series.Where(s => s.First().Case.SamplesPerPixel is not null)]);
-        if (everyLine is { } all)
+        foreach (Measure measure in new[] { Rmse, MeanFlip })
         {
-            ReachTable(md, all, "the lowest RMSE every line reaches");
+            double? everyLine = LowestCommon(Series, measure);
+            double? everyPointSampler = LowestCommon([.. Series.Where(s => s.First().Case.SamplesPerPixel is not null)], measure);
+            if (everyLine is { } all)
+            {
+                ReachTable(md, measure, all, $"the lowest {measure.Name} every line reaches");
+            }
+
+            if (everyPointSampler is { } point && point < (everyLine ?? double.PositiveInfinity))
+            {
+                ReachTable(md, measure, point, $"the lowest {measure.Name} every point sampler reaches");
+            }
         }
 
-        if (everyPointSampler is { } point && point < (everyLine ?? double.PositiveInfinity))
-        {
-            ReachTable(md, point, "the lowest RMSE every point sampler reaches");
-        }
+        Rankings(md);
 
         if (command.Length > 0)
         {
@@ -194,44 +217,107 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     /// <param name="series">One line's results.</param>
     /// <param name="rmse">The RMSE to reach.</param>
     /// <param name="cost">What is spent: e.g. the median time in ms, or rays per pixel.</param>
-    public static double? CostToReach(IEnumerable<CompareResult> series, double rmse, Func<CompareResult, double> cost)
+    public static double? CostToReach(IEnumerable<CompareResult> series, double rmse, Func<CompareResult, double> cost) =>
+        CostToReach(series, rmse, cost, r => r.Error.Rmse);
+
+    /// <summary>
+    /// What a line spends to bring <paramref name="error"/> (e.g. the mean FLIP) down to <paramref name="target"/>, by
+    /// <paramref name="cost"/>: as <see cref="CostToReach(IEnumerable{CompareResult}, double, Func{CompareResult, double})"/>
+    /// does for the RMSE. Settings whose error is null (not measured) are passed over.
+    /// </summary>
+    /// <param name="series">One line's results.</param>
+    /// <param name="target">The error to reach.</param>
+    /// <param name="cost">What is spent: e.g. the median time in ms, or rays per pixel.</param>
+    /// <param name="error">The error of a setting, e.g. <c>r =&gt; r.MeanFlip</c>.</param>
+    public static double? CostToReach(IEnumerable<CompareResult> series, double target, Func<CompareResult, double> cost, Func<CompareResult, double?> error)
     {
+        ArgumentNullException.ThrowIfNull(series);
         ArgumentNullException.ThrowIfNull(cost);
-        CompareResult? previous = null;
+        ArgumentNullException.ThrowIfNull(error);
+        (CompareResult R, double E)? previous = null;
         foreach (CompareResult r in series.OrderBy(r => r.Rays))
         {
-            if (r.Error.Rmse <= rmse)
+            if (error(r) is not { } e)
+            {
+                continue;
+            }
+
+            if (e <= target)
             {
                 double c = cost(r);
-                if (previous is null || r.Error.Rmse == rmse || r.Error.Rmse <= 0)
+                if (previous is not { } p || e == target || e <= 0)
                 {
                     return c;
                 }
 
-                double c0 = cost(previous);
-                double f = Math.Log(rmse / previous.Error.Rmse) / Math.Log(r.Error.Rmse / previous.Error.Rmse);
+                double c0 = cost(p.R);
+                double f = Math.Log(target / p.E) / Math.Log(e / p.E);
                 return Math.Exp(Math.Log(c0) + (f * Math.Log(c / c0)));
             }
 
-            previous = r;
+            previous = (r, e);
         }
 
         return null;
     }
 
-    /// <summary>The lowest RMSE every line reaches (the largest of the lines' minima); null if there is none above 0.</summary>
-    private static double? LowestCommonRmse(IReadOnlyList<IGrouping<string, CompareResult>> lines)
+    /// <summary>
+    /// Kendall's τ-b between two orderings of the same items: 1 when they rank every pair alike, −1 when they
+    /// reverse every pair, ties in either counted as neither; null with fewer than two items or when one ordering
+    /// ties them all.
+    /// </summary>
+    /// <param name="pairs">Each item's two values (e.g. its RMSE and its mean FLIP).</param>
+    public static double? KendallTau(IReadOnlyList<(double A, double B)> pairs)
     {
-        double target = lines.Count == 0 ? 0 : lines.Max(s => s.Min(r => r.Error.Rmse));
+        ArgumentNullException.ThrowIfNull(pairs);
+        long concordant = 0, discordant = 0, tiedA = 0, tiedB = 0;
+        for (int i = 0; i < pairs.Count; i++)
+        {
+            for (int j = i + 1; j < pairs.Count; j++)
+            {
+                int a = pairs[i].A.CompareTo(pairs[j].A), b = pairs[i].B.CompareTo(pairs[j].B);
+                if (a == 0 && b == 0)
+                {
+                    continue;
+                }
+
+                if (a == 0)
+                {
+                    tiedA++;
+                }
+                else if (b == 0)
+                {
+                    tiedB++;
+                }
+                else if (a == b)
+                {
+                    concordant++;
+                }
+                else
+                {
+                    discordant++;
+                }
+            }
+        }
+
+        double denominator = Math.Sqrt((double)(concordant + discordant + tiedA) * (concordant + discordant + tiedB));
+        return denominator > 0 ? (concordant - discordant) / denominator : null;
+    }
+
+    /// <summary>The lowest error every line reaches (the largest of the lines' minima); null if there is none above 0.</summary>
+    private static double? LowestCommon(IReadOnlyList<IGrouping<string, CompareResult>> lines, Measure measure)
+    {
+        double[] minima = [.. lines.Select(s => s.Select(measure.Of).Where(e => e is not null).Select(e => e!.Value).DefaultIfEmpty(double.NaN).Min())];
+        double target = minima.Length == 0 || minima.Any(double.IsNaN) ? 0 : minima.Max();
         return target > 0 ? target : null;
     }
 
-    private void ReachTable(StringBuilder md, double target, string why)
+    private void ReachTable(StringBuilder md, Measure measure, double target, string why)
     {
-        md.Append(Invariant($"\n## Time to RMSE ≤ {target:F3} ({why})\n\n"))
+        md.Append(Invariant($"\n## Time to {measure.Name} ≤ {measure.Format(target)} ({why})\n\n"))
           .Append("Interpolated on the log-log line between the two settings around it; fastest first.\n\n")
           .Append("| sampler | time (ms) | × the fastest | rays/px |\n|---|---:|---:|---:|\n");
-        var reached = Series.Select(s => (Name: s.Key, Ms: CostToReach(s, target, r => r.Time.TotalMilliseconds), Rays: CostToReach(s, target, r => r.RaysPerPixel)))
+        var reached = Series.Select(s => (Name: s.Key, Ms: CostToReach(s, target, r => r.Time.TotalMilliseconds, measure.Of), Rays: CostToReach(s, target, r => r.RaysPerPixel, measure.Of)))
             .OrderBy(t => t.Ms ?? double.PositiveInfinity).ToList();
         double fastest = reached[0].Ms ?? double.NaN;
         foreach ((string name, double? ms, double? rays) in reached)
@@ -242,9 +328,63 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         }
     }
 
-    private void Chart(string stem, string title, Func<CompareResult, double> x, string xLabel) => LogLogChart.Save(
-        stem, title, xLabel, "RMSE (8-bit levels)",
-        [.. Series.Select(s => new LogLogChart.Series(s.Key, [.. s.Select(r => (x(r), r.Error.Rmse))]))]);
+    /// <summary>
+    /// Where RMSE and FLIP rank the point samplers alike and where not: at each sample count two or more of them ran
+    /// at, the samplers in order of each measure, Kendall's τ between the orders, and the pairs they swap.
+    /// </summary>
+    private void Rankings(StringBuilder md)
+    {
+        var budgets = results.Where(r => r.Case.SamplesPerPixel is not null && r.MeanFlip is not null)
+            .GroupBy(r => r.Case.SamplesPerPixel!.Value).Where(g => g.Select(r => r.Case.Series).Distinct().Count() > 1).OrderBy(g => g.Key).ToList();
+        if (budgets.Count == 0)
+        {
+            return;
+        }
+
+        md.Append("\n## RMSE and FLIP: the same ranking?\n\n")
+          .Append("At each sample count, the point samplers from the lowest error to the highest by each measure (ties joined by =), "
+                  + "Kendall's τ between the two orders (1: the same order, −1: reversed) and the pairs the two measures order the other way round.\n\n")
+          .Append("| spp | by RMSE | by mean FLIP | τ | swapped |\n|---:|---|---|---:|---|\n");
+        foreach (IGrouping<int, CompareResult> g in budgets)
+        {
+            CompareResult[] set = [.. g];
+            var swapped = new List<string>();
+            for (int i = 0; i < set.Length; i++)
+            {
+                for (int j = i + 1; j < set.Length; j++)
+                {
+                    int byRmse = set[i].Error.Rmse.CompareTo(set[j].Error.Rmse), byFlip = set[i].MeanFlip!.Value.CompareTo(set[j].MeanFlip!.Value);
+                    if (byRmse != 0 && byFlip != 0 && byRmse != byFlip)
+                    {
+                        (CompareResult better, CompareResult worse) = byRmse < 0 ? (set[i], set[j]) : (set[j], set[i]);
+                        swapped.Add($"{better.Case.Series} < {worse.Case.Series} by RMSE, > by FLIP");
+                    }
+                }
+            }
+
+            double? tau = KendallTau([.. set.Select(r => (r.Error.Rmse, r.MeanFlip!.Value))]);
+            md.Append(Invariant($"| {g.Key} | {Order(set, r => r.Error.Rmse)} | {Order(set, r => r.MeanFlip!.Value)} | {Format(tau)} | {(swapped.Count == 0 ? "none" : string.Join("; ", swapped))} |\n"));
+        }
+    }
+
+    /// <summary>The settings' series from the lowest value to the highest, equal values joined by " = ".</summary>
+    private static string Order(IEnumerable<CompareResult> set, Func<CompareResult, double> value)
+    {
+        var text = new StringBuilder();
+        double? last = null;
+        foreach (CompareResult r in set.OrderBy(value))
+        {
+            double v = value(r);
+            text.Append(last is null ? "" : v == last ? " = " : " < ").Append(r.Case.Series);
+            last = v;
+        }
+
+        return text.ToString();
+    }
+
+    private void Chart(string stem, string title, Func<CompareResult, double> x, string xLabel, Measure measure) => LogLogChart.Save(
+        stem, title, xLabel, measure.Axis,
+        [.. Series.Select(s => new LogLogChart.Series(s.Key, [.. s.Where(r => measure.Of(r) is not null).Select(r => (x(r), measure.Of(r)!.Value))]))]);
 
     private string Html()
     {
@@ -254,14 +394,21 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
             .Append("<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}td,th{padding:2px 8px;border-bottom:1px solid #ddd;text-align:right}td:first-child,td:nth-child(2){text-align:left}</style></head>\n<body>\n")
             .Append($"<h1>raylab compare</h1>\n<p>{E(heading)}</p>\n<p>{E(Definition)}</p>\n")
             .Append("<p><a href=\"results.md\">results.md</a> (table, slopes, times to reach an error) · <a href=\"results.csv\">results.csv</a> · <a href=\"images/exact.png\">the exact image</a></p>\n")
-            .Append("<p><a href=\"error-vs-time.svg\"><img src=\"error-vs-time.png\" alt=\"RMSE against time, log-log\"></a></p>\n")
-            .Append("<p><a href=\"error-vs-rays.svg\"><img src=\"error-vs-rays.png\" alt=\"RMSE against rays per pixel, log-log\"></a></p>\n")
-            .Append("<table>\n<tr><th>sampler</th><th>setting</th><th>rays/px</th><th>time (ms)</th><th>RMSE</th><th>max</th><th>&gt; 1 level</th><th>image</th><th>error</th></tr>\n");
+            .Append("<p><a href=\"error-vs-time.svg\"><img src=\"error-vs-time.png\" alt=\"RMSE against time, log-log\"></a>")
+            .Append("<a href=\"flip-vs-time.svg\"><img src=\"flip-vs-time.png\" alt=\"mean FLIP against time, log-log\"></a></p>\n")
+            .Append("<p><a href=\"error-vs-rays.svg\"><img src=\"error-vs-rays.png\" alt=\"RMSE against rays per pixel, log-log\"></a>")
+            .Append("<a href=\"flip-vs-rays.svg\"><img src=\"flip-vs-rays.png\" alt=\"mean FLIP against rays per pixel, log-log\"></a></p>\n")
+            .Append("<p>Each row: the picture, its error image (the largest channel error of each pixel, in levels: what the RMSE adds up) "
+                    + "and its FLIP map (what a viewer sees flipping between it and the exact image, in NVIDIA's magma colours: black = no visible difference). Click one for its full size.</p>\n")
+            .Append("<table>\n<tr><th>sampler</th><th>setting</th><th>rays/px</th><th>time (ms)</th><th>RMSE</th><th>mean FLIP</th><th>max</th><th>&gt; 1 level</th><th>image</th><th>error</th><th>FLIP map</th></tr>\n");
         foreach (CompareResult r in results)
         {
             string stem = E(r.Case.FileStem);
-            html.Append(Invariant($"<tr><td>{E(r.Case.Series)}</td><td>{E(r.Case.Setting)}</td><td>{r.RaysPerPixel:F2}</td><td>{r.Time.TotalMilliseconds:F1}</td><td>{r.Error.Rmse:F3}</td><td>{r.Error.Max}</td><td>{100 * r.Error.FractionOverOneLevel:F3}%</td>"))
-                .Append($"<td><a href=\"images/{stem}.png\">image</a></td><td><a href=\"errors/{stem}.png\">error</a></td></tr>\n");
+            html.Append(Invariant($"<tr><td>{E(r.Case.Series)}</td><td>{E(r.Case.Setting)}</td><td>{r.RaysPerPixel:F2}</td><td>{r.Time.TotalMilliseconds:F1}</td><td>{r.Error.Rmse:F3}</td><td>{FlipText(r.MeanFlip)}</td><td>{r.Error.Max}</td><td>{100 * r.Error.FractionOverOneLevel:F3}%</td>"))
+                .Append(Thumbnail($"images/{stem}.png", "image"))
+                .Append(Thumbnail($"errors/{stem}.png", "error image"))
+                .Append(r.MeanFlip is null ? "<td>not measured</td>" : Thumbnail($"flip/{stem}.png", "FLIP map"))
+                .Append("</tr>\n");
         }
 
         html.Append("</table>\n");
@@ -273,6 +420,20 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         html.Append("</body>\n</html>\n");
         return html.ToString();
     }
+
+    /// <summary>A table cell with a small copy of the picture at <paramref name="path"/>, linked to the picture itself.</summary>
+    private static string Thumbnail(string path, string alt) =>
+        $"<td><a href=\"{path}\"><img src=\"{path}\" alt=\"{alt}\" width=\"{ThumbnailWidth}\" loading=\"lazy\"></a></td>";
+
+    private const int ThumbnailWidth = 200;
+
+    /// <summary>A mean FLIP to three significant digits (0.0493, 0.000512), or n/a.</summary>
+    private static string FlipText(double? flip) => flip switch
+    {
+        null => "n/a",
+        0 => "0",
+        { } f => f.ToString("F" + Math.Clamp(2 - (int)Math.Floor(Math.Log10(f)), 0, 9).ToString(CultureInfo.InvariantCulture), CultureInfo.InvariantCulture),
+    };
 
     private static string Format(double? slope) => slope is { } s ? s.ToString("F2", CultureInfo.InvariantCulture) : "n/a";
 

@@ -16,6 +16,12 @@ public sealed record CompareResult(CompareCase Case, long Rays, double RaysPerPi
     /// <summary>True when the setting was rendered again past the repeats asked for because its renders were too quick to time.</summary>
     public bool Retimed { get; init; }
 
+    /// <summary>
+    /// The image's mean FLIP against the exact image (<see cref="RayLab.Metrics.Flip"/>, LDR, the paper's viewing
+    /// conditions), 0 to 1; null where it was not measured.
+    /// </summary>
+    public double? MeanFlip { get; init; }
+
     /// <summary>True when the setting's first render took <see cref="CompareRunner.LongRender"/> or more and was its only one (fewer than the repeats asked for).</summary>
     public bool TimedOnce { get; init; }
 }

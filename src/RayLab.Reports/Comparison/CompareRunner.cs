@@ -1,12 +1,13 @@
 using System.Globalization;
 using RayLab.Imaging;
+using RayLab.Metrics;
 
 namespace RayLab.Comparison;
 
 /// <summary>
 /// Speed against error: renders a scene with each setting (built-in samplers or methods of your own), measures each
-/// image against the exact image, and writes the report: <c>results.csv</c>, <c>results.md</c>, two log-log charts,
-/// every image and error image, and <c>index.html</c>.
+/// image against the exact image (RMSE in 8-bit levels and mean FLIP), and writes the report: <c>results.csv</c>,
+/// <c>results.md</c>, four log-log charts, every image, error image and FLIP map, and <c>index.html</c>.
 /// </summary>
 public static class CompareRunner
 {
@@ -59,8 +60,9 @@ public static class CompareRunner
 
     /// <summary>
     /// Renders the exact image and each setting, times each setting (the median of its renders), measures it against
-    /// the exact image, and saves <c>images/exact.png</c>, <c>images/STEM.png</c> and the error heat map
-    /// <c>errors/STEM.png</c> into <paramref name="folder"/>; the tables and charts are <see cref="CompareReport.WriteTo"/>'s.
+    /// the exact image (<see cref="ImageError"/> and <see cref="Flip"/>, once each), and saves <c>images/exact.png</c>,
+    /// <c>images/STEM.png</c>, the error heat map <c>errors/STEM.png</c> and the FLIP map <c>flip/STEM.png</c> into
+    /// <paramref name="folder"/>; the tables and charts are <see cref="CompareReport.WriteTo"/>'s.
     /// </summary>
     /// <param name="scene">The scene.</param>
     /// <param name="camera">The camera.</param>
@@ -101,6 +103,8 @@ public static class CompareRunner
         ICompareProgress progress = settings.Progress ?? new Unobserved();
         string images = Directory.CreateDirectory(Path.Combine(folder, "images")).FullName;
         string errors = Directory.CreateDirectory(Path.Combine(folder, "errors")).FullName;
+        string flipMaps = Directory.CreateDirectory(Path.Combine(folder, "flip")).FullName;
+        var flipOptions = new FlipOptions { MaxDegreeOfParallelism = renderer.MaxDegreeOfParallelism };
 
         var exact = new Image(width, height);
         RenderStatistics exactStats = progress.Render("exact image", () => renderer.Render(scene, camera, RenderMethod.Exact, exact));
@@ -139,8 +143,11 @@ public static class CompareRunner
             ImageError error = ImageError.Measure(image, exact);
             image.Save(Path.Combine(images, c.FileStem + ".png"));
             HeatMap.Render(ImageError.PerPixel(image, exact), width, height, "levels").Save(Path.Combine(errors, c.FileStem + ".png"));
+            FlipResult flip = Flip.Compute(exact, image, flipOptions);
+            FlipMap.RenderWithLegend(flip).Save(Path.Combine(flipMaps, c.FileStem + ".png"));
             results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median([.. times]), error, stats.Kernel)
             {
+                MeanFlip = flip.Mean,
                 Renders = times.Count,
                 Retimed = times.Count > settings.Repeats,
                 TimedOnce = times.Count < settings.Repeats,

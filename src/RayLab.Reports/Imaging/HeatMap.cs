@@ -10,8 +10,11 @@ namespace RayLab.Imaging;
 /// </summary>
 public static class HeatMap
 {
-    private const int LegendWidth = 84;
-    private const int MinHeight = 120;
+    /// <summary>The width of the colour bar strip to the right of the data, in pixels.</summary>
+    internal const int LegendWidth = 84;
+
+    /// <summary>The least height of a heat map: a shorter image is padded below so the colour bar stays legible.</summary>
+    internal const int MinHeight = 120;
     private const int Gap = 6, BarWidth = 12, Top = 28, BottomMargin = 8;
     private const float TextSize = 12;
 
@@ -73,7 +76,7 @@ public static class HeatMap
             }
         }
 
-        DrawLegend(image, width, min, max, title);
+        DrawLegend(image, width, min, max, title, ColorAt, value => value >= 100 || value == Math.Floor(value) ? "0" : "0.#");
         return image;
     }
 
@@ -92,7 +95,12 @@ public static class HeatMap
 
     private static byte Level(double a, double b, double f) => (byte)Math.Round(255 * (a + ((b - a) * f)));
 
-    private static void DrawLegend(Image image, int x0, float min, float max, string title)
+    /// <summary>
+    /// Draws the colour bar strip (<see cref="LegendWidth"/> wide, the image's height) at column <paramref name="x0"/>:
+    /// the bar runs from <paramref name="min"/> at the bottom to <paramref name="max"/> at the top in the colours of
+    /// <paramref name="color"/> (called with 0…1), five labelled ticks, <paramref name="title"/> above.
+    /// </summary>
+    internal static void DrawLegend(Image image, int x0, float min, float max, string title, Func<double, Rgb24> color, Func<double, string> labelFormat)
     {
         int height = image.Height;
         int bottom = height - BottomMargin;
@@ -119,7 +127,7 @@ public static class HeatMap
                 int y = bottom - (int)Math.Round(f * (bottom - Top));
                 canvas.DrawRect(SKRect.Create(Gap + BarWidth, y, 3, 1), tick);
                 double value = min + (f * (max - min));
-                string label = value.ToString(value >= 100 || value == Math.Floor(value) ? "0" : "0.#", CultureInfo.InvariantCulture);
+                string label = value.ToString(labelFormat(value), CultureInfo.InvariantCulture);
                 float baseline = Math.Clamp(y + (TextSize * 0.36f), TextSize, height - 1);
                 canvas.DrawText(label, Gap + BarWidth + 6, baseline, SKTextAlign.Left, font, ink);
             }
@@ -128,7 +136,7 @@ public static class HeatMap
         Image legend = Image.FromSKBitmap(strip);
         for (int y = Top; y <= bottom; y++)
         {
-            legend.GetRowSpan(y).Slice(Gap, BarWidth).Fill(ColorAt((bottom - y) / (double)(bottom - Top)));
+            legend.GetRowSpan(y).Slice(Gap, BarWidth).Fill(color((bottom - y) / (double)(bottom - Top)));
         }
 
         for (int y = 0; y < height; y++)

@@ -71,6 +71,70 @@ public static class SkiaBitmaps
 
             return copy;
         }
+
+        /// <summary>
+        /// Reads a picture file into a new <see cref="Image"/>: PNG, JPEG, WebP, BMP or GIF (its first frame), decoded
+        /// by SkiaSharp to 8-bit RGB as stored, without colour management (as FLIP's tool and the lab read pictures); an
+        /// alpha channel is dropped. The whole file must decode: a file cut short is an error, not a partial image.
+        /// </summary>
+        /// <param name="path">The file.</param>
+        /// <returns>The picture.</returns>
+        /// <exception cref="FileNotFoundException">There is no such file.</exception>
+        /// <exception cref="IOException">The file cannot be read.</exception>
+        /// <exception cref="UnauthorizedAccessException">The file may not be read.</exception>
+        /// <exception cref="InvalidDataException">The file is not a picture SkiaSharp decodes, is cut short or damaged, or has more than 2³¹ / 4 pixels (each message names the file).</exception>
+        public static Image Load(string path)
+        {
+            ArgumentException.ThrowIfNullOrWhiteSpace(path);
+            if (Directory.Exists(path))
+            {
+                throw new UnauthorizedAccessException($"{path}: is a folder, not a picture");
+            }
+
+            byte[] bytes = File.ReadAllBytes(path);
+            using SKData data = SKData.CreateCopy(bytes);
+            using SKCodec? codec = bytes.Length == 0 ? null : SKCodec.Create(data);
+            if (codec is null)
+            {
+                throw new InvalidDataException($"{path}: not a picture (expected PNG, JPEG, WebP, BMP or GIF)");
+            }
+
+            int width = codec.Info.Width, height = codec.Info.Height;
+            // Decoded as RGBA first: four bytes a pixel must fit in one array.
+            if (width < 1 || height < 1 || (long)width * height * 4 > Array.MaxLength)
+            {
+                throw new InvalidDataException($"{path}: a {width}×{height} picture is more than can be read (at most {Array.MaxLength / 4:N0} pixels)");
+            }
+
+            var info = new SKImageInfo(width, height, SKColorType.Rgba8888, SKAlphaType.Unpremul);
+            byte[] rgba = new byte[info.BytesSize64];
+            GCHandle pin = GCHandle.Alloc(rgba, GCHandleType.Pinned);
+            SKCodecResult result;
+            try
+            {
+                result = codec.GetPixels(info, pin.AddrOfPinnedObject());
+            }
+            finally
+            {
+                pin.Free();
+            }
+
+            if (result != SKCodecResult.Success)
+            {
+                throw new InvalidDataException(result == SKCodecResult.IncompleteInput
+                    ? $"{path}: the picture's data is cut short"
+                    : $"{path}: the picture cannot be decoded ({result})");
+            }
+
+            var picture = new Image(width, height);
+            Span<byte> target = picture.PixelBytes;
+            for (int y = 0; y < height; y++)
+            {
+                DropAlpha(rgba.AsSpan(y * info.RowBytes, width * 4), target.Slice(y * width * 3, width * 3));
+            }
+
+            return picture;
+        }
     }
 
     private static void ExpandRow(ReadOnlySpan<byte> rgb, Span<byte> rgba)

@@ -71,14 +71,7 @@ public static class PatternMeasures
             throw new ArgumentException("Every sample count must be at least 1.", nameof(counts));
         }
 
-        IPixelSampler[] samplers = [.. counts.Select(create)];
-        for (int i = 0; i < samplers.Length; i++)
-        {
-            if (samplers[i].SamplesPerPixel != counts[i])
-            {
-                throw new ArgumentException($"Asked for {counts[i]} samples, '{samplers[i].Name}' made {samplers[i].SamplesPerPixel}.", nameof(create));
-            }
-        }
+        IPixelSampler[] samplers = Create(create, counts);
 
         int dr = options.DiscrepancyRealisations, ir = options.IntegrationRealisations;
         IReadOnlyList<Integrand> functions = Integrand.All;
@@ -113,6 +106,28 @@ public static class PatternMeasures
             }
         });
 
+        return Summarise(samplers, counts, options, l2, star, squaredErrors);
+    }
+
+    private static IPixelSampler[] Create(Func<int, IPixelSampler> create, IReadOnlyList<int> counts)
+    {
+        IPixelSampler[] samplers = [.. counts.Select(create)];
+        for (int i = 0; i < samplers.Length; i++)
+        {
+            if (samplers[i].SamplesPerPixel != counts[i])
+            {
+                throw new ArgumentException($"Asked for {counts[i]} samples, '{samplers[i].Name}' made {samplers[i].SamplesPerPixel}.", nameof(create));
+            }
+        }
+
+        return samplers;
+    }
+
+    // Each count's means over its realisations, the slots added in order (the same numbers whatever the threads).
+    private static PatternMeasure[] Summarise(IPixelSampler[] samplers, IReadOnlyList<int> counts, PatternMeasureOptions options, double[] l2, double[] star, double[] squaredErrors)
+    {
+        int dr = options.DiscrepancyRealisations, ir = options.IntegrationRealisations;
+        IReadOnlyList<Integrand> functions = Integrand.All;
         var result = new PatternMeasure[samplers.Length];
         for (int s = 0; s < samplers.Length; s++)
         {

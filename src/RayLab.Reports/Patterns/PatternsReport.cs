@@ -48,11 +48,23 @@ public static class PatternsReport
 
     private static string Build(PatternsRequest r, string dir, List<(string, string[], string)> html, TextWriter stdout, out string slopeTable, CancellationToken cancel)
     {
+        // The lab's figures and every other sampler, one pixel each; the adaptive diagram on the lab's scene; spectra;
+        // discrepancy and integration error against N.
+        PixelFigures(r, dir, html, cancel);
+        cancel.ThrowIfCancellationRequested();
+        AdaptiveFigure(dir, html);
+        List<(string Name, PowerSpectrum Spectrum)> spectra = SpectrumFigures(r, dir, html, cancel);
+        List<(PatternSampler Sampler, int[] Counts, IReadOnlyList<PatternMeasure> Values)> measures = DiscrepancyFigures(r, dir, html, cancel);
+        slopeTable = IntegrationFigures(r, dir, html, stdout, measures);
+        File.WriteAllText(Path.Combine(dir, "spectra.csv"), SpectrumCsv(spectra));
+        return MeasureCsv(measures);
+    }
+
+    private static void PixelFigures(PatternsRequest r, string dir, List<(string, string[], string)> html, CancellationToken cancel)
+    {
         IReadOnlyList<PatternSampler> samplers = r.Samplers;
         int n = r.Samples, side = (int)Math.Round(Math.Sqrt(n));
         bool square = side * side == n;
-
-        // 1. The lab's figures, then every other sampler: one pixel each.
         var pixelFigures = new List<string>();
         foreach (PatternSampler s in samplers)
         {
@@ -89,12 +101,11 @@ public static class PatternsReport
             + "whole image, which is the aliasing the lab warns about (a pattern finer than the grid turns into a false coarse one, and an "
             + "edge nearly parallel to the grid makes stair steps). The others draw new points in every pixel from a hash of (pixel, sample, "
             + "seed), so their errors do not line up from pixel to pixel."));
+    }
 
-        // 2. The adaptive diagram on the lab's scene.
-        cancel.ThrowIfCancellationRequested();
-        AdaptiveFigure(dir, html);
-
-        // 3. Spectra.
+    private static List<(string Name, PowerSpectrum Spectrum)> SpectrumFigures(PatternsRequest r, string dir, List<(string, string[], string)> html, CancellationToken cancel)
+    {
+        IReadOnlyList<PatternSampler> samplers = r.Samplers;
         int ns = r.SpectrumSamples, k = 3 * (int)Math.Round(Math.Sqrt(ns));
         var spectra = new List<(string Name, PowerSpectrum Spectrum)>();
         var spectrumFigures = new List<string>();
@@ -131,8 +142,13 @@ public static class PatternsReport
             + $"is each ring's variance over its mean squared, in dB: about 10·log₁₀(1/{r.SpectrumRealisations}) = {floor:0.0} dB for a pattern with "
             + "no preferred direction (the dashed line); rings far above it have directional structure (regular's grid, the lattice-like "
             + "rows of hammersley). regular has no line where a ring holds no power at all."));
+        return spectra;
+    }
 
-        // 4. Discrepancy and integration error against N.
+    private static List<(PatternSampler Sampler, int[] Counts, IReadOnlyList<PatternMeasure> Values)> DiscrepancyFigures(
+        PatternsRequest r, string dir, List<(string, string[], string)> html, CancellationToken cancel)
+    {
+        IReadOnlyList<PatternSampler> samplers = r.Samplers;
         var measures = new List<(PatternSampler Sampler, int[] Counts, IReadOnlyList<PatternMeasure> Values)>();
         PatternMeasureOptions options = r.Measures ?? new PatternMeasureOptions();
         foreach (PatternSampler s in samplers)
@@ -154,7 +170,14 @@ public static class PatternsReport
             + "and low-discrepancy sets about as N^−1 (up to a log); nrooks, stratified along each axis alone, sits between. The star discrepancy is the worst box, found "
             + "exactly (Dobkin, Eppstein and Mitchell 1996) for small N; the Koksma–Hlawka inequality bounds the integration error of a "
             + "function of bounded variation by it."));
+        return measures;
+    }
 
+    // The RMSE figures and the slopes: written to stdout, and returned as a Markdown table.
+    private static string IntegrationFigures(PatternsRequest r, string dir, List<(string, string[], string)> html, TextWriter stdout,
+        List<(PatternSampler Sampler, int[] Counts, IReadOnlyList<PatternMeasure> Values)> measures)
+    {
+        PatternMeasureOptions options = r.Measures ?? new PatternMeasureOptions();
         var slopes = new StringBuilder();
         var rows = new StringBuilder("| sampler | " + string.Join(" | ", Integrand.All.Select(f => f.Description)) + " |\n|---|" + string.Concat(Integrand.All.Select(_ => "---:|")) + "\n");
         var figures = new List<string>();
@@ -186,10 +209,12 @@ public static class PatternsReport
             + "for jittered, steeper for the scrambled nets (Owen 1997: −1.5). regular is deterministic: its error is the quadrature "
             + "error of the placed function, and its line is ragged because it depends on how the grid meets the edge. The bilinear step "
             + "is an edge too: its slopes sit with the disc's."));
-
         stdout.Write(slopes.ToString());
-        slopeTable = rows.ToString();
+        return rows.ToString();
+    }
 
+    private static string MeasureCsv(List<(PatternSampler Sampler, int[] Counts, IReadOnlyList<PatternMeasure> Values)> measures)
+    {
         var csv = new StringBuilder("sampler,samples,l2_star,star," + string.Join(',', Integrand.All.Select(f => $"rmse_{f.Name}")) + "\n");
         foreach ((PatternSampler _, int[] _, IReadOnlyList<PatternMeasure> values) in measures)
         {
@@ -200,7 +225,11 @@ public static class PatternsReport
                 csv.Append('\n');
             }
         }
+        return csv.ToString();
+    }
 
+    private static string SpectrumCsv(List<(string Name, PowerSpectrum Spectrum)> spectra)
+    {
         var spectrumCsv = new StringBuilder("sampler,samples,realisations,ring,radial_mean,anisotropy_db\n");
         foreach ((string name, PowerSpectrum s) in spectra)
         {
@@ -210,9 +239,7 @@ public static class PatternsReport
                 spectrumCsv.Append(Inv, $"{name},{s.SamplesPerPixel},{s.Realisations},{ring},{s.RadialMean[ring]:R},{(double.IsFinite(a) ? a.ToString("R", Inv) : "")}\n");
             }
         }
-
-        File.WriteAllText(Path.Combine(dir, "spectra.csv"), spectrumCsv.ToString());
-        return csv.ToString();
+        return spectrumCsv.ToString();
     }
 
     private static void AdaptiveFigure(string dir, List<(string, string[], string)> html)

@@ -74,56 +74,7 @@ public sealed class PowerSpectrum
         int chunks = (realisations + Chunk - 1) / Chunk;
         var partial = new double[chunks][];
         Parallel.For(0, chunks, new ParallelOptions { MaxDegreeOfParallelism = maxDegreeOfParallelism }, c =>
-        {
-            var sum = new double[side * (k + 1)];
-            var points = new SamplePoint[n];
-            var cx = new double[side * n];
-            var sx = new double[side * n];
-            var cy = new double[(k + 1) * n];
-            var sy = new double[(k + 1) * n];
-            var re = new double[side];
-            var im = new double[side];
-            for (int r = c * Chunk; r < Math.Min(realisations, (c + 1) * Chunk); r++)
-            {
-                PatternPoints.Fill(sampler, r % 64, r / 64, points);
-                for (int j = 0; j < n; j++)
-                {
-                    for (int u = -k; u <= k; u++)
-                    {
-                        double phase = -2 * Math.PI * u * points[j].X;
-                        cx[((u + k) * n) + j] = Math.Cos(phase);
-                        sx[((u + k) * n) + j] = Math.Sin(phase);
-                    }
-
-                    for (int v = 0; v <= k; v++)
-                    {
-                        double phase = -2 * Math.PI * v * points[j].Y;
-                        cy[(v * n) + j] = Math.Cos(phase);
-                        sy[(v * n) + j] = Math.Sin(phase);
-                    }
-                }
-
-                for (int v = 0; v <= k; v++)
-                {
-                    ReadOnlySpan<double> cyv = cy.AsSpan(v * n, n), syv = sy.AsSpan(v * n, n);
-                    for (int u = -k; u <= k; u++)
-                    {
-                        ReadOnlySpan<double> cxu = cx.AsSpan((u + k) * n, n), sxu = sx.AsSpan((u + k) * n, n);
-                        double a = 0, b = 0;
-                        for (int j = 0; j < n; j++)
-                        {
-                            // exp(iα)·exp(iβ) = (cα cβ − sα sβ) + i (sα cβ + cα sβ)
-                            a += (cxu[j] * cyv[j]) - (sxu[j] * syv[j]);
-                            b += (sxu[j] * cyv[j]) + (cxu[j] * syv[j]);
-                        }
-
-                        sum[(v * side) + u + k] += ((a * a) + (b * b)) / n;
-                    }
-                }
-            }
-
-            partial[c] = sum;
-        });
+            partial[c] = HalfPlaneSum(sampler, c * Chunk, Math.Min(realisations, (c + 1) * Chunk), k));
 
         var half = new double[side * (k + 1)];
         foreach (double[] p in partial)
@@ -147,6 +98,58 @@ public sealed class PowerSpectrum
 
         (double[] mean, double[] anisotropy) = Radial(power, k);
         return new PowerSpectrum(n, realisations, k, power, mean, anisotropy);
+    }
+
+    // Σ over the realisations first … end − 1 of the periodogram at (u, v), −K ≤ u ≤ K, 0 ≤ v ≤ K: row v, column u + K.
+    private static double[] HalfPlaneSum(IPixelSampler sampler, int first, int end, int k)
+    {
+        int side = (2 * k) + 1, n = sampler.SamplesPerPixel;
+        var sum = new double[side * (k + 1)];
+        var points = new SamplePoint[n];
+        var cx = new double[side * n];
+        var sx = new double[side * n];
+        var cy = new double[(k + 1) * n];
+        var sy = new double[(k + 1) * n];
+        for (int r = first; r < end; r++)
+        {
+            PatternPoints.Fill(sampler, r % 64, r / 64, points);
+            for (int j = 0; j < n; j++)
+            {
+                for (int u = -k; u <= k; u++)
+                {
+                    double phase = -2 * Math.PI * u * points[j].X;
+                    cx[((u + k) * n) + j] = Math.Cos(phase);
+                    sx[((u + k) * n) + j] = Math.Sin(phase);
+                }
+
+                for (int v = 0; v <= k; v++)
+                {
+                    double phase = -2 * Math.PI * v * points[j].Y;
+                    cy[(v * n) + j] = Math.Cos(phase);
+                    sy[(v * n) + j] = Math.Sin(phase);
+                }
+            }
+
+            for (int v = 0; v <= k; v++)
+            {
+                ReadOnlySpan<double> cyv = cy.AsSpan(v * n, n), syv = sy.AsSpan(v * n, n);
+                for (int u = -k; u <= k; u++)
+                {
+                    ReadOnlySpan<double> cxu = cx.AsSpan((u + k) * n, n), sxu = sx.AsSpan((u + k) * n, n);
+                    double a = 0, b = 0;
+                    for (int j = 0; j < n; j++)
+                    {
+                        // exp(iα)·exp(iβ) = (cα cβ − sα sβ) + i (sα cβ + cα sβ)
+                        a += (cxu[j] * cyv[j]) - (sxu[j] * syv[j]);
+                        b += (sxu[j] * cyv[j]) + (cxu[j] * syv[j]);
+                    }
+
+                    sum[(v * side) + u + k] += ((a * a) + (b * b)) / n;
+                }
+            }
+        }
+
+        return sum;
     }
 
     private static (double[] Mean, double[] Anisotropy) Radial(double[] power, int k)

@@ -1,4 +1,4 @@
-using RayLab.Rendering.Point.Packets;
+using RayLab.Simd;
 
 namespace RayLab.Cameras;
 

@@ -1,5 +1,5 @@
 using System.Runtime.CompilerServices;
-using RayLab.Rendering.Point.Packets;
+using RayLab.Simd;
 
 namespace RayLab.Cameras;
 

@@ -67,6 +67,7 @@ internal static class AccurateHit
     /// coefficients give it to a few ulps, one Newton step with a double-double residual adds the bits below
     /// the last one, and the point o + t d is formed from that double-double t and rounded once.
     /// </summary>
+    // Long: one derivation (scale, double-double root, Newton step, rounded point) whose steps read each other's exact intermediates.
     private static (double T, Double3 Point) Refine(Sphere sphere, in Ray ray, double guess)
     {
         // Scale positions by 2^−k and the direction by 2^−m (exact): |f|, R and |d| near 1, so no square overflows.

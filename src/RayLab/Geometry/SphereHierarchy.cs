@@ -121,6 +121,7 @@ internal sealed class SphereHierarchy
     /// <param name="ray">The ray.</param>
     /// <param name="tMin">The smallest visible parameter.</param>
     /// <param name="tMax">The largest visible parameter.</param>
+    // Long: one traversal loop, whose stack, nearest index and best t a split would pass by reference at every node.
     public int Nearest(Sphere[] spheres, in Ray ray, double tMin, double tMax)
     {
         Double3 o = ray.Origin, d = ray.Direction;
@@ -344,69 +345,20 @@ internal sealed class SphereHierarchy
     private static bool TrySplit(Item[] items, int start, int count, Double3 lo, Double3 hi, Double3 centreLo, Double3 centreHi, out int axis, out int leftCount)
     {
         Double3 spread = centreHi - centreLo;
-        axis = spread.X >= spread.Y && spread.X >= spread.Z ? 0 : (spread.Y >= spread.Z ? 1 : 2);
+        axis = WidestAxis(spread);
         double min = Component(centreLo, axis), extent = Component(spread, axis);
-        leftCount = 0;
+        leftCount = count / 2;
         if (!(extent > 0))
         {
-            // Every centre at one point: split in the middle (a tree, not one huge leaf).
-            leftCount = count / 2;
-            return true;
+            return true; // every centre at one point: split in the middle (a tree, not one huge leaf)
         }
 
-        Span<int> binCount = stackalloc int[Bins];
-        Span<Double3> binLo = stackalloc Double3[Bins];
-        Span<Double3> binHi = stackalloc Double3[Bins];
-        binCount.Clear();
+        var bins = new SahBins();
         double scale = Bins / extent;
-        for (int i = start; i < start + count; i++)
-        {
-            int b = BinOf(items[i].Centre, axis, min, scale);
-            if (binCount[b]++ == 0)
-            {
-                binLo[b] = items[i].Lo;
-                binHi[b] = items[i].Hi;
-            }
-            else
-            {
-                binLo[b] = Min(binLo[b], items[i].Lo);
-                binHi[b] = Max(binHi[b], items[i].Hi);
-            }
-        }
-
-        // Cost of a split after bin s: A_left·N_left + A_right·N_right (relative to the parent's area).
-        Span<double> rightCost = stackalloc double[Bins];
-        Double3 accLo = default, accHi = default;
-        int accCount = 0;
-        for (int b = Bins - 1; b > 0; b--)
-        {
-            Accumulate(binCount[b], binLo[b], binHi[b], ref accLo, ref accHi, ref accCount);
-            rightCost[b] = accCount == 0 ? 0 : Area(accLo, accHi) * accCount;
-        }
-
-        double bestCost = double.PositiveInfinity;
-        int bestBin = -1, bestLeft = 0;
-        accCount = 0;
-        for (int b = 0; b < Bins - 1; b++)
-        {
-            Accumulate(binCount[b], binLo[b], binHi[b], ref accLo, ref accHi, ref accCount);
-            if (accCount == 0 || accCount == count)
-            {
-                continue;
-            }
-
-            double cost = (Area(accLo, accHi) * accCount) + rightCost[b + 1];
-            if (cost < bestCost)
-            {
-                bestCost = cost;
-                bestBin = b;
-                bestLeft = accCount;
-            }
-        }
-
+        bins.Fill(items, start, count, axis, min, scale);
+        int bestBin = bins.Cheapest(count, out int bestLeft, out double bestCost);
         if (bestBin < 0)
         {
-            leftCount = count / 2;
             return true;
         }
 
@@ -414,15 +366,27 @@ internal sealed class SphereHierarchy
         double leafCost = count * Area(lo, hi);
         if (count <= 2 * LeafSize && (0.5 * Area(lo, hi)) + bestCost >= leafCost)
         {
+            leftCount = 0;
             return false;
         }
 
-        // Stable partition: bins ≤ bestBin first.
-        Item[] right = ArrayPool<Item>.Shared.Rent(count - bestLeft);
+        Partition(items, start, count, bestLeft, axis, min, scale, bestBin);
+        leftCount = bestLeft;
+        return true;
+    }
+
+    /// <summary>The axis (0, 1, 2 for x, y, z) along which <paramref name="spread"/> is largest; the first on a tie.</summary>
+    private static int WidestAxis(Double3 spread) =>
+        spread.X >= spread.Y && spread.X >= spread.Z ? 0 : (spread.Y >= spread.Z ? 1 : 2);
+
+    /// <summary>Moves the items[start..start+count] of the bins up to <paramref name="lastLeftBin"/> (<paramref name="leftCount"/> of them) before the others, each side in its order.</summary>
+    private static void Partition(Item[] items, int start, int count, int leftCount, int axis, double min, double scale, int lastLeftBin)
+    {
+        Item[] right = ArrayPool<Item>.Shared.Rent(count - leftCount);
         int l = start, r = 0;
         for (int i = start; i < start + count; i++)
         {
-            if (BinOf(items[i].Centre, axis, min, scale) <= bestBin)
+            if (BinOf(items[i].Centre, axis, min, scale) <= lastLeftBin)
             {
                 items[l++] = items[i];
             }
@@ -434,15 +398,89 @@ internal sealed class SphereHierarchy
 
         Array.Copy(right, 0, items, l, r);
         ArrayPool<Item>.Shared.Return(right);
-        leftCount = bestLeft;
-        return true;
+    }
+
+    [InlineArray(Bins)]
+    private struct BinCounts
+    {
+        private int _element;
+    }
+
+    [InlineArray(Bins)]
+    private struct BinBoxes
+    {
+        private Double3 _element;
+    }
+
+    /// <summary>The SAH's bins along one axis: each bin's item count and the box around its items.</summary>
+    private struct SahBins
+    {
+        private BinCounts _count;
+        private BinBoxes _lo, _hi;
+
+        /// <summary>Puts each item of items[start..start+count] into the bin of its centre.</summary>
+        public void Fill(Item[] items, int start, int count, int axis, double min, double scale)
+        {
+            for (int i = start; i < start + count; i++)
+            {
+                int b = BinOf(items[i].Centre, axis, min, scale);
+                if (_count[b]++ == 0)
+                {
+                    _lo[b] = items[i].Lo;
+                    _hi[b] = items[i].Hi;
+                }
+                else
+                {
+                    _lo[b] = Min(_lo[b], items[i].Lo);
+                    _hi[b] = Max(_hi[b], items[i].Hi);
+                }
+            }
+        }
+
+        /// <summary>
+        /// The bin after which a split costs least, A_left·N_left + A_right·N_right (relative to the parent's area),
+        /// with its left side's item count and the cost; −1 when no split leaves items on both sides.
+        /// </summary>
+        public readonly int Cheapest(int count, out int bestLeft, out double bestCost)
+        {
+            Span<double> rightCost = stackalloc double[Bins];
+            Double3 accLo = default, accHi = default;
+            int accCount = 0;
+            for (int b = Bins - 1; b > 0; b--)
+            {
+                Accumulate(_count[b], _lo[b], _hi[b], ref accLo, ref accHi, ref accCount);
+                rightCost[b] = accCount == 0 ? 0 : Area(accLo, accHi) * accCount;
+            }
+
+            bestCost = double.PositiveInfinity;
+            bestLeft = 0;
+            int bestBin = -1;
+            accCount = 0;
+            for (int b = 0; b < Bins - 1; b++)
+            {
+                Accumulate(_count[b], _lo[b], _hi[b], ref accLo, ref accHi, ref accCount);
+                if (accCount == 0 || accCount == count)
+                {
+                    continue;
+                }
+
+                double cost = (Area(accLo, accHi) * accCount) + rightCost[b + 1];
+                if (cost < bestCost)
+                {
+                    bestCost = cost;
+                    bestBin = b;
+                    bestLeft = accCount;
+                }
+            }
+
+            return bestBin;
+        }
     }
 
     /// <summary>Sorts items[start..start+count] by centre along the axis of largest spread and splits it in half.</summary>
     private static bool MedianSplit(Item[] items, int start, int count, Double3 centreLo, Double3 centreHi, out int axis, out int leftCount)
     {
-        Double3 spread = centreHi - centreLo;
-        int a = spread.X >= spread.Y && spread.X >= spread.Z ? 0 : (spread.Y >= spread.Z ? 1 : 2);
+        int a = WidestAxis(centreHi - centreLo);
         Array.Sort(items, start, count, Comparer<Item>.Create((p, q) =>
         {
             int byCentre = Component(p.Centre, a).CompareTo(Component(q.Centre, a));

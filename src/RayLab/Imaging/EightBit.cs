@@ -1,7 +1,7 @@
 using System.Buffers.Binary;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
-using RayLab.Rendering.Point.Packets;
+using RayLab.Simd;
 
 namespace RayLab;
 

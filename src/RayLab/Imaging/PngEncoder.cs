@@ -62,7 +62,16 @@ internal static class PngEncoder
 
         int zlibLevel = ZlibLevel(level);
         stream.Write(Signature);
+        WriteHeader(stream, image);
+        byte[] zlibHeader = ZlibHeader(zlibLevel);
+        Band[] bands = EncodeBands(image, zlibLevel, filter, zlibHeader, maxDegreeOfParallelism);
+        WriteData(stream, bands, zlibHeader);
+        WriteChunk(stream, "IEND", []);
+    }
 
+    /// <summary>The IHDR chunk: the image's size, 8-bit truecolour, DEFLATE, filter method 0, no interlace.</summary>
+    private static void WriteHeader(Stream stream, Image image)
+    {
         Span<byte> ihdr = stackalloc byte[13];
         BinaryPrimitives.WriteInt32BigEndian(ihdr, image.Width);
         BinaryPrimitives.WriteInt32BigEndian(ihdr[4..], image.Height);
@@ -72,11 +81,13 @@ internal static class PngEncoder
         ihdr[11] = 0; // filter method 0
         ihdr[12] = 0; // no interlace
         WriteChunk(stream, "IHDR", ihdr);
+    }
 
-        int rowBytes = image.Width * 3;
+    /// <summary>Filters and compresses the image's bands, on up to <paramref name="maxDegreeOfParallelism"/> threads.</summary>
+    private static Band[] EncodeBands(Image image, int zlibLevel, PngFilter filter, byte[] zlibHeader, int maxDegreeOfParallelism)
+    {
         int rowsPerBand = RowsPerBand(image.Width);
         int bandCount = (int)(((long)image.Height + rowsPerBand - 1) / rowsPerBand);
-        byte[] zlibHeader = ZlibHeader(zlibLevel);
         var bands = new Band[bandCount];
         if (bandCount == 1 || maxDegreeOfParallelism == 1)
         {
@@ -94,7 +105,13 @@ internal static class PngEncoder
                 i => bands[i] = EncodeBand(image, i, rowsPerBand, bandCount, zlibLevel, filter, zlibHeader));
         }
 
-        // The zlib stream: header, the bands' DEFLATE data in order, the Adler-32 of all the filtered bytes.
+        return bands;
+    }
+
+    /// <summary>The IDAT chunks, one a band: the zlib stream's header, the bands' DEFLATE data in order, the Adler-32 of all the filtered bytes.</summary>
+    private static void WriteData(Stream stream, Band[] bands, byte[] zlibHeader)
+    {
+        int bandCount = bands.Length;
         uint adler = bands[0].Adler;
         for (int i = 1; i < bandCount; i++)
         {
@@ -127,8 +144,6 @@ internal static class PngEncoder
 
             WriteCrc(stream, crc);
         }
-
-        WriteChunk(stream, "IEND", []);
     }
 
     /// <summary>The rows in one band of an image <paramref name="width"/> pixels wide: <see cref="BandBytes"/> filtered bytes' worth, at least 1.</summary>
@@ -188,26 +203,10 @@ internal static class PngEncoder
             int length;
             using (var deflate = new DeflateStream(deflated, new ZLibCompressionOptions { CompressionLevel = zlibLevel }, leaveOpen: true))
             {
-                ReadOnlySpan<byte> pixels = image.PixelBytes;
                 for (int r0 = 0; r0 < rows; r0 += rowsPerChunk)
                 {
                     int count = Math.Min(rowsPerChunk, rows - r0);
-                    for (int r = 0; r < count; r++)
-                    {
-                        int y = y0 + r0 + r;
-                        ReadOnlySpan<byte> row = pixels.Slice(y * rowBytes, rowBytes);
-                        ReadOnlySpan<byte> up = y == 0 ? zeros : pixels.Slice((y - 1) * rowBytes, rowBytes);
-                        Span<byte> output = chunk.AsSpan(r * filteredRowBytes, filteredRowBytes);
-                        if (filter != PngFilter.Adaptive)
-                        {
-                            Filter(filter, row, up, output);
-                        }
-                        else
-                        {
-                            FilterAdaptive(row, up, output, trial);
-                        }
-                    }
-
+                    FilterRows(image, y0 + r0, count, filter, zeros, chunk, trial);
                     ReadOnlySpan<byte> data = chunk.AsSpan(0, count * filteredRowBytes);
                     adler.Append(data);
                     deflate.Write(data);
@@ -231,15 +230,7 @@ internal static class PngEncoder
             }
 
             byte[] bytes = deflated.GetBuffer();
-            var crc = new Crc32(); // System.IO.Hashing: the ISO 3309 CRC PNG chunks use, vectorised; each band's computed on its own core
-            crc.Append("IDAT"u8);
-            if (index == 0)
-            {
-                crc.Append(zlibHeader);
-            }
-
-            crc.Append(bytes.AsSpan(0, length));
-            return new Band(bytes, length, crc, adler.GetCurrentHashAsUInt32(), rows * filteredRowBytes);
+            return new Band(bytes, length, ChunkCrc(bytes.AsSpan(0, length), index == 0 ? zlibHeader : []), adler.GetCurrentHashAsUInt32(), rows * filteredRowBytes);
         }
         finally
         {
@@ -247,6 +238,37 @@ internal static class PngEncoder
             if (trial is not null)
             {
                 ArrayPool<byte>.Shared.Return(trial);
+            }
+        }
+    }
+
+    /// <summary>The running CRC of an IDAT chunk holding <paramref name="zlibHeader"/> (the first band's) and <paramref name="data"/>.</summary>
+    private static Crc32 ChunkCrc(ReadOnlySpan<byte> data, ReadOnlySpan<byte> zlibHeader)
+    {
+        var crc = new Crc32(); // System.IO.Hashing: the ISO 3309 CRC PNG chunks use, vectorised; each band's computed on its own core
+        crc.Append("IDAT"u8);
+        crc.Append(zlibHeader);
+        crc.Append(data);
+        return crc;
+    }
+
+    /// <summary>Filters the <paramref name="count"/> rows from <paramref name="y"/> on into <paramref name="output"/>, one filter-type byte and the row's bytes each.</summary>
+    private static void FilterRows(Image image, int y, int count, PngFilter filter, byte[] zeros, byte[] output, byte[]? trial)
+    {
+        int rowBytes = image.Width * 3, filteredRowBytes = rowBytes + 1;
+        ReadOnlySpan<byte> pixels = image.PixelBytes;
+        for (int r = 0; r < count; r++, y++)
+        {
+            ReadOnlySpan<byte> row = pixels.Slice(y * rowBytes, rowBytes);
+            ReadOnlySpan<byte> up = y == 0 ? zeros : pixels.Slice((y - 1) * rowBytes, rowBytes);
+            Span<byte> filtered = output.AsSpan(r * filteredRowBytes, filteredRowBytes);
+            if (filter != PngFilter.Adaptive)
+            {
+                Filter(filter, row, up, filtered);
+            }
+            else
+            {
+                FilterAdaptive(row, up, filtered, trial);
             }
         }
     }

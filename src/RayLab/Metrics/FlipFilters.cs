@@ -19,6 +19,7 @@ internal sealed class FlipFilters
 
     /// <summary>Builds the taps for <paramref name="pixelsPerDegree"/>.</summary>
     /// <param name="pixelsPerDegree">The observer's pixels per degree.</param>
+    // Long: it assigns every get-only tap array and radius, which only the constructor may; spatial filters first, then feature detectors.
     public FlipFilters(float pixelsPerDegree)
     {
         float piSquared = MathF.PI * MathF.PI;

@@ -100,6 +100,7 @@ internal sealed class FlipKernel
     }
 
     // Called once per band or row: optimised at the first call, not left to tiering's on-stack replacement.
+    // Long: the band's column-tile sweep rents its ring and row buffers and returns them in one try/finally.
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void RunBand(int y0, int y1)
     {
@@ -327,6 +328,7 @@ internal sealed class FlipKernel
     // Both images at once: eight (then six) independent sums hide the multiply-add latency, and each weight is
     // broadcast once for the two images.
     // Called once per band or row: optimised at the first call, not left to tiering's on-stack replacement.
+    // Long: hand-unrolled: both images' sums (eight, then six vectors) stay in registers through the tap loops; a split would spill them.
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void HorizontalVector(float[] convertedReference, float[] convertedTest, float[] ring, int slot, int count)
     {
@@ -425,6 +427,7 @@ internal sealed class FlipKernel
     }
 
     // Called once per band or row: optimised at the first call, not left to tiering's on-stack replacement.
+    // Long: hand-unrolled: both images' spatial, then feature sums stay in registers through the tap loops; a split would spill them.
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void VerticalVector(float[] ring, int[] spatialOffsets, int[] featureOffsets, float[] output, int count)
     {

@@ -8,7 +8,9 @@ namespace RayLab.Rendering;
 /// <param name="Kernel">Which loop renders point samples (the adaptive and exact renderers run their own).</param>
 /// <param name="Progress">Counts finished rows, or null.</param>
 /// <param name="CancellationToken">Cancels the render: it then throws <see cref="OperationCanceledException"/>.</param>
-internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, RenderKernel Kernel, RenderProgress? Progress, CancellationToken CancellationToken)
+/// <param name="Pool">Per-thread buffers kept across renders (a <see cref="Renderer"/>'s), or null to allocate them per render.</param>
+internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, RenderKernel Kernel, RenderProgress? Progress, CancellationToken CancellationToken,
+    ScratchPool? Pool = null)
 {
     /// <summary>The first row to render, 0 the top (<see cref="Renderer.RenderRows"/>).</summary>
     public int FirstRow { get; init; }
@@ -19,6 +21,13 @@ internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, Render
     /// <summary>The rows [Start, End) of an image <paramref name="height"/> rows tall that this render fills.</summary>
     public (int Start, int End) Rows(int height) => (Math.Min(FirstRow, height), Math.Min(EndRow, height));
 
-    /// <summary>The options for <see cref="Parallel.For(int, int, ParallelOptions, Action{int})"/>: threads and cancellation.</summary>
+    /// <summary>A kept <typeparamref name="T"/> from <see cref="Pool"/>, or a new one.</summary>
+    public T Rent<T>()
+        where T : class, new() => Pool is null ? new T() : Pool.Rent<T>();
+
+    /// <summary>Gives <paramref name="item"/> back to <see cref="Pool"/>, if there is one.</summary>
+    public void Return(object item) => Pool?.Return(item);
+
+    /// <summary>The options for a <see cref="Parallel.For(int, int, ParallelOptions, Action{int})"/> outside the row loop: threads and cancellation.</summary>
     public ParallelOptions Parallel => new() { MaxDegreeOfParallelism = MaxDegreeOfParallelism, CancellationToken = CancellationToken };
 }

@@ -46,7 +46,10 @@ public sealed class Renderer
     /// </summary>
     public CancellationToken CancellationToken { get; init; }
 
-    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken);
+    /// <summary>The per-thread buffers kept from one render to the next (the adaptive renderer's lines and caches).</summary>
+    private readonly ScratchPool _pool = new();
+
+    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool);
 
     /// <summary>
     /// Renders <paramref name="scene"/> into <paramref name="image"/> by <paramref name="method"/>: the one place
@@ -87,8 +90,9 @@ public sealed class Renderer
     /// <paramref name="image"/> and leaves the others as they are: a band of the picture, for a caller that shows
     /// progress or yields between bands (the browser playground, which has one thread). A pixel's value does not
     /// depend on the rows rendered with it, so bands rendered one after another give the bytes of one
-    /// <see cref="Render(Scene, Camera, RenderMethod, Image, float[])"/>. The statistics count the band's rays
-    /// (for adaptive, points on the line between two bands count in both).
+    /// <see cref="Render(Scene, Camera, RenderMethod, Image, float[])"/>. The statistics count the band's rays for
+    /// point sampling and pixel methods; adaptive's count the whole image's pixel corners (the band's rays per pixel
+    /// are exact: sum <paramref name="raysPerPixel"/> for the band's cost).
     /// </summary>
     /// <param name="scene">The scene.</param>
     /// <param name="camera">The camera.</param>

@@ -51,11 +51,11 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler
     /// <param name="p">The pattern number.</param>
     internal static SamplePoint Sample(int index, int count, int m, int n, uint p)
     {
-        int s = Permutation.PermutationElement(index, count, p * 0x51633e2du);
-        int sx = Permutation.PermutationElement(s % m, m, p * 0x68bc21ebu);
-        int sy = Permutation.PermutationElement(s / m, n, p * 0x02e5be93u);
-        double jx = RandFloat((uint)s, p * 0x967a889bu);
-        double jy = RandFloat((uint)s, p * 0x368cc8b7u);
+        int s = Permutation.PermutationElement(index, count, p * Kensler.IndexSalt);
+        int sx = Permutation.PermutationElement(s % m, m, p * Kensler.ColumnSalt);
+        int sy = Permutation.PermutationElement(s / m, n, p * Kensler.RowSalt);
+        double jx = RandFloat((uint)s, p * Kensler.JitterXSalt);
+        double jy = RandFloat((uint)s, p * Kensler.JitterYSalt);
         return new SamplePoint((sx + ((sy + jx) / n)) / m, (s + jy) / count);
     }
 
@@ -68,13 +68,13 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler
         i ^= p;
         i ^= i >> 17;
         i ^= i >> 10;
-        i *= 0xb36534e5u;
+        i *= Kensler.RandFloatMultiplier1;
         i ^= i >> 12;
         i ^= i >> 21;
-        i *= 0x93fc4795u;
-        i ^= 0xdf6e307fu;
+        i *= Kensler.RandFloatMultiplier2;
+        i ^= Kensler.RandFloatXor;
         i ^= i >> 17;
         i *= 1u | (p >> 18);
-        return i * (1.0 / 4294967808.0);
+        return i * Kensler.RandFloatScale;
     }
 }

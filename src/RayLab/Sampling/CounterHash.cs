@@ -15,15 +15,24 @@ internal static class CounterHash
     /// <summary>The golden-ratio increment that spreads sample indices before hashing.</summary>
     public const uint Golden = 0x9e3779b9u;
 
+    /// <summary>lowbias32's first multiplier (the lanes' hash uses the same).</summary>
+    public const uint Multiplier1 = 0x7feb352du;
+
+    /// <summary>lowbias32's second multiplier.</summary>
+    public const uint Multiplier2 = 0x846ca68bu;
+
+    /// <summary>2⁻²⁴: the step of <see cref="ToUnit"/>'s numbers.</summary>
+    public const double UnitStep = 1.0 / 16777216.0;
+
     /// <summary>Mixes 32 bits (lowbias32).</summary>
     /// <param name="x">The input.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static uint Hash(uint x)
     {
         x ^= x >> 16;
-        x *= 0x7feb352du;
+        x *= Multiplier1;
         x ^= x >> 15;
-        x *= 0x846ca68bu;
+        x *= Multiplier2;
         x ^= x >> 16;
         return x;
     }
@@ -48,5 +57,5 @@ internal static class CounterHash
     /// <summary>A number in [0, 1) from the top 24 bits of a hash (exact in float and double).</summary>
     /// <param name="hash">A hash value.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static double ToUnit(uint hash) => (hash >> 8) * (1.0 / 16777216.0);
+    public static double ToUnit(uint hash) => (hash >> 8) * UnitStep;
 }

@@ -8,7 +8,8 @@ namespace RayLab.Sampling;
 /// </summary>
 public sealed class HammersleySampler : PixelSampler
 {
-    private const uint ShiftSalt = 0x68e31da4u;
+    /// <summary>Xored into the pixel key for the pixel's random shift (the lanes use the same).</summary>
+    internal const uint ShiftSalt = 0x68e31da4u;
 
     /// <summary>Creates a Hammersley sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1.</param>

@@ -11,6 +11,18 @@ internal static class LowDiscrepancy
     /// <summary>2⁻³², the weight of the lowest bit of a 32-bit binary fraction.</summary>
     internal const double TwoToMinus32 = 1.0 / 4294967296.0;
 
+    /// <summary>The Laine–Karras permutation's first multiplier (Burley's constants; the lanes use the same).</summary>
+    internal const uint LaineKarras1 = 0x6c50b47cu;
+
+    /// <summary>The Laine–Karras permutation's second multiplier.</summary>
+    internal const uint LaineKarras2 = 0xb82f1e52u;
+
+    /// <summary>The Laine–Karras permutation's third multiplier.</summary>
+    internal const uint LaineKarras3 = 0xc7afe638u;
+
+    /// <summary>The Laine–Karras permutation's fourth multiplier.</summary>
+    internal const uint LaineKarras4 = 0x8d22f6e6u;
+
     /// <summary>Reverses the order of the 32 bits of <paramref name="x"/>.</summary>
     /// <param name="x">The input.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -94,10 +106,10 @@ internal static class LowDiscrepancy
     {
         x = ReverseBits(x);
         x += seed;
-        x ^= x * 0x6c50b47cu;
-        x ^= x * 0xb82f1e52u;
-        x ^= x * 0xc7afe638u;
-        x ^= x * 0x8d22f6e6u;
+        x ^= x * LaineKarras1;
+        x ^= x * LaineKarras2;
+        x ^= x * LaineKarras3;
+        x ^= x * LaineKarras4;
         return ReverseBits(x);
     }
 }

@@ -14,8 +14,11 @@ namespace RayLab.Sampling;
 /// </remarks>
 public sealed class MultiJitteredSampler : GridSampler
 {
-    private const uint ColumnSalt = 0x2f5a1c37u;
-    private const uint RowSalt = 0xc13fa9a9u;
+    /// <summary>Xored into the pixel key for the shuffles of the fine columns (the lanes use the same).</summary>
+    internal const uint ColumnSalt = 0x2f5a1c37u;
+
+    /// <summary>Xored into the pixel key for the shuffles of the fine rows.</summary>
+    internal const uint RowSalt = 0xc13fa9a9u;
 
     /// <summary>Creates an n×n multi-jittered sampler.</summary>
     /// <param name="samplesPerPixel">n², a perfect square ≥ 1.</param>

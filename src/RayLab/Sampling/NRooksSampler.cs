@@ -21,6 +21,12 @@ public sealed class NRooksSampler : PixelSampler
     {
     }
 
+    /// <summary>The pixel key's multiplier for the permutation of the columns.</summary>
+    internal const uint ColumnSalt = 0xa511e9b3u;
+
+    /// <summary>The pixel key's multiplier for the permutation of the rows.</summary>
+    internal const uint RowSalt = 0x63d83595u;
+
     /// <inheritdoc />
     public override string Name => "nrooks";
 
@@ -29,8 +35,8 @@ public sealed class NRooksSampler : PixelSampler
     {
         int count = SamplesPerPixel;
         uint key = CounterHash.PixelKey(x, y, Seed);
-        int column = Permutation.PermutationElement(index, count, key * 0xa511e9b3u);
-        int row = Permutation.PermutationElement(index, count, key * 0x63d83595u);
+        int column = Permutation.PermutationElement(index, count, key * ColumnSalt);
+        int row = Permutation.PermutationElement(index, count, key * RowSalt);
         uint h1 = CounterHash.SampleHash(key, index);
         uint h2 = CounterHash.Hash(h1);
         return new SamplePoint((column + CounterHash.ToUnit(h1)) / count, (row + CounterHash.ToUnit(h2)) / count);

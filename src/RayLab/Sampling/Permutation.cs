@@ -29,32 +29,26 @@ internal static class Permutation
     internal static int PermutationElement(int i, int l, uint p)
     {
         uint length = (uint)l;
-        uint w = length - 1;
-        w |= w >> 1;
-        w |= w >> 2;
-        w |= w >> 4;
-        w |= w >> 8;
-        w |= w >> 16;
-
+        uint w = Mask(length);
         uint v = (uint)i;
         do
         {
             v ^= p;
-            v *= 0xe170893du;
+            v *= Kensler.PermuteMultiplier1;
             v ^= p >> 16;
             v ^= (v & w) >> 4;
             v ^= p >> 8;
-            v *= 0x0929eb3fu;
+            v *= Kensler.PermuteMultiplier2;
             v ^= p >> 23;
             v ^= (v & w) >> 1;
             v *= 1u | (p >> 27);
-            v *= 0x6935fa69u;
+            v *= Kensler.PermuteMultiplier3;
             v ^= (v & w) >> 11;
-            v *= 0x74dcb303u;
+            v *= Kensler.PermuteMultiplier4;
             v ^= (v & w) >> 2;
-            v *= 0x9e501cc3u;
+            v *= Kensler.PermuteMultiplier5;
             v ^= (v & w) >> 2;
-            v *= 0xc860a3dfu;
+            v *= Kensler.PermuteMultiplier6;
             v &= w;
             v ^= v >> 5;
         }
@@ -64,5 +58,19 @@ internal static class Permutation
         // not a multiple of l the result then repeats values (p = 0xffffffff, l = 3 gives 1, 0, 0). Summing in
         // 64 bits gives Kensler's value whenever his sum does not wrap and keeps the map a bijection always.
         return (int)(((ulong)v + p) % length);
+    }
+
+    /// <summary>Kensler's mask w for a permutation of <paramref name="length"/> elements: the next power of two ≥ l, less one.</summary>
+    /// <param name="length">l, ≥ 1.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static uint Mask(uint length)
+    {
+        uint w = length - 1;
+        w |= w >> 1;
+        w |= w >> 2;
+        w |= w >> 4;
+        w |= w >> 8;
+        w |= w >> 16;
+        return w;
     }
 }

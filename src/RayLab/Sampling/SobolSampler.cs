@@ -15,7 +15,8 @@ namespace RayLab.Sampling;
 /// </remarks>
 public sealed class SobolSampler : PixelSampler
 {
-    private const uint IndexSalt = 0x1b873593u;
+    /// <summary>Xored into the pixel key for the seed of the index scramble (the lanes use the same).</summary>
+    internal const uint IndexSalt = 0x1b873593u;
 
     /// <summary>Creates a scrambled Sobol' sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1 (a power of two for the full net property).</param>

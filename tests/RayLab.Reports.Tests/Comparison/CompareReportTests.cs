@@ -49,9 +49,9 @@ public class CompareReportTests
 
         string md = new CompareReport("heading", "raylab compare x --out y", results, ["a note"]).Markdown();
 
-        Assert.Contains("| regular | -1.00 | -1.00 | 3 |", md, StringComparison.Ordinal);
-        Assert.Contains("| random | -0.50 | -0.50 | 3 |", md, StringComparison.Ordinal);
-        Assert.Contains("| adaptive c=0.1 | n/a | n/a (rays span less than 2×) | 2 |", md, StringComparison.Ordinal);
+        Assert.Contains("| regular | -1.00 | -1.00 | n/a | 3 |", md, StringComparison.Ordinal);
+        Assert.Contains("| random | -0.50 | -0.50 | n/a | 3 |", md, StringComparison.Ordinal);
+        Assert.Contains("| adaptive c=0.1 | n/a | n/a (rays span less than 2×) | n/a | 2 |", md, StringComparison.Ordinal);
         // Every line reaches 1.2 (the adaptive line's best); regular gets there first, between 10 and 20 ms (in logs).
         Assert.Contains("## Time to RMSE ≤ 1.200 (the lowest RMSE every line reaches)", md, StringComparison.Ordinal);
         double regular = Math.Exp(Math.Log(10) + (Math.Log(1.2 / 4) / Math.Log(1 / 4.0) * Math.Log(2)));
@@ -78,8 +78,8 @@ public class CompareReportTests
         Assert.Equal(3, CompareReport.BeforePlateau([.. results[..5]]).Length);
         string md = new CompareReport("heading", "raylab compare x --out y", results, []).Markdown();
 
-        Assert.Contains("| adaptive c=0.1 | -0.50 | -0.50 (fitted below 64 rays/px, where the error stops falling) | 3 |", md, StringComparison.Ordinal);
-        Assert.Contains("| random | n/a | n/a (the error stops falling at 4 rays/px) | 1 |", md, StringComparison.Ordinal);
+        Assert.Contains("| adaptive c=0.1 | -0.50 | -0.50 (fitted below 64 rays/px, where the error stops falling) | n/a | 3 |", md, StringComparison.Ordinal);
+        Assert.Contains("| random | n/a | n/a (the error stops falling at 4 rays/px) | n/a | 1 |", md, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -106,9 +106,62 @@ public class CompareReportTests
         Assert.Equal("time = median of 3 renders (1 for a render of 1 s or more)", CompareRunner.TimeRule(3));
     }
 
-    private static CompareResult Result(string sampler, int spp, double rmse, double ms, int max = 9) => new(
+    [Fact]
+    public void KendallsTauCountsThePairsTwoOrdersAgreeOn()
+    {
+        Assert.Equal(1, CompareReport.KendallTau([(1, 10), (2, 20), (3, 30)])!.Value, 12);
+        Assert.Equal(-1, CompareReport.KendallTau([(1, 30), (2, 20), (3, 10)])!.Value, 12);
+        // One of three pairs swapped: (2 - 1) / 3.
+        Assert.Equal(1 / 3.0, CompareReport.KendallTau([(1, 10), (2, 30), (3, 20)])!.Value, 12);
+        // τ-b: a tie in one measure is neither agreement nor disagreement; 2 concordant pairs of 3, one tied in A.
+        Assert.Equal(2 / Math.Sqrt(2 * 3), CompareReport.KendallTau([(1, 10), (1, 20), (3, 30)])!.Value, 12);
+        Assert.Null(CompareReport.KendallTau([(1, 10)]));
+        Assert.Null(CompareReport.KendallTau([(1, 10), (1, 20)]));
+    }
+
+    [Fact]
+    public void TheCostToReachAMeanFlipUsesTheFlipOfEachSetting()
+    {
+        CompareResult[] line = [Result("jittered", 1, 4, 10, flip: 0.04), Result("jittered", 4, 1, 40, flip: 0.01), Result("jittered", 16, 0.25, 160)];
+
+        // FLIP 0.02 is halfway (in logs) from 0.04 to 0.01; the setting without a FLIP is passed over.
+        Assert.Equal(20, CompareReport.CostToReach(line, 0.02, r => r.Time.TotalMilliseconds, r => r.MeanFlip)!.Value, 9);
+        Assert.Null(CompareReport.CostToReach(line, 0.001, r => r.Time.TotalMilliseconds, r => r.MeanFlip));
+    }
+
+    [Fact]
+    public void TheMarkdownShowsFlipBesideRmseAndWhereTheyRankDifferently()
+    {
+        CompareResult[] results =
+        [
+            // At 1 spp regular has the lower RMSE but the higher FLIP (its error is structured); at 4 spp they agree.
+            Result("regular", 1, 4, 10, flip: 0.05), Result("regular", 4, 1, 20, flip: 0.02),
+            Result("jittered", 1, 5, 10, flip: 0.04), Result("jittered", 4, 2, 40, flip: 0.03),
+        ];
+
+        CompareReport report = new("heading", "raylab compare x --out y", results, []);
+        string md = report.Markdown();
+
+        Assert.Contains("| sampler | setting | rays/px | time (ms) | RMSE | mean FLIP |", md, StringComparison.Ordinal);
+        Assert.Contains("| regular | 1 spp | 1.00 | 10.0 | 4.000 | 0.0500 |", md, StringComparison.Ordinal);
+        Assert.Contains("| regular | -1.00 | -1.00 | -0.66 | 2 |", md, StringComparison.Ordinal);
+        // Every line reaches FLIP 0.03 (jittered's best): regular between 1 and 4 spp, jittered at 4.
+        Assert.Contains("## Time to mean FLIP ≤ 0.0300 (the lowest mean FLIP every line reaches)", md, StringComparison.Ordinal);
+        double regular = Math.Exp(Math.Log(10) + (Math.Log(0.03 / 0.05) / Math.Log(0.02 / 0.05) * Math.Log(2)));
+        Assert.Contains(FormattableString.Invariant($"| regular | {regular:F1} | 1.00 |"), md, StringComparison.Ordinal);
+        Assert.Contains("## RMSE and FLIP: the same ranking?", md, StringComparison.Ordinal);
+        Assert.Contains("| 1 | regular < jittered | jittered < regular | -1.00 | regular < jittered by RMSE, > by FLIP |", md, StringComparison.Ordinal);
+        Assert.Contains("| 4 | regular < jittered | regular < jittered | 1.00 | none |", md, StringComparison.Ordinal);
+        Assert.Contains("mean_flip", report.Csv().Split('\n')[0], StringComparison.Ordinal);
+        Assert.EndsWith(",0.05,Scalar,images/regular-1.png,errors/regular-1.png,flip/regular-1.png", report.Csv().Split('\n')[1], StringComparison.Ordinal);
+    }
+
+    private static CompareResult Result(string sampler, int spp, double rmse, double ms, int max = 9, double? flip = null) => new(
         CompareCase.Sampled(Samplers.Create(sampler, spp, 1), spp),
-        spp * 100L, spp, TimeSpan.FromMilliseconds(ms), new ImageError(rmse, rmse, max, 0.01), RenderKernel.Scalar);
+        spp * 100L, spp, TimeSpan.FromMilliseconds(ms), new ImageError(rmse, rmse, max, 0.01), RenderKernel.Scalar)
+    {
+        MeanFlip = flip,
+    };
 
     private static CompareResult Adaptive(int depth, double raysPerPixel, double rmse, double ms) => new(
         CompareCase.Adaptive(new AdaptiveSampler(0, depth, 0.1)),

@@ -1,4 +1,5 @@
 using RayLab.Comparison;
+using RayLab.Imaging;
 using RayLab.OwnMethod;
 using RayLab.Sampling;
 using RayLab.Scenes;
@@ -39,6 +40,16 @@ public sealed class CompareRunnerTests : IDisposable
             Assert.True(File.Exists(Path.Combine(folder, file)), $"{file} was not written");
         }
 
+        // Each picture's mean FLIP is the library's against the exact image, and its map is beside its error image.
+        Image exact = Image.Load(Path.Combine(folder, "images", "exact.png"));
+        foreach (CompareResult r in report.Series.SelectMany(s => s))
+        {
+            string stem = r.Case.FileStem;
+            Assert.Equal(RayLab.Metrics.Flip.Compute(exact, Image.Load(Path.Combine(folder, "images", stem + ".png"))).Mean, r.MeanFlip);
+            Assert.True(Image.Load(Path.Combine(folder, "flip", stem + ".png")).Width > 32, $"flip/{stem}.png has a colour bar");
+        }
+
+        Assert.All(CompareReport.ChartStems, c => Assert.True(File.Exists(Path.Combine(folder, c + ".svg")), c));
         string[] rows = [.. File.ReadAllLines(Path.Combine(folder, "results.csv")).Skip(1)];
         Assert.Equal(["jittered", "rotated-grid", "mitchell"], rows.Select(r => r.Split(',')[0]));
         Assert.Contains("32×24", File.ReadAllText(Path.Combine(folder, "results.md")), StringComparison.Ordinal);
@@ -146,11 +157,7 @@ public sealed class CompareRunnerTests : IDisposable
     [Fact]
     public void TheOwnMethodGuidesSnippetIsWhatTheSampleRuns()
     {
-        string repo = AppContext.BaseDirectory;
-        while (!File.Exists(Path.Combine(repo, "RayLab.sln")))
-        {
-            repo = Path.GetDirectoryName(repo) ?? throw new InvalidOperationException("RayLab.sln not found above the test's folder");
-        }
+        string repo = RepoPaths.Root();
 
         string readme = File.ReadAllText(Path.Combine(repo, "docs", "own-method.md"));
         string sample = File.ReadAllText(Path.Combine(repo, "samples", "RayLab.OwnMethod", "SpeedAgainstError.cs"));

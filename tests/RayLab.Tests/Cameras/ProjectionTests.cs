@@ -1,5 +1,5 @@
 using RayLab.Cameras;
-using RayLab.Rendering.Point.Packets;
+using RayLab.Simd;
 
 namespace RayLab.Tests.Cameras;
 

@@ -1,3 +1,4 @@
+using System.Numerics;
 using RayLab.Sampling;
 using RayLab.Cameras;
 using RayLab.Rendering.Exact;
@@ -164,41 +165,39 @@ public sealed class AdaptiveDiagram
         AdaptivePixel.Evaluate(sampler, ref source, px, py, out _);
         long size = source.Size, x0 = px * size, y0 = py * size;
 
-        // Weights from the squares the recursion refined: a square was refined exactly when its centre was traced.
-        var weights = new Dictionary<(long, long), double>();
+        // A square was refined exactly when its centre was traced; each point's weight is the renderer's
+        // combination rule applied to the points themselves.
         var squares = new List<AdaptiveSquare>();
-        void Add((long, long) key, double w) => weights[key] = weights.GetValueOrDefault(key) + w;
-        void Walk(long sx, long sy, long side, int depth, double share)
-        {
-            squares.Add(new AdaptiveSquare((sx - x0) / (double)size, (sy - y0) / (double)size, side / (double)size, depth, true));
-            long h = side / 2, q = side / 4;
-            (long X, long Y, long Cx, long Cy)[] quadrants =
-                [(sx, sy, sx, sy), (sx + h, sy, sx + side, sy), (sx, sy + h, sx, sy + side), (sx + h, sy + h, sx + side, sy + side)];
-            foreach ((long qx, long qy, long cx, long cy) in quadrants)
-            {
-                if (q > 0 && source.Centres.Contains((qx + q, qy + q)))
-                {
-                    Walk(qx, qy, h, depth + 1, share / 4);
-                }
-                else
-                {
-                    squares.Add(new AdaptiveSquare((qx - x0) / (double)size, (qy - y0) / (double)size, h / (double)size, depth + 1, false));
-                    Add((cx, cy), share / 8); // ¼ of (corner + centre)/2
-                    Add((sx + h, sy + h), share / 8);
-                }
-            }
-        }
-
+        PointWeights weights;
         if (source.Centres.Contains((x0 + (size / 2), y0 + (size / 2))))
         {
-            Walk(x0, y0, size, 0, 1);
+            weights = Square(x0, y0, size, 0);
         }
         else
         {
             squares.Add(new AdaptiveSquare(0, 0, 1, 0, false));
-            foreach ((long, long) corner in new[] { (x0, y0), (x0 + size, y0), (x0, y0 + size), (x0 + size, y0 + size) })
+            weights = CombinationRule.Mean(
+                PointWeights.Of(x0, y0), PointWeights.Of(x0 + size, y0), PointWeights.Of(x0, y0 + size), PointWeights.Of(x0 + size, y0 + size));
+        }
+
+        PointWeights Square(long sx, long sy, long side, int depth)
+        {
+            squares.Add(new AdaptiveSquare((sx - x0) / (double)size, (sy - y0) / (double)size, side / (double)size, depth, true));
+            long h = side / 2, q = side / 4;
+            PointWeights centre = PointWeights.Of(sx + h, sy + h);
+            return CombinationRule.Mean(
+                Quadrant(sx, sy, sx, sy), Quadrant(sx + h, sy, sx + side, sy), Quadrant(sx, sy + h, sx, sy + side), Quadrant(sx + h, sy + h, sx + side, sy + side));
+
+            // The quadrant at (qx, qy) whose corner (cx, cy) is a corner of the square.
+            PointWeights Quadrant(long qx, long qy, long cx, long cy)
             {
-                Add(corner, 0.25); // a flat pixel: the mean of its corners
+                if (q > 0 && source.Centres.Contains((qx + q, qy + q)))
+                {
+                    return Square(qx, qy, h, depth + 1);
+                }
+
+                squares.Add(new AdaptiveSquare((qx - x0) / (double)size, (qy - y0) / (double)size, h / (double)size, depth + 1, false));
+                return CombinationRule.Quadrant(PointWeights.Of(cx, cy), centre);
             }
         }
 
@@ -207,7 +206,7 @@ public sealed class AdaptiveDiagram
         for (int i = 0; i < source.Order.Count; i++)
         {
             ((long lx, long ly), Intensity v) = source.Order[i];
-            double w = weights.GetValueOrDefault((lx, ly));
+            double w = weights.WeightOf((lx, ly));
             value += w * v;
             points.Add(new AdaptivePoint(Label(i), (lx - x0) / (double)size, (ly - y0) / (double)size, v, w));
         }
@@ -222,6 +221,30 @@ public sealed class AdaptiveDiagram
         ArgumentOutOfRangeException.ThrowIfNegative(index);
         const string Letters = "ABCDEFGHJKLMNPQRSTUVWXYZ";
         return index < Letters.Length ? Letters[index].ToString() : Label((index / Letters.Length) - 1) + Letters[index % Letters.Length];
+    }
+
+    // Each lattice point's share of the pixel's value: the combination rule's arithmetic on weights instead of intensities.
+    private readonly struct PointWeights(Dictionary<(long, long), double> shares)
+        : IAdditionOperators<PointWeights, PointWeights, PointWeights>, IMultiplyOperators<PointWeights, double, PointWeights>
+    {
+        public static PointWeights Of(long lx, long ly) => new(new() { [(lx, ly)] = 1 });
+
+        public static PointWeights operator +(PointWeights a, PointWeights b)
+        {
+            var sum = new Dictionary<(long, long), double>(a.Shares);
+            foreach (((long, long) point, double share) in b.Shares)
+            {
+                sum[point] = sum.GetValueOrDefault(point) + share;
+            }
+
+            return new PointWeights(sum);
+        }
+
+        public static PointWeights operator *(PointWeights a, double s) => new(a.Shares.ToDictionary(p => p.Key, p => p.Value * s));
+
+        private Dictionary<(long, long), double> Shares => shares;
+
+        public double WeightOf((long, long) point) => Shares.GetValueOrDefault(point);
     }
 
     // Traces lattice points straight through the camera, each once, and remembers the order.

@@ -1,22 +1,26 @@
 using RayLab.Sampling;
-using System.Collections.Concurrent;
+using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Rendering.Point;
-using RayLab.Rendering.Point.Packets;
+using RayLab.Simd;
 
 namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
 /// The points an adaptive render traces, each once, kept as the index of what they hit (0 the background,
-/// k + 1 sphere k: the scenes' colours are flat): the (W+1)×(H+1) pixel corners, traced up front for the whole
-/// image (by the SIMD packet tracer where the frame allows it, <see cref="LatticeHits"/>); the rest per thread
-/// by a <see cref="Source"/>, without a dictionary or an allocation per point.
+/// k + 1 sphere k: the scenes' colours are flat), a row of pixels at a time by a thread's <see cref="Source"/>, in
+/// memory of O(W) per thread: the row's two lines of W + 1 pixel corners (by the SIMD packet tracer where the frame
+/// allows it, <see cref="LatticeHits"/>), then the points the recursion asks for, without a dictionary or an
+/// allocation per point. Nothing of size W×H is kept.
 /// </summary>
 /// <remarks>
-/// Points on a pixel's left and right edges are shared with the pixel beside it in the same row, which the same
+/// <para>The row loop hands a thread bands of <see cref="BandHeight"/> rows, top to bottom: a row's top corner line
+/// is the bottom line of the row above when the same thread rendered it (the lines roll), else traced again (the
+/// value is the same either way, and the count of rays and of points traced again in double counts each line once).</para>
+/// <para>Points on a pixel's left and right edges are shared with the pixel beside it in the same row, which the same
 /// thread evaluates next, so they are kept in a buffer per vertical pixel line. Points on a pixel's top and bottom
-/// edges are shared with another row, perhaps on another thread: each row traces those it needs (the value is the
-/// same either way) and notes which, so that a point both rows traced is counted as one ray.
+/// edges are shared with another row: each row traces those it needs and notes which, so that a point both rows
+/// traced is counted as one ray — within a band at once, between bands once the render is done.</para>
 /// </remarks>
 internal sealed class AdaptiveLattice
 {
@@ -24,11 +28,13 @@ internal sealed class AdaptiveLattice
     private readonly ImagePlane _plane;
     private readonly long _size;
     private readonly double _latticeWidth, _latticeHeight;
-    private readonly int[] _corners;
     private readonly Intensity[] _palette;
     private readonly Rgb24[] _levels;
-    private readonly long[]?[] _topPoints, _bottomPoints;
-    private readonly ConcurrentBag<Source.Buffers> _buffers = [];
+    private readonly RenderOptions _options;
+    private readonly BandEdges _edges;
+
+    /// <summary>Rows per band of the row loop: the top corner line is traced again, and edge points are matched after the render, once per band.</summary>
+    public const int BandHeight = 16;
 
     /// <summary>The most entries a thread's band of minimum-depth points may take (16 MB); deeper bands go point by point.</summary>
     private const long MaxDenseEntries = 1 << 22;
@@ -44,14 +50,13 @@ internal sealed class AdaptiveLattice
         _size = 1L << (maxDepth + 1);
         _latticeWidth = plane.Width * (double)_size;
         _latticeHeight = plane.Height * (double)_size;
-        int stride = plane.Width + 1;
         // The scene is flat-shaded: a point's value is the ColourOf what it hit, so a point keeps that index + 1
         // (0 the background, k + 1 sphere k) and this palette holds the colours.
         _palette = [.. Enumerable.Range(-1, scene.Spheres.Count + 1).Select(scene.ColourOf)];
         _levels = [.. _palette.Select(Rgb24.FromIntensity)];
-        _corners = GC.AllocateUninitializedArray<int>(checked(stride * (plane.Height + 1)));
-        _topPoints = new long[]?[plane.Height];
-        _bottomPoints = new long[]?[plane.Height];
+        _options = options;
+        _edges = options.Rent<BandEdges>();
+        _edges.Prepare((plane.Height + BandHeight - 1) / BandHeight);
         Kernel = PointRenderer.ChooseKernel(options.Kernel, scene, plane, out PacketFrame? frame, out _);
         _hits = Kernel == RenderKernel.Scalar ? null : LatticeHits.TryCreate(scene, plane, _size, frame);
         if (minDepth > 0)
@@ -66,26 +71,9 @@ internal sealed class AdaptiveLattice
         }
 
         CentreLine = quincunx && DenseDepth == 0;
-        long retraced = 0;
-        // The rows this render fills (all, or a band of Renderer.RenderRows) need the corner lines from their top to their bottom.
-        (int first, int end) = options.Rows(plane.Height);
-        _rows = end - first;
-        CornerRays = (long)stride * (end > first ? _rows + 1 : 0);
-        Parallel.For(first, end > first ? end + 1 : first, options.Parallel, j =>
-        {
-            int again = TraceLine(j * _size, 0, _size, _corners.AsSpan(j * stride, stride));
-            if (again != 0)
-            {
-                Interlocked.Add(ref retraced, again);
-            }
-        });
-        _retraced = retraced;
     }
 
     private long _retraced;
-
-    /// <summary>How many rows of pixels this render fills.</summary>
-    private readonly int _rows;
 
     /// <summary>
     /// With a minimum depth m ≥ 1, every pixel's squares at depth m have their corners and centres traced whatever
@@ -102,8 +90,8 @@ internal sealed class AdaptiveLattice
     /// line between two rows of pixels is traced by both when they are on different threads.
     /// </summary>
     public long DenseRays => DenseDepth == 0 ? 0
-        : (((_plane.Width * (1L << DenseDepth)) + 1) * ((_rows * (1L << DenseDepth)) + 1)) - CornerRays
-          + ((long)_plane.Width * _rows << (2 * DenseDepth));
+        : (((_plane.Width * (1L << DenseDepth)) + 1) * ((_plane.Height * (1L << DenseDepth)) + 1)) - CornerRays
+          + ((long)_plane.Width * _plane.Height << (2 * DenseDepth));
 
     /// <summary>
     /// With the quincunx (and no minimum depth): every pixel's centre is traced, a row at a time as one lattice line,
@@ -112,7 +100,7 @@ internal sealed class AdaptiveLattice
     public bool CentreLine { get; }
 
     /// <summary>Rays for the pixel centres of <see cref="CentreLine"/>.</summary>
-    public long CentreRays => CentreLine ? (long)_plane.Width * _rows : 0;
+    public long CentreRays => CentreLine ? (long)_plane.Width * _plane.Height : 0;
 
     /// <summary>Points whose float answer was uncertain and were traced again in double.</summary>
     public long RetracedPoints => Interlocked.Read(ref _retraced);
@@ -144,71 +132,70 @@ internal sealed class AdaptiveLattice
     /// <summary>The silhouette guard, when the sampler has one.</summary>
     public SilhouetteGuard? Guard { get; }
 
-    /// <summary>The loop that traced the corner grid.</summary>
+    /// <summary>The loop that traces the pixel corners.</summary>
     public RenderKernel Kernel { get; }
 
     /// <summary>Steps per pixel side.</summary>
     public long Size => _size;
 
-    /// <summary>Rays traced for the pixel corners.</summary>
-    public long CornerRays { get; }
-
-    /// <summary>What the pixel corners on horizontal pixel line <paramref name="j"/> (0 the top edge) hit, W + 1 entries.</summary>
-    public ReadOnlySpan<int> CornerLine(int j) => _corners.AsSpan(j * (_plane.Width + 1), _plane.Width + 1);
+    /// <summary>Rays traced for the pixel corners, (W + 1)(H + 1), each counted once.</summary>
+    public long CornerRays => (_plane.Width + 1L) * (_plane.Height + 1L);
 
     /// <summary>The 8-bit colour of a flat pixel all of whose corners hit <paramref name="id"/>.</summary>
     public Rgb24 Level(int id) => _levels[id];
 
     /// <summary>
-    /// Points on horizontal pixel lines (other than corners) that more than one row traced: each row's sorted list
-    /// of its top-edge points against the row above's list of its bottom-edge points.
+    /// Points on the horizontal pixel lines between bands (other than corners) that both rows beside the line traced:
+    /// each band's sorted list of its top row's top-edge points against the band above's list of its bottom row's
+    /// bottom-edge points. The lists' storage goes back to the pool.
     /// </summary>
     public long SharedEdgeDuplicates()
     {
         long duplicates = 0;
-        for (int y = 1; y < _topPoints.Length; y++)
+        for (int band = 1; band < _edges.Count; band++)
         {
-            long[]? above = _bottomPoints[y - 1], below = _topPoints[y];
-            if (above is null || below is null)
-            {
-                continue;
-            }
-
-            for (int i = 0, j = 0; i < above.Length && j < below.Length;)
-            {
-                if (above[i] < below[j])
-                {
-                    i++;
-                }
-                else if (above[i] > below[j])
-                {
-                    j++;
-                }
-                else
-                {
-                    duplicates++;
-                    i++;
-                    j++;
-                }
-            }
+            duplicates += Common(CollectionsMarshal.AsSpan(_edges.Bottoms[band - 1]), CollectionsMarshal.AsSpan(_edges.Tops[band]));
         }
 
+        _options.Return(_edges);
         return duplicates;
     }
 
-    /// <summary>A thread's source for one row at a time, with buffers reused across rows and renders' threads.</summary>
-    public Source Rent()
+    /// <summary>How many values two ascending lists have in common.</summary>
+    private static int Common(ReadOnlySpan<long> above, ReadOnlySpan<long> below)
     {
-        if (!_buffers.TryTake(out Source.Buffers? buffers))
+        int common = 0;
+        for (int i = 0, j = 0; i < above.Length && j < below.Length;)
         {
-            buffers = new Source.Buffers(_size, DenseDepth == 0 ? 0 : ((2 << DenseDepth) + 1) * DenseStride, CentreLine ? _plane.Width : 0, _palette.Length);
+            if (above[i] < below[j])
+            {
+                i++;
+            }
+            else if (above[i] > below[j])
+            {
+                j++;
+            }
+            else
+            {
+                common++;
+                i++;
+                j++;
+            }
         }
 
+        return common;
+    }
+
+    /// <summary>A thread's source for one row at a time, its buffers kept across rows, threads and renders (<see cref="RenderOptions.Pool"/>).</summary>
+    public Source Rent()
+    {
+        var buffers = _options.Rent<Source.Buffers>();
+        buffers.Prepare(_plane.Width, _size, DenseDepth == 0 ? 0 : ((2 << DenseDepth) + 1) * DenseStride, CentreLine, _palette.Length);
         return new Source(this, buffers);
     }
 
-    /// <summary>Gives a thread's buffers back for the next thread.</summary>
-    public void Return(Source source) => _buffers.Add(source.Storage);
+    /// <summary>Gives a thread's buffers back for the next thread or render.</summary>
+    public void Return(Source source) => _options.Return(source.Storage);
 
     private int TraceLine<TL>(LatticeHits hits, long ly, long lxStart, long lxStep, Span<int> ids)
         where TL : struct, ILanes<TL> => _plane.IsOrthographic
@@ -218,7 +205,7 @@ internal sealed class AdaptiveLattice
     private int Trace(long lx, long ly) => LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lx, ly);
 
     /// <summary>
-    /// One thread's view of the lattice, a row at a time: corners from the grid; points on the vertical pixel lines
+    /// One thread's view of the lattice, a row at a time: corners from the row's two corner lines; points on the vertical pixel lines
     /// from a buffer per line (the right edge of one pixel is the left edge of the next); points on the horizontal
     /// pixel lines traced and noted for the ray count; points inside the pixel from a buffer over the pixel's
     /// lattice, valid while its stamp is the pixel's (so nothing is cleared between pixels).
@@ -243,11 +230,28 @@ internal sealed class AdaptiveLattice
         /// <summary>Rays this source traced: centres, inner points, points on vertical and horizontal pixel lines.</summary>
         public long Rays { get; private set; }
 
-        /// <summary>Starts a row: with a minimum depth, its band of minimum-depth points is traced, line by line.</summary>
+        /// <summary>What the pixel corners on the row's top edge hit, W + 1 entries.</summary>
+        public readonly ReadOnlySpan<int> TopCorners => _buffers.TopCorners;
+
+        /// <summary>What the pixel corners on the row's bottom edge hit, W + 1 entries.</summary>
+        public readonly ReadOnlySpan<int> BottomCorners => _buffers.BottomCorners;
+
+        /// <summary>Starts the row loop's band of rows <paramref name="first"/> to <paramref name="end"/> − 1 on this thread.</summary>
+        public readonly void BeginBand(int first, int end)
+        {
+            _buffers.BandFirst = first;
+            _buffers.BandEnd = end;
+        }
+
+        /// <summary>
+        /// Starts a row: its two corner lines (the top one taken from the row above when this thread rendered it),
+        /// its centres with the quincunx, and with a minimum depth its band of minimum-depth points, line by line.
+        /// </summary>
         public readonly void BeginRow(int row)
         {
             AdaptiveLattice lattice = _lattice;
             int m = lattice.DenseDepth;
+            TraceCorners(row);
             if (lattice.CentreLine)
             {
                 long centres = lattice.TraceLine((row * lattice._size) + (lattice._size / 2), lattice._size / 2, lattice._size, _buffers.Centres);
@@ -294,6 +298,34 @@ internal sealed class AdaptiveLattice
         }
 
         /// <summary>
+        /// The row's corner lines: the top one is the last row's bottom one when this thread rendered the row above,
+        /// else traced; the bottom one traced. Points traced again in double count once per line: the bottom line's
+        /// always, the top line's only on row 0.
+        /// </summary>
+        private readonly void TraceCorners(int row)
+        {
+            AdaptiveLattice lattice = _lattice;
+            Buffers buffers = _buffers;
+            long again = 0;
+            if (buffers.CornerLine == row)
+            {
+                (buffers.Top, buffers.Bottom) = (buffers.Bottom, buffers.Top);
+            }
+            else
+            {
+                int traced = lattice.TraceLine(row * lattice._size, 0, lattice._size, buffers.TopCorners);
+                again += row == 0 ? traced : 0;
+            }
+
+            again += lattice.TraceLine((row + 1) * lattice._size, 0, lattice._size, buffers.BottomCorners);
+            buffers.CornerLine = row + 1;
+            if (again != 0)
+            {
+                Interlocked.Add(ref lattice._retraced, again);
+            }
+        }
+
+        /// <summary>
         /// How many pixels from <paramref name="x"/> on have every minimum-depth point hit the same thing,
         /// <paramref name="id"/> (what the first one's top-left point hit): no square of theirs is refined further, so
         /// their value and rays are those of that thing alone (<see cref="Uniform"/>). The pixel after the run is not
@@ -329,11 +361,9 @@ internal sealed class AdaptiveLattice
         /// </summary>
         public readonly bool TryUniformWithCentre(AdaptiveSampler sampler, int x, int row, out Intensity value, out double samples)
         {
-            AdaptiveLattice lattice = _lattice;
-            int stride = lattice._plane.Width + 1, top = (row * stride) + x, bottom = top + stride;
-            int[] corners = lattice._corners;
-            int id = corners[top];
-            if (corners[top + 1] != id || corners[bottom] != id || corners[bottom + 1] != id || _buffers.Centres[x] != id)
+            ReadOnlySpan<int> top = _buffers.TopCorners, bottom = _buffers.BottomCorners;
+            int id = top[x];
+            if (top[x + 1] != id || bottom[x] != id || bottom[x + 1] != id || _buffers.Centres[x] != id)
             {
                 value = default;
                 samples = 0;
@@ -376,24 +406,33 @@ internal sealed class AdaptiveLattice
             }
         }
 
-        /// <summary>Ends a row: its notes of horizontal-line points go to the lattice, sorted.</summary>
-        public readonly void EndRow(int row)
+        /// <summary>
+        /// Ends a row: its notes of horizontal-line points, sorted. Its top-edge points that the row above traced too
+        /// are taken off its rays when that row was the band's; at the band's top and bottom the notes go to the
+        /// lattice for <see cref="SharedEdgeDuplicates"/>.
+        /// </summary>
+        public void EndRow(int row)
         {
-            _lattice._topPoints[row] = Take(_buffers.Top);
-            _lattice._bottomPoints[row] = Take(_buffers.Bottom);
-
-            static long[]? Take(List<long> points)
+            Buffers buffers = _buffers;
+            buffers.TopPoints.Sort();
+            buffers.BottomPoints.Sort();
+            if (row != buffers.BandFirst)
             {
-                if (points.Count == 0)
-                {
-                    return null;
-                }
-
-                long[] sorted = [.. points];
-                Array.Sort(sorted);
-                points.Clear();
-                return sorted;
+                Rays -= Common(CollectionsMarshal.AsSpan(buffers.AboveBottomPoints), CollectionsMarshal.AsSpan(buffers.TopPoints));
             }
+            else if (row > 0)
+            {
+                _lattice._edges.Tops[row / BandHeight].AddRange(buffers.TopPoints);
+            }
+
+            if (row == buffers.BandEnd - 1)
+            {
+                _lattice._edges.Bottoms[row / BandHeight].AddRange(buffers.BottomPoints);
+            }
+
+            (buffers.AboveBottomPoints, buffers.BottomPoints) = (buffers.BottomPoints, buffers.AboveBottomPoints);
+            buffers.TopPoints.Clear();
+            buffers.BottomPoints.Clear();
         }
 
         public readonly bool MayCross(long x0, long y0, long size) => _lattice.Guard?.MayCross(x0, y0, size) ?? false;
@@ -427,13 +466,13 @@ internal sealed class AdaptiveLattice
 
             if (onColumn && onRow)
             {
-                return lattice._palette[lattice._corners[((ly / size) * (lattice._plane.Width + 1)) + (lx / size)]];
+                return lattice._palette[(ly == _y0 ? _buffers.TopCorners : _buffers.BottomCorners)[(int)(lx / size)]];
             }
 
             if (onRow)
             {
                 // Top or bottom pixel edge: shared with another row.
-                (ly == _y0 ? _buffers.Top : _buffers.Bottom).Add(lx);
+                (ly == _y0 ? _buffers.TopPoints : _buffers.BottomPoints).Add(lx);
                 Rays++;
                 return lattice._palette[lattice.Trace(lx, ly)];
             }
@@ -495,28 +534,45 @@ internal sealed class AdaptiveLattice
         }
 
         /// <summary>
-        /// A thread's reusable storage: the pixel's inner lattice and two vertical lines as (stamp, index) pairs,
-        /// and the row's notes of horizontal-line points.
+        /// A thread's reusable storage, O(W): the row's two corner lines, its centres and its band of minimum-depth
+        /// points; the pixel's inner lattice and two vertical lines as (stamp, index) pairs; the row's notes of
+        /// horizontal-line points. Kept across renders (<see cref="Prepare"/> sizes it for each).
         /// </summary>
-        internal sealed class Buffers(long size, int denseEntries, int centres, int paletteLength)
+        internal sealed class Buffers
         {
-            public int[] Centres { get; } = new int[centres];
+            public int[] Top { get; set; } = [];
 
-            public int[] Dense { get; } = new int[denseEntries];
+            public int[] Bottom { get; set; } = [];
 
-            public Intensity[] UniformValue { get; } = new Intensity[paletteLength];
+            /// <summary>The row's top corner line, W + 1 entries.</summary>
+            public Span<int> TopCorners => Top;
 
-            public double[] UniformSamples { get; } = new double[paletteLength];
+            /// <summary>The row's bottom corner line, W + 1 entries.</summary>
+            public Span<int> BottomCorners => Bottom;
 
-            public bool[] UniformKnown { get; } = new bool[paletteLength];
+            /// <summary>The pixel line whose corners <see cref="Bottom"/> holds (−1: none yet).</summary>
+            public int CornerLine { get; set; } = -1;
 
-            public ulong[] Interior { get; } = new ulong[2 * ((size >> 1) + 1) * ((size >> 1) + 1)];
+            public int[] Centres { get; private set; } = [];
 
-            public ulong[] Lines { get; } = new ulong[2 * 2 * (size + 1)];
+            public int[] Dense { get; private set; } = [];
 
-            public List<long> Top { get; } = [];
+            public Intensity[] UniformValue { get; private set; } = [];
 
-            public List<long> Bottom { get; } = [];
+            public double[] UniformSamples { get; private set; } = [];
+
+            public bool[] UniformKnown { get; private set; } = [];
+
+            public ulong[] Interior { get; private set; } = [];
+
+            public ulong[] Lines { get; private set; } = [];
+
+            public List<long> TopPoints { get; } = [];
+
+            public List<long> BottomPoints { get; set; } = [];
+
+            /// <summary>The row above's bottom-edge notes, sorted, while this thread renders the next row of the band.</summary>
+            public List<long> AboveBottomPoints { get; set; } = [];
 
             public uint Stamp { get; set; }
 
@@ -525,6 +581,88 @@ internal sealed class AdaptiveLattice
 
             /// <summary>Points of that band's bottom line traced again in double.</summary>
             public int BottomLineRetraced { get; set; }
+
+            /// <summary>The first row of the row loop's band this thread renders.</summary>
+            public int BandFirst { get; set; }
+
+            /// <summary>The row after the band's last.</summary>
+            public int BandEnd { get; set; }
+
+            /// <summary>
+            /// Sizes the buffers for a render of <paramref name="width"/> pixels a row and <paramref name="size"/>
+            /// lattice steps a pixel side (arrays of another length are replaced), and forgets the last render.
+            /// </summary>
+            public void Prepare(int width, long size, int denseEntries, bool centres, int paletteLength)
+            {
+                Top = Sized(Top, width + 1);
+                Bottom = Sized(Bottom, width + 1);
+                Centres = Sized(Centres, centres ? width : 0);
+                Dense = Sized(Dense, denseEntries);
+                UniformValue = Sized(UniformValue, paletteLength);
+                UniformSamples = Sized(UniformSamples, paletteLength);
+                UniformKnown = Sized(UniformKnown, paletteLength);
+                Interior = Sized(Interior, (int)(2 * ((size >> 1) + 1) * ((size >> 1) + 1)));
+                Lines = Sized(Lines, (int)(2 * 2 * (size + 1)));
+                Array.Clear(UniformKnown);
+                Array.Clear(Interior);
+                Array.Clear(Lines);
+                TopPoints.Clear();
+                BottomPoints.Clear();
+                AboveBottomPoints.Clear();
+                Stamp = 0;
+                CornerLine = DenseRow = -1;
+                BottomLineRetraced = 0;
+
+                static T[] Sized<T>(T[] kept, int length) => kept.Length == length ? kept : new T[length];
+            }
+        }
+    }
+
+    /// <summary>
+    /// The notes of horizontal-line points at the top and bottom of each band of rows, for
+    /// <see cref="SharedEdgeDuplicates"/>: one list per band, each written by the one thread that renders the band.
+    /// </summary>
+    internal sealed class BandEdges
+    {
+        private List<long>[] _tops = [], _bottoms = [];
+
+        /// <summary>Bands in the current render.</summary>
+        public int Count { get; private set; }
+
+        /// <summary>Each band's top row's top-edge points, sorted.</summary>
+        public List<long>[] Tops => _tops;
+
+        /// <summary>Each band's bottom row's bottom-edge points, sorted.</summary>
+        public List<long>[] Bottoms => _bottoms;
+
+        /// <summary>Empty lists for <paramref name="bands"/> bands, kept from the last render where there are enough.</summary>
+        public void Prepare(int bands)
+        {
+            if (_tops.Length < bands)
+            {
+                _tops = Grow(_tops, bands);
+                _bottoms = Grow(_bottoms, bands);
+            }
+
+            for (int band = 0; band < bands; band++)
+            {
+                _tops[band].Clear();
+                _bottoms[band].Clear();
+            }
+
+            Count = bands;
+
+            static List<long>[] Grow(List<long>[] kept, int length)
+            {
+                var grown = new List<long>[length];
+                kept.CopyTo(grown, 0);
+                for (int i = kept.Length; i < length; i++)
+                {
+                    grown[i] = [];
+                }
+
+                return grown;
+            }
         }
     }
 }

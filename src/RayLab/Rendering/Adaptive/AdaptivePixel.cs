@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using RayLab.Sampling;
 
 namespace RayLab.Rendering.Adaptive;
@@ -23,7 +24,7 @@ internal interface ILatticeSource
     bool MayCross(long x0, long y0, long size);
 }
 
-/// <summary>The lab's adaptive recursion and combination rule for one pixel (see <see cref="AdaptiveSampler"/>).</summary>
+/// <summary>The lab's adaptive recursion for one pixel (see <see cref="AdaptiveSampler"/>), its values combined by <see cref="CombinationRule"/>.</summary>
 internal static class AdaptivePixel
 {
     /// <summary>The pixel's value; <paramref name="samples"/> receives the rays charged to it (corners ¼, edge points ½).</summary>
@@ -42,7 +43,7 @@ internal static class AdaptivePixel
         {
             // A flat pixel: the mean of its corners, which is what the combination rule gives for any centre that
             // agrees (exactly the corners' value when they are equal, as AdaptiveRenderer's runs of flat pixels take it).
-            return tl == tr && tl == bl && tl == br ? tl : 0.25 * (tl + tr + bl + br);
+            return tl == tr && tl == bl && tl == br ? tl : CombinationRule.Mean(tl, tr, bl, br);
         }
 
         Intensity centre = Centre(ref source, x0 + (size / 2), y0 + (size / 2), ref samples);
@@ -53,40 +54,11 @@ internal static class AdaptivePixel
         Intensity tl, Intensity tr, Intensity bl, Intensity br, Intensity x, ref double samples)
         where TSource : ILatticeSource
     {
-        bool refineTl = false, refineTr = false, refineBl = false, refineBr = false;
-        if (depth < s.MaxDepth)
-        {
-            if (depth < s.MinDepth)
-            {
-                refineTl = refineTr = refineBl = refineBr = true;
-            }
-            else
-            {
-                refineTl = s.Differ(tl, x);
-                refineTr = s.Differ(tr, x);
-                refineBl = s.Differ(bl, x);
-                refineBr = s.Differ(br, x);
-                if (!(refineTl || refineTr || refineBl || refineBr) && CornersDiffer(s, tl, tr, bl, br))
-                {
-                    // The corners disagree although each agrees with the centre: refine them all.
-                    refineTl = refineTr = refineBl = refineBr = true;
-                }
-
-                if (s.Guard)
-                {
-                    // Where the values agree, a silhouette may still cross a quadrant between its traced points.
-                    long half = size / 2;
-                    refineTl = refineTl || source.MayCross(x0, y0, half);
-                    refineTr = refineTr || source.MayCross(x0 + half, y0, half);
-                    refineBl = refineBl || source.MayCross(x0, y0 + half, half);
-                    refineBr = refineBr || source.MayCross(x0 + half, y0 + half, half);
-                }
-            }
-        }
-
+        (bool refineTl, bool refineTr, bool refineBl, bool refineBr) = Refinements(s, ref source, x0, y0, size, depth, tl, tr, bl, br, x);
         if (!(refineTl || refineTr || refineBl || refineBr))
         {
-            return 0.25 * (((tl + x) * 0.5) + ((tr + x) * 0.5) + ((bl + x) * 0.5) + ((br + x) * 0.5));
+            return CombinationRule.Mean(
+                CombinationRule.Quadrant(tl, x), CombinationRule.Quadrant(tr, x), CombinationRule.Quadrant(bl, x), CombinationRule.Quadrant(br, x));
         }
 
         long h = size / 2, q = size / 4;
@@ -99,17 +71,55 @@ internal static class AdaptivePixel
 
         Intensity vTl = refineTl
             ? Square(s, ref source, x0, y0, h, depth + 1, tl, top, left, x, Centre(ref source, x0 + q, y0 + q, ref samples), ref samples)
-            : (tl + x) * 0.5;
+            : CombinationRule.Quadrant(tl, x);
         Intensity vTr = refineTr
             ? Square(s, ref source, x0 + h, y0, h, depth + 1, top, tr, x, right, Centre(ref source, x0 + h + q, y0 + q, ref samples), ref samples)
-            : (tr + x) * 0.5;
+            : CombinationRule.Quadrant(tr, x);
         Intensity vBl = refineBl
             ? Square(s, ref source, x0, y0 + h, h, depth + 1, left, x, bl, bottom, Centre(ref source, x0 + q, y0 + h + q, ref samples), ref samples)
-            : (bl + x) * 0.5;
+            : CombinationRule.Quadrant(bl, x);
         Intensity vBr = refineBr
             ? Square(s, ref source, x0 + h, y0 + h, h, depth + 1, x, right, bottom, br, Centre(ref source, x0 + h + q, y0 + h + q, ref samples), ref samples)
-            : (br + x) * 0.5;
-        return 0.25 * (vTl + vTr + vBl + vBr);
+            : CombinationRule.Quadrant(br, x);
+        return CombinationRule.Mean(vTl, vTr, vBl, vBr);
+    }
+
+    // Which quadrants of the square the recursion goes into: all of them above MinDepth, none at MaxDepth, otherwise
+    // those whose corner differs from the centre (all when the corners differ among themselves), and with the guard
+    // those a silhouette may cross.
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static (bool Tl, bool Tr, bool Bl, bool Br) Refinements<TSource>(AdaptiveSampler s, ref TSource source, long x0, long y0, long size, int depth,
+        Intensity tl, Intensity tr, Intensity bl, Intensity br, Intensity x)
+        where TSource : ILatticeSource
+    {
+        if (depth >= s.MaxDepth)
+        {
+            return (false, false, false, false);
+        }
+
+        if (depth < s.MinDepth)
+        {
+            return (true, true, true, true);
+        }
+
+        bool refineTl = s.Differ(tl, x), refineTr = s.Differ(tr, x), refineBl = s.Differ(bl, x), refineBr = s.Differ(br, x);
+        if (!(refineTl || refineTr || refineBl || refineBr) && CornersDiffer(s, tl, tr, bl, br))
+        {
+            // The corners disagree although each agrees with the centre: refine them all.
+            refineTl = refineTr = refineBl = refineBr = true;
+        }
+
+        if (s.Guard)
+        {
+            // Where the values agree, a silhouette may still cross a quadrant between its traced points.
+            long half = size / 2;
+            refineTl = refineTl || source.MayCross(x0, y0, half);
+            refineTr = refineTr || source.MayCross(x0 + half, y0, half);
+            refineBl = refineBl || source.MayCross(x0, y0 + half, half);
+            refineBr = refineBr || source.MayCross(x0 + half, y0 + half, half);
+        }
+
+        return (refineTl, refineTr, refineBl, refineBr);
     }
 
     private static bool CornersDiffer(AdaptiveSampler s, Intensity tl, Intensity tr, Intensity bl, Intensity br) =>

@@ -1,13 +1,12 @@
 using RayLab.Sampling;
-using System.Diagnostics;
 using RayLab.Cameras;
 
 namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
-/// The lab's adaptive antialiasing (section 4.1.4) as a renderer: the pixel corners are traced once for the
-/// whole image (<see cref="AdaptiveLattice"/>), then each pixel is subdivided where its values disagree
-/// (<see cref="AdaptivePixel"/>), a row per task, each thread with its own reusable buffers. It relies
+/// The lab's adaptive antialiasing (section 4.1.4) as a renderer: on the <see cref="RowLoop"/>, a band of rows per
+/// task, each row's pixel corners are traced as two lines (<see cref="AdaptiveLattice"/>), then each pixel is
+/// subdivided where its values disagree (<see cref="AdaptivePixel"/>), each thread with its own reusable buffers. It relies
 /// on the scene's flat shading: a point is kept as the index of what it hit, its value that index's
 /// <see cref="Scene.ColourOf"/>.
 /// </summary>
@@ -72,66 +71,49 @@ internal static class AdaptiveRenderer
     /// <summary>Renders with <paramref name="sampler"/>'s settings; <paramref name="raysPerPixel"/>, if given, receives each pixel's rays.</summary>
     public static RenderStatistics Render(Scene scene, ImagePlane plane, AdaptiveSampler sampler, Image image, RenderOptions options, float[]? raysPerPixel)
     {
-        (int first, int end) = options.Rows(image.Height);
-        options.Progress?.Start(end - first);
-        var clock = Stopwatch.StartNew();
+        var loop = RowLoop.Start(options, image.Height);
         var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, sampler.Quincunx, sampler.Guard, options);
-        long rays = lattice.CornerRays + lattice.DenseRays + lattice.CentreRays;
-        bool flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
-        Parallel.For(first, end, options.Parallel, lattice.Rent, (row, _, source) =>
+        RowTotals totals = loop.Run(new Rows(lattice, sampler, image, raysPerPixel));
+        long rays = lattice.CornerRays + lattice.DenseRays + lattice.CentreRays + totals.Rays - lattice.SharedEdgeDuplicates();
+        return loop.Finish(rays, lattice.Kernel, lattice.RetracedPoints);
+    }
+
+    /// <summary>The adaptive rows: bands of <see cref="AdaptiveLattice.BandHeight"/> rows, each thread with its lattice <see cref="AdaptiveLattice.Source"/>.</summary>
+    private sealed class Rows(AdaptiveLattice lattice, AdaptiveSampler sampler, Image image, float[]? raysPerPixel) : IRowRenderer<AdaptiveLattice.Source>
+    {
+        private readonly bool _flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
+
+        // The guard may refine a pixel whose points agree: then only the recursion knows its value.
+        private readonly bool _dense = lattice.DenseDepth != 0 && lattice.Guard is null;
+        private readonly bool _centres = lattice.CentreLine && lattice.Guard is null;
+
+        public int BandHeight => AdaptiveLattice.BandHeight;
+
+        public AdaptiveLattice.Source Rent() => lattice.Rent();
+
+        public void BeginBand(int first, int end, ref AdaptiveLattice.Source source) => source.BeginBand(first, end);
+
+        public void Return(AdaptiveLattice.Source source, ref RowTotals totals)
+        {
+            totals.Rays += source.Rays;
+            lattice.Return(source);
+        }
+
+        public void RenderRow(int row, ref AdaptiveLattice.Source source)
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
             source.BeginRow(row);
-            // The guard may refine a pixel whose points agree: then only the recursion knows its value.
-            bool dense = lattice.DenseDepth != 0 && lattice.Guard is null;
-            bool centres = lattice.CentreLine && lattice.Guard is null;
-            SilhouetteGuard? guard = lattice.Guard;
-            long size = lattice.Size;
-            int block = -1;
-            bool blockFree = false;
             Span<float> counts = raysPerPixel is null ? default : raysPerPixel.AsSpan((int)((long)row * pixels.Length), pixels.Length);
-            ReadOnlySpan<int> top = lattice.CornerLine(row), bottom = lattice.CornerLine(row + 1);
+            var guard = new GuardState(lattice.Guard, lattice.Size);
             for (int x = 0; x < pixels.Length; x++)
             {
-                if (flatWithoutCentre)
+                // Runs first: with neither minimum depth nor quincunx, flat pixels; with a minimum depth, uniform ones.
+                x += _flatWithoutCentre ? FlatRun(source, pixels, counts, x, row, ref guard)
+                    : _dense ? UniformRun(source, pixels, counts, x, row)
+                    : 0;
+                if (x == pixels.Length)
                 {
-                    // Most pixels: four corners on the same sphere (or the background), nothing more to trace. The run
-                    // of flat pixels from x that hit what corner x hit ends where either corner line first hits
-                    // something else; the pixel after the run is not flat.
-                    int id = top[x];
-                    int run = Math.Min(RunLength(top[x..], id), RunLength(bottom[x..], id)) - 1;
-                    if (run > 0)
-                    {
-                        x += guard is null
-                            ? Fill(pixels.Slice(x, run), counts.IsEmpty ? default : counts.Slice(x, run), lattice.Level(id))
-                            : FillGuarded(guard, pixels, counts, x, run, row, size, lattice.Level(id), ref block, ref blockFree);
-                        if (x == pixels.Length)
-                        {
-                            break;
-                        }
-                    }
-                }
-
-                else if (dense)
-                {
-                    // With a minimum depth: the run of pixels from x whose band points all hit one thing is refined no
-                    // further; the pixel after the run is not uniform.
-                    int run = source.UniformRun(x, out int id);
-                    if (run > 0)
-                    {
-                        source.Uniform(sampler, id, x, row, out Intensity uniform, out double charged);
-                        pixels.Slice(x, run).Fill(Rgb24.FromIntensity(uniform));
-                        if (!counts.IsEmpty)
-                        {
-                            counts.Slice(x, run).Fill((float)charged);
-                        }
-
-                        x += run;
-                        if (x == pixels.Length)
-                        {
-                            break;
-                        }
-                    }
+                    break;
                 }
 
                 // A pixel whose corners disagree, one the guard stopped a run at, one whose band points disagree, or
@@ -139,7 +121,7 @@ internal static class AdaptiveRenderer
                 // whose traced points all agree is refined no further, and its value is known per colour.
                 Intensity value;
                 double samples;
-                if (!(centres && source.TryUniformWithCentre(sampler, x, row, out value, out samples)))
+                if (!(_centres && source.TryUniformWithCentre(sampler, x, row, out value, out samples)))
                 {
                     source.NextPixel(x, row);
                     value = AdaptivePixel.Evaluate(sampler, ref source, x, row, out samples);
@@ -153,15 +135,55 @@ internal static class AdaptiveRenderer
             }
 
             source.EndRow(row);
-            options.Progress?.CompleteRow();
-            return source;
-        }, source =>
+        }
+
+        /// <summary>
+        /// Most pixels: four corners on the same sphere (or the background), nothing more to trace. The run of flat
+        /// pixels from x that hit what corner x hit ends where either corner line first hits something else; the
+        /// pixel after the run is not flat. Writes the run (up to where the guard stops it); returns its length.
+        /// </summary>
+        private int FlatRun(in AdaptiveLattice.Source source, Span<Rgb24> pixels, Span<float> counts, int x, int row, ref GuardState guard)
         {
-            Interlocked.Add(ref rays, source.Rays);
-            lattice.Return(source);
-        });
-        rays -= lattice.SharedEdgeDuplicates();
-        clock.Stop();
-        return new RenderStatistics(rays, clock.Elapsed) { Kernel = lattice.Kernel, RetracedSamples = lattice.RetracedPoints };
+            ReadOnlySpan<int> top = source.TopCorners, bottom = source.BottomCorners;
+            int id = top[x];
+            int run = Math.Min(RunLength(top[x..], id), RunLength(bottom[x..], id)) - 1;
+            if (run <= 0)
+            {
+                return 0;
+            }
+
+            return guard.Guard is null
+                ? Fill(pixels.Slice(x, run), counts.IsEmpty ? default : counts.Slice(x, run), lattice.Level(id))
+                : FillGuarded(guard.Guard, pixels, counts, x, run, row, guard.Size, lattice.Level(id), ref guard.Block, ref guard.BlockFree);
+        }
+
+        /// <summary>
+        /// With a minimum depth: the run of pixels from x whose band points all hit one thing is refined no further;
+        /// the pixel after the run is not uniform. Writes the run; returns its length.
+        /// </summary>
+        private int UniformRun(in AdaptiveLattice.Source source, Span<Rgb24> pixels, Span<float> counts, int x, int row)
+        {
+            int run = source.UniformRun(x, out int id);
+            if (run > 0)
+            {
+                source.Uniform(sampler, id, x, row, out Intensity uniform, out double charged);
+                pixels.Slice(x, run).Fill(Rgb24.FromIntensity(uniform));
+                if (!counts.IsEmpty)
+                {
+                    counts.Slice(x, run).Fill((float)charged);
+                }
+            }
+
+            return run;
+        }
+    }
+
+    /// <summary>A row's guard and the block its last test cleared (see <see cref="MayCross"/>).</summary>
+    private struct GuardState(SilhouetteGuard? guard, long size)
+    {
+        public readonly SilhouetteGuard? Guard = guard;
+        public readonly long Size = size;
+        public int Block = -1;
+        public bool BlockFree;
     }
 }

@@ -1,7 +1,8 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Cameras;
-using RayLab.Rendering.Point.Packets;
+using RayLab.Geometry;
+using RayLab.Simd;
 
 namespace RayLab.Rendering.Adaptive;
 
@@ -15,7 +16,7 @@ namespace RayLab.Rendering.Adaptive;
 /// <c>α = lx / (W·S)</c>, <c>β = 1 − ly / (H·S)</c> (<see cref="ImagePlane.GetRay"/>).</para>
 /// <para>The SIMD path tests each sphere with the packet kernel's stable discriminant
 /// <c>Δ = r² − |f⊥|²</c> (see <see cref="PacketFrame"/>), in float, and keeps the answer only where |Δ| exceeds a
-/// bound that covers both the float arithmetic (<c>32 ε (r² + L²)</c>, L the largest |o − C| over the window) and
+/// bound that covers both the float arithmetic (<see cref="FloatRounding.DiscriminantError"/>) and
 /// the float rounding of the ray itself, which the point kernel does not need to cover (its samples are
 /// random) but the lattice does, since the double path is its reference to the byte. A ray whose direction
 /// (perspective) is off by δ turns by at most <c>δ/s</c> about the eye, moving its distance from the centre by at
@@ -29,8 +30,6 @@ namespace RayLab.Rendering.Adaptive;
 /// </remarks>
 internal sealed class LatticeHits
 {
-    private const double Epsilon = 1.0 / (1 << 23);
-
     private readonly Scene _scene;
     private readonly ImagePlane _plane;
     private readonly double _latticeWidth, _latticeHeight;
@@ -48,7 +47,7 @@ internal sealed class LatticeHits
         Direction = plane.IsOrthographic ? -plane.W : Double3.Zero;
         CheckDepthOrder = frame.CheckDepthOrder;
         var spheres = new List<HitSphere>();
-        double rayError = 8 * Epsilon * (plane.C.Length + plane.A.Length + plane.B.Length);
+        double rayError = 8 * FloatRounding.MachineEpsilon * (plane.C.Length + plane.A.Length + plane.B.Length);
         for (int k = 0; k < scene.Spheres.Count; k++)
         {
             Sphere sphere = scene.Spheres[k];
@@ -62,9 +61,9 @@ internal sealed class LatticeHits
                 ? Math.Max(Math.Max(offset.Length, (offset + plane.A).Length), Math.Max((offset + plane.B).Length, (offset + plane.A + plane.B).Length))
                 : offset.Length;
             double r2 = sphere.Radius * sphere.Radius;
-            double arithmetic = 32 * Epsilon * (r2 + (largest * largest));
+            double arithmetic = FloatRounding.DiscriminantError(sphere.Radius, largest);
             double ray = plane.IsOrthographic
-                ? 2 * ((3 * largest * 8 * Epsilon * (offset.Length + plane.A.Length + plane.B.Length + largest)) + (3 * largest * largest * 8 * Epsilon))
+                ? 2 * ((3 * largest * 8 * FloatRounding.MachineEpsilon * (offset.Length + plane.A.Length + plane.B.Length + largest)) + (3 * largest * largest * 8 * FloatRounding.MachineEpsilon))
                 : 2 * 3 * largest * largest * rayError / plane.Distance;
             spheres.Add(new HitSphere(offset, (float)r2, (float)(1 / (arithmetic + ray)), k + 1, DepthBound.Of(arithmetic + ray, sphere.Radius, largest)));
         }

@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
 
@@ -156,18 +155,21 @@ public sealed class ExactRenderer
 
     private static RenderStatistics Run(Scene scene, ImagePlane plane, RenderOptions options, bool sweep, Action<int, ExactRow> writeRow)
     {
-        var clock = Stopwatch.StartNew();
+        var loop = RowLoop.Start(options, plane.Height);
         OutlineSet outlines = OutlineSet.Build(scene, plane, parallel: options.Parallel);
-        (int first, int end) = options.Rows(plane.Height);
-        options.Progress?.Start(end - first);
-        Parallel.For(first, end, options.Parallel, () => new ExactRow(scene, plane, outlines, sweep), (row, _, worker) =>
+        loop.Run(new Rows(scene, plane, outlines, sweep, writeRow));
+        return loop.Finish(0, RenderKernel.Scalar);
+    }
+
+    /// <summary>The exact rows: each thread integrates rows with its own <see cref="ExactRow"/>, then writes them.</summary>
+    private sealed class Rows(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep, Action<int, ExactRow> writeRow) : IRowRenderer<ExactRow>
+    {
+        public ExactRow Rent() => new(scene, plane, outlines, sweep);
+
+        public void RenderRow(int row, ref ExactRow worker)
         {
             worker.Integrate(row);
             writeRow(row, worker);
-            options.Progress?.CompleteRow();
-            return worker;
-        }, static _ => { });
-        clock.Stop();
-        return new RenderStatistics(0, clock.Elapsed) { Kernel = RenderKernel.Scalar };
+        }
     }
 }

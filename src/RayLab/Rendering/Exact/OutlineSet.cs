@@ -77,19 +77,8 @@ internal sealed class OutlineSet
                     + "above 1e-4 of its radius (move the sphere or the camera, or use a point sampler)");
             }
 
-            double rounding = projection.RoundingInPixels(c, r);
-            if (!(rounding <= 1e-6))
-            {
-                string amount = rounding.ToString("G2", CultureInfo.InvariantCulture);
-                throw new UnsupportedSceneException(i, $"is seen at a zoom beyond double precision: rounding alone can move its picture by {amount} "
-                    + "pixels, and the exact sampler needs at most 1e-6 (widen the window, or move the camera closer to the sphere)");
-            }
-
-            if (kept.Count == MaxSpheresInView)
-            {
-                throw new UnsupportedSceneException(i, $"is one sphere more in view than the exact sampler draws: at most {MaxSpheresInView} "
-                    + "(its time grows with the crossings of their outlines; use a point sampler or the adaptive one)");
-            }
+            ThrowIfBeyondDoublePrecision(i, projection.RoundingInPixels(c, r));
+            ThrowIfOneTooMany(i, kept.Count);
 
             kept.Add((c, r));
             keptIndex.Add(i);
@@ -115,6 +104,25 @@ internal sealed class OutlineSet
         Outline[] inImage = outlines.Where(o => (o.Hx > 0 || o.Hy > 0)
             && o.Right >= 0 && o.Left <= plane.Width && o.Bottom >= 0 && o.Top <= plane.Height).ToArray();
         return new OutlineSet(inImage, withCrossings ? FindCrossings(inImage, plane.Height, parallel) : []);
+    }
+
+    private static void ThrowIfBeyondDoublePrecision(int sphere, double rounding)
+    {
+        if (!(rounding <= 1e-6))
+        {
+            string amount = rounding.ToString("G2", CultureInfo.InvariantCulture);
+            throw new UnsupportedSceneException(sphere, $"is seen at a zoom beyond double precision: rounding alone can move its picture by {amount} "
+                + "pixels, and the exact sampler needs at most 1e-6 (widen the window, or move the camera closer to the sphere)");
+        }
+    }
+
+    private static void ThrowIfOneTooMany(int sphere, int inView)
+    {
+        if (inView == MaxSpheresInView)
+        {
+            throw new UnsupportedSceneException(sphere, $"is one sphere more in view than the exact sampler draws: at most {MaxSpheresInView} "
+                + "(its time grows with the crossings of their outlines; use a point sampler or the adaptive one)");
+        }
     }
 
     /// <summary>

@@ -1,14 +1,13 @@
-using System.Diagnostics;
 using RayLab.Cameras;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Simd;
 
 namespace RayLab.Rendering.Point;
 
 /// <summary>
-/// The point-sampling renderer (lab section 4): a <see cref="Parallel.For(int, int, ParallelOptions, Action{int})"/>
-/// over rows (the lab's render loop), each pixel the mean of its samples, each row written straight into the
-/// image's row span. The SIMD packet kernel (<see cref="PacketKernel"/>) renders where the hardware and the
+/// The point-sampling renderer (lab section 4): rows on the <see cref="RowLoop"/> (the lab's render loop), each
+/// pixel the mean of its samples, each row written straight into the image's row span. The SIMD packet kernel (<see cref="PacketKernel"/>) renders where the hardware and the
 /// frame allow it, the scalar double loop (<see cref="RenderPixel(Scene, ImagePlane, IPixelSampler, int, int)"/>) everywhere else; each loop is
 /// compiled for the camera's projection (<see cref="IProjection"/>), chosen once per render. Every sample is
 /// independent of the thread that takes it, so the bytes are the same whatever the thread count.
@@ -21,17 +20,15 @@ internal static class PointRenderer
         (int first, int end) = options.Rows(image.Height);
         long rays = (long)image.Width * (end - first) * sampler.SamplesPerPixel;
         RenderKernel kernel = ChooseKernel(options.Kernel, scene, plane, out PacketFrame? frame, out string? reason);
-        options.Progress?.Start(end - first);
-        var clock = Stopwatch.StartNew();
+        var loop = RowLoop.Start(options, image.Height);
         long retraced = kernel switch
         {
-            RenderKernel.Vector512 => RenderPackets<Lanes512>(frame!, sampler, image, options),
-            RenderKernel.Vector256 => RenderPackets<Lanes256>(frame!, sampler, image, options),
-            RenderKernel.Vector128 => RenderPackets<Lanes128>(frame!, sampler, image, options),
-            _ => RenderScalar(scene, plane, sampler, image, options),
+            RenderKernel.Vector512 => RenderPackets<Lanes512>(frame!, sampler, image, loop),
+            RenderKernel.Vector256 => RenderPackets<Lanes256>(frame!, sampler, image, loop),
+            RenderKernel.Vector128 => RenderPackets<Lanes128>(frame!, sampler, image, loop),
+            _ => RenderScalar(scene, plane, sampler, image, loop),
         };
-        clock.Stop();
-        return new RenderStatistics(rays, clock.Elapsed) { Kernel = kernel, RetracedSamples = retraced, ScalarReason = reason };
+        return loop.Finish(rays, kernel, retraced, reason);
     }
 
     /// <summary>The kernel that renders: the one asked for, the widest native packet for Auto, or scalar when the frame needs double.</summary>
@@ -59,70 +56,81 @@ internal static class PointRenderer
         };
     }
 
-    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options) => plane.IsOrthographic
-        ? RenderScalar<OrthographicProjection>(scene, plane, sampler, image, options)
-        : RenderScalar<PerspectiveProjection>(scene, plane, sampler, image, options);
+    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RowLoop loop) => plane.IsOrthographic
+        ? RenderScalar<OrthographicProjection>(scene, plane, sampler, image, loop)
+        : RenderScalar<PerspectiveProjection>(scene, plane, sampler, image, loop);
 
-    private static long RenderScalar<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
+    private static long RenderScalar<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RowLoop loop)
         where TP : struct, IProjection
     {
-        (int first, int end) = options.Rows(image.Height);
-        Parallel.For(first, end, options.Parallel, row =>
+        loop.Run(new ScalarRows<TP>(scene, plane, sampler, image));
+        return 0;
+    }
+
+    private static long RenderPackets<TL>(PacketFrame frame, IPixelSampler sampler, Image image, RowLoop loop)
+        where TL : struct, ILanes<TL> => sampler switch
+        {
+            JitteredSampler jittered => RenderPackets<TL, JitteredLanes<TL>>(frame, () => new(jittered), sampler.SamplesPerPixel, image, loop),
+            RandomSampler random => RenderPackets<TL, RandomLanes<TL>>(frame, () => new(random), sampler.SamplesPerPixel, image, loop),
+            RegularSampler regular => RenderPackets<TL, RegularLanes<TL>>(frame, () => new(regular), sampler.SamplesPerPixel, image, loop),
+            SobolSampler sobol => RenderPackets<TL, SobolLanes<TL>>(frame, () => new(sobol), sampler.SamplesPerPixel, image, loop),
+            HammersleySampler hammersley => RenderPackets<TL, HammersleyLanes<TL>>(frame, () => new(hammersley), sampler.SamplesPerPixel, image, loop),
+            CorrelatedMultiJitteredSampler cmj when cmj.SamplesPerPixel <= PatternLimits.MaxSamples =>
+                RenderPackets<TL, CorrelatedMultiJitteredLanes<TL>>(frame, () => new(cmj), sampler.SamplesPerPixel, image, loop),
+            MultiJitteredSampler multiJittered when multiJittered.SamplesPerPixel <= PatternLimits.MaxSamples =>
+                RenderPackets<TL, MultiJitteredLanes<TL>>(frame, () => new(multiJittered), sampler.SamplesPerPixel, image, loop),
+            NRooksSampler nrooks when nrooks.SamplesPerPixel <= PatternLimits.MaxSamples =>
+                RenderPackets<TL, NRooksLanes<TL>>(frame, () => new(nrooks), sampler.SamplesPerPixel, image, loop),
+            _ => RenderPackets<TL, BufferedLanes<TL>>(frame, () => new(sampler), sampler.SamplesPerPixel, image, loop),
+        };
+
+    private static long RenderPackets<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RowLoop loop)
+        where TL : struct, ILanes<TL>
+        where TS : struct, ILaneSampler<TL> => frame.IsOrthographic
+            ? RenderPackets<TL, TS, OrthographicProjection>(frame, newSampler, samplesPerPixel, image, loop)
+            : RenderPackets<TL, TS, PerspectiveProjection>(frame, newSampler, samplesPerPixel, image, loop);
+
+    private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RowLoop loop)
+        where TL : struct, ILanes<TL>
+        where TS : struct, ILaneSampler<TL>
+        where TP : struct, IProjection => loop.Run(new PacketRows<TL, TS, TP>(frame, newSampler, samplesPerPixel, image)).Retraced;
+
+    /// <summary>The scalar double loop's rows: each pixel the mean of its samples.</summary>
+    private sealed class ScalarRows<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image) : IRowRenderer<NoScratch>
+        where TP : struct, IProjection
+    {
+        public NoScratch Rent() => default;
+
+        public void RenderRow(int row, ref NoScratch scratch)
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);
             for (int x = 0; x < pixels.Length; x++)
             {
                 pixels[x] = Rgb24.FromIntensity(RenderPixel<TP>(scene, plane, sampler, x, row));
             }
-
-            options.Progress?.CompleteRow();
-        });
-        return 0;
+        }
     }
 
-    private static long RenderPackets<TL>(PacketFrame frame, IPixelSampler sampler, Image image, RenderOptions options)
-        where TL : struct, ILanes<TL> => sampler switch
-        {
-            JitteredSampler jittered => RenderPackets<TL, JitteredLanes<TL>>(frame, () => new(jittered), sampler.SamplesPerPixel, image, options),
-            RandomSampler random => RenderPackets<TL, RandomLanes<TL>>(frame, () => new(random), sampler.SamplesPerPixel, image, options),
-            RegularSampler regular => RenderPackets<TL, RegularLanes<TL>>(frame, () => new(regular), sampler.SamplesPerPixel, image, options),
-            SobolSampler sobol => RenderPackets<TL, SobolLanes<TL>>(frame, () => new(sobol), sampler.SamplesPerPixel, image, options),
-            HammersleySampler hammersley => RenderPackets<TL, HammersleyLanes<TL>>(frame, () => new(hammersley), sampler.SamplesPerPixel, image, options),
-            CorrelatedMultiJitteredSampler cmj when cmj.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, CorrelatedMultiJitteredLanes<TL>>(frame, () => new(cmj), sampler.SamplesPerPixel, image, options),
-            MultiJitteredSampler multiJittered when multiJittered.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, MultiJitteredLanes<TL>>(frame, () => new(multiJittered), sampler.SamplesPerPixel, image, options),
-            NRooksSampler nrooks when nrooks.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, NRooksLanes<TL>>(frame, () => new(nrooks), sampler.SamplesPerPixel, image, options),
-            _ => RenderPackets<TL, BufferedLanes<TL>>(frame, () => new(sampler), sampler.SamplesPerPixel, image, options),
-        };
-
-    private static long RenderPackets<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RenderOptions options)
-        where TL : struct, ILanes<TL>
-        where TS : struct, ILaneSampler<TL> => frame.IsOrthographic
-            ? RenderPackets<TL, TS, OrthographicProjection>(frame, newSampler, samplesPerPixel, image, options)
-            : RenderPackets<TL, TS, PerspectiveProjection>(frame, newSampler, samplesPerPixel, image, options);
-
-    private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RenderOptions options)
+    /// <summary>The packet kernel's rows; each thread has its own lane sampler (the buffered one owns arrays).</summary>
+    private sealed class PacketRows<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image) : IRowRenderer<PacketRows<TL, TS, TP>.Scratch>
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
         where TP : struct, IProjection
     {
-        long retraced = 0;
-        (int first, int end) = options.Rows(image.Height);
-        // Each thread gets its own lane sampler (the buffered one owns arrays); rows are independent.
-        Parallel.For(first, end, options.Parallel, newSampler, (row, _, sampler) =>
-        {
-            int count = PacketKernel.RenderRow<TL, TS, TP>(frame, ref sampler, samplesPerPixel, row, image.GetRowSpan(row));
-            if (count != 0)
-            {
-                Interlocked.Add(ref retraced, count);
-            }
+        public Scratch Rent() => new() { Sampler = newSampler() };
 
-            options.Progress?.CompleteRow();
-            return sampler;
-        }, _ => { });
-        return retraced;
+        public void RenderRow(int row, ref Scratch scratch) =>
+            scratch.Retraced += PacketKernel.RenderRow<TL, TS, TP>(frame, ref scratch.Sampler, samplesPerPixel, row, image.GetRowSpan(row));
+
+        public void Return(Scratch scratch, ref RowTotals totals) => totals.Retraced += scratch.Retraced;
+
+        /// <summary>A thread's lane sampler and the samples it traced again in double.</summary>
+        public sealed class Scratch
+        {
+            public TS Sampler;
+
+            public long Retraced;
+        }
     }
 
     /// <summary>The mean of a pixel's samples, in linear intensity (before the 8-bit rule): the scalar double loop.</summary>

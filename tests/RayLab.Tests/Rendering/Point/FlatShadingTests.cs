@@ -1,7 +1,7 @@
 using RayLab.Cameras;
 using RayLab.Rendering.Exact;
-using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Simd;
 
 namespace RayLab.Tests.Rendering.Point;
 

@@ -1,6 +1,7 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
+using RayLab.Simd;
 
 namespace RayLab.Rendering.Point.Packets;
 

@@ -1,10 +1,8 @@
-using RayLab.Rendering.Point.Packets;
-
-namespace RayLab.Cameras;
+namespace RayLab.Simd;
 
 /// <summary>
 /// The image plane's window vectors a, b, c (section 3.2) and the orthographic direction −w, broadcast to
-/// every lane once per packet, for <see cref="IProjection.GetRays{TL}"/>.
+/// every lane once per packet, for <see cref="RayLab.Cameras.IProjection.GetRays{TL}"/>.
 /// </summary>
 /// <param name="A">The lab's a.</param>
 /// <param name="B">The lab's b.</param>

@@ -1,6 +1,4 @@
-using RayLab.Rendering.Point.Packets;
-
-namespace RayLab.Cameras;
+namespace RayLab.Simd;
 
 /// <summary>Three lane registers: a vector (x, y, z) per lane, as the packet form of a ray's origin or direction.</summary>
 /// <param name="X">x per lane.</param>

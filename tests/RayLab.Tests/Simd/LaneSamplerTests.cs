@@ -1,7 +1,7 @@
-using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Tests.Rendering.Point;
+namespace RayLab.Tests.Simd;
 
 /// <summary>
 /// The lane samplers of cmj, multijittered, nrooks, hammersley and sobol against the scalar samplers: every lane's

@@ -1,7 +1,7 @@
 using RayLab.Cameras;
 using RayLab.Geometry;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// One frame's constants for the packet kernel, in float: the window vectors a, b, c, and per sphere its
@@ -17,7 +17,7 @@ namespace RayLab.Rendering.Point.Packets;
 /// <para>
 /// The kernel tests each ray in float with the stable discriminant <c>Δ = r² − |f|²</c>,
 /// <c>f = (o − C) − ((o − C)·d / d·d) d</c> (Ray Tracing Gems, ch. 7). Its rounding error is below
-/// <c>32 ε (r² + |o − C|²)</c> with ε = 2⁻²³ (a generous multiple of the error analysis), so where
+/// <see cref="FloatRounding.DiscriminantError"/>, so where
 /// |Δ| exceeds that bound the float answer — hit or miss — is the exact one; only where it does not (rays
 /// within float resolution of a silhouette) is the sample traced again in double (Shewchuk's adaptive
 /// predicates: fast float with an error bound, exact fallback only where the bound is crossed).
@@ -35,9 +35,6 @@ namespace RayLab.Rendering.Point.Packets;
 /// </remarks>
 internal sealed class PacketFrame
 {
-    /// <summary>Twice float's unit roundoff.</summary>
-    private const double Epsilon = 1.0 / (1 << 23);
-
     /// <summary>The most (in pixels) that float rounding may move a ray's direction or origin: 1/50 pixel.</summary>
     private const double Resolution = 0.02;
 
@@ -62,7 +59,7 @@ internal sealed class PacketFrame
         {
             Sphere sphere = spheres[k];
             (Double3 offset, double largest) = OffsetOf(sphere, plane);
-            double bound = 32 * Epsilon * ((sphere.Radius * sphere.Radius) + (largest * largest));
+            double bound = FloatRounding.DiscriminantError(sphere.Radius, largest);
             Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(scene.ColourOf(kept[k])));
             depthBounds[k] = DepthBound.Of(bound, sphere.Radius, largest);
             reach[k] = 3e-3 * (sphere.Radius + largest);
@@ -204,7 +201,7 @@ internal sealed class PacketFrame
                 return false;
             }
 
-            if (plane.IsOrthographic && !(8 * Epsilon * largest <= Resolution * pixel))
+            if (plane.IsOrthographic && !(8 * FloatRounding.MachineEpsilon * largest <= Resolution * pixel))
             {
                 reason = $"float cannot resolve the ray origins a pixel apart near sphere {k}";
                 return false;
@@ -214,7 +211,7 @@ internal sealed class PacketFrame
         }
 
         double direction = plane.C.Length + plane.A.Length + plane.B.Length;
-        if (!plane.IsOrthographic && !(8 * Epsilon * direction <= Resolution * pixel))
+        if (!plane.IsOrthographic && !(8 * FloatRounding.MachineEpsilon * direction <= Resolution * pixel))
         {
             reason = "float cannot resolve the ray directions a pixel apart (field of view too narrow for the image size)";
             return false;

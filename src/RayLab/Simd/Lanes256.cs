@@ -1,8 +1,9 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using System.Runtime.Intrinsics.X86;
+using RayLab.Sampling;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>8 float lanes (AVX2). See <see cref="ILanes{TSelf}"/>.</summary>
 /// <param name="V">The register.</param>
@@ -98,9 +99,9 @@ internal readonly record struct Lanes256(Vector256<float> V) : ILanes<Lanes256>
     {
         Vector256<uint> x = bits.V.AsUInt32();
         x ^= x >>> 16;
-        x *= 0x7feb352du;
+        x *= CounterHash.Multiplier1;
         x ^= x >>> 15;
-        x *= 0x846ca68bu;
+        x *= CounterHash.Multiplier2;
         x ^= x >>> 16;
         return new(x.AsSingle());
     }

@@ -1,7 +1,7 @@
-using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Tests.Rendering.Point;
+namespace RayLab.Tests.Simd;
 
 /// <summary>
 /// The lane wrappers' operations that have a hardware shortcut (vrangeps for <c>MinAbs</c>, blends for <c>Select</c>) or feed the

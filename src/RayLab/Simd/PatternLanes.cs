@@ -4,7 +4,7 @@ using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using RayLab.Sampling;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// One of Kensler's permutations (<see cref="Permutation.PermutationElement"/>) per lane: the lane's pattern
@@ -27,9 +27,9 @@ internal struct LanePermutation<TL>
         _p8 = TL.ShiftRightBits(_p, 8);
         _p23 = TL.ShiftRightBits(_p, 23);
 
-        // The listing multiplies by 1 | (p ≫ 27) and then by 0x6935fa69; products modulo 2³² associate, so one
+        // The listing multiplies by 1 | (p ≫ 27) and then by Kensler.PermuteMultiplier3; products modulo 2³² associate, so one
         // multiplier per lane does both.
-        _multiplier = TL.MultiplyBits(TL.ShiftRightBits(_p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(0x6935fa69u));
+        _multiplier = TL.MultiplyBits(TL.ShiftRightBits(_p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(Kensler.PermuteMultiplier3));
 
         // The final rotation (v + p) mod l, with v < l, is v + (p mod l) less l if that reaches l: p mod l is
         // made here once per pixel, a mask when l is a power of two, else Lemire's multiply-only remainder.
@@ -120,20 +120,20 @@ internal struct LanePermutation<TL>
     private readonly TL Round(TL v, TL w)
     {
         v = TL.Xor(v, _p);
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0xe170893du));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier1));
         v = TL.Xor(v, _p16);
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 4));
         v = TL.Xor(v, _p8);
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0x0929eb3fu));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier2));
         v = TL.Xor(v, _p23);
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 1));
         v = TL.MultiplyBits(v, _multiplier);
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 11));
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0x74dcb303u));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier4));
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0x9e501cc3u));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier5));
         v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
-        v = TL.MultiplyBits(v, TL.BroadcastBits(0xc860a3dfu));
+        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier6));
         v &= w;
         return TL.Xor(v, TL.ShiftRightBits(v, 5));
     }
@@ -151,18 +151,12 @@ internal readonly struct LaneLength<TL>
     /// <param name="length">The permutation length.</param>
     public LaneLength(int length)
     {
-        uint w = (uint)length - 1;
-        w |= w >> 1;
-        w |= w >> 2;
-        w |= w >> 4;
-        w |= w >> 8;
-        w |= w >> 16;
         _length = (uint)length;
         _remainderMultiplier = unchecked((ulong.MaxValue / _length) + 1);
         IsPowerOfTwo = int.IsPow2(length);
         Length = TL.BroadcastBits((uint)length);
         Last = TL.BroadcastBits((uint)length - 1);
-        Mask = TL.BroadcastBits(w);
+        Mask = TL.BroadcastBits(Permutation.Mask((uint)length));
     }
 
     /// <summary>True when l is a power of two (p mod l is p and (l − 1)).</summary>
@@ -337,7 +331,7 @@ internal readonly struct ShiftFormula(double q) : IDoubleFormula
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector128<double> Apply(Vector128<double> a, Vector128<double> b, Vector128<double> c, Vector128<double> d)
     {
-        Vector128<double> v = Vector128.Create(_q) + (a * (1.0 / 16777216.0));
+        Vector128<double> v = Vector128.Create(_q) + (a * CounterHash.UnitStep);
         return Vector128.ConditionalSelect(Vector128.GreaterThanOrEqual(v, Vector128<double>.One), v - Vector128<double>.One, v);
     }
 
@@ -345,7 +339,7 @@ internal readonly struct ShiftFormula(double q) : IDoubleFormula
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector256<double> Apply(Vector256<double> a, Vector256<double> b, Vector256<double> c, Vector256<double> d)
     {
-        Vector256<double> v = Vector256.Create(_q) + (a * (1.0 / 16777216.0));
+        Vector256<double> v = Vector256.Create(_q) + (a * CounterHash.UnitStep);
         return Vector256.ConditionalSelect(Vector256.GreaterThanOrEqual(v, Vector256<double>.One), v - Vector256<double>.One, v);
     }
 
@@ -353,7 +347,7 @@ internal readonly struct ShiftFormula(double q) : IDoubleFormula
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector512<double> Apply(Vector512<double> a, Vector512<double> b, Vector512<double> c, Vector512<double> d)
     {
-        Vector512<double> v = Vector512.Create(_q) + (a * (1.0 / 16777216.0));
+        Vector512<double> v = Vector512.Create(_q) + (a * CounterHash.UnitStep);
         return Vector512.ConditionalSelect(Vector512.GreaterThanOrEqual(v, Vector512<double>.One), v - Vector512<double>.One, v);
     }
 }
@@ -392,8 +386,8 @@ internal struct NRooksLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     public void BeginPacket(int x0, int row)
     {
         _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
-        _columns.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(0xa511e9b3u)), _length, _scratch);
-        _rows.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(0x63d83595u)), _length, _scratch);
+        _columns.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(NRooksSampler.ColumnSalt)), _length, _scratch);
+        _rows.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(NRooksSampler.RowSalt)), _length, _scratch);
     }
 
     /// <inheritdoc />
@@ -451,8 +445,6 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
 {
     private readonly float[] _block = PointBlock.Create<TL>();
-    private const uint ColumnSalt = 0x2f5a1c37u;
-    private const uint RowSalt = 0xc13fa9a9u;
 
     private readonly uint _salt;
     private readonly int _n;
@@ -489,7 +481,7 @@ internal struct MultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     public void BeginPacket(int x0, int row)
     {
         _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
-        TL columnKeys = TL.Xor(_keys, TL.BroadcastBits(ColumnSalt)), rowKeys = TL.Xor(_keys, TL.BroadcastBits(RowSalt));
+        TL columnKeys = TL.Xor(_keys, TL.BroadcastBits(MultiJitteredSampler.ColumnSalt)), rowKeys = TL.Xor(_keys, TL.BroadcastBits(MultiJitteredSampler.RowSalt));
         for (int k = 0; k < _n; k++)
         {
             _columns[k].Set(LaneHash.SampleHash(columnKeys, k), _length, _scratch);
@@ -579,16 +571,15 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         _inverseColumns = TL.Broadcast(1f / sampler.Columns);
         _columnCount = TL.BroadcastBits((uint)sampler.Columns);
         _columnShift = BitOperations.Log2((uint)sampler.Columns);
-        const double Kensler = 1.0 / 4294967808.0;
-        _x = new WholeHashCellFormula(new CellFormula(Kensler, sampler.Rows, sampler.Columns));
-        _y = new WholeHashCellFormula(new CellFormula(Kensler, count, 1));
+        _x = new WholeHashCellFormula(new CellFormula(Kensler.RandFloatScale, sampler.Rows, sampler.Columns));
+        _y = new WholeHashCellFormula(new CellFormula(Kensler.RandFloatScale, count, 1));
 
         // 4, 16, 64, 256, 1024 … spp: N, m and n all powers of two, the cell formulas without a branch.
         _powersOfTwo = int.IsPow2(count) && int.IsPow2(sampler.Columns) && int.IsPow2(sampler.Rows);
         if (_powersOfTwo)
         {
-            _xPowerOfTwo = new PowerOfTwoCellFormula(Kensler, sampler.Rows, sampler.Columns);
-            _yPowerOfTwo = new PowerOfTwoCellFormula(Kensler, count, 1);
+            _xPowerOfTwo = new PowerOfTwoCellFormula(Kensler.RandFloatScale, sampler.Rows, sampler.Columns);
+            _yPowerOfTwo = new PowerOfTwoCellFormula(Kensler.RandFloatScale, count, 1);
         }
 
         // The column and row permutations have only m and n elements per pixel, where a pixel has N ≈ m·n samples:
@@ -609,18 +600,18 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
     public void BeginPacket(int x0, int row)
     {
         TL p = LaneHash.PixelKeys<TL>(x0, row, _salt);
-        _index.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x51633e2du)), _all, _scratch);
-        _column.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x68bc21ebu)), _columns, _scratch);
-        _row.Set(TL.MultiplyBits(p, TL.BroadcastBits(0x02e5be93u)), _rows, _scratch);
+        _index.Set(TL.MultiplyBits(p, TL.BroadcastBits(Kensler.IndexSalt)), _all, _scratch);
+        _column.Set(TL.MultiplyBits(p, TL.BroadcastBits(Kensler.ColumnSalt)), _columns, _scratch);
+        _row.Set(TL.MultiplyBits(p, TL.BroadcastBits(Kensler.RowSalt)), _rows, _scratch);
         if (_tabled)
         {
             (_columnsLow, _columnsHigh) = Tabulate(_column, _columns, _m);
             (_rowsLow, _rowsHigh) = Tabulate(_row, _rows, _n);
         }
 
-        _jx = TL.MultiplyBits(p, TL.BroadcastBits(0x967a889bu));
+        _jx = TL.MultiplyBits(p, TL.BroadcastBits(Kensler.JitterXSalt));
         _jxMultiplier = TL.ShiftRightBits(_jx, 18) | TL.BroadcastBits(1);
-        _jy = TL.MultiplyBits(p, TL.BroadcastBits(0x368cc8b7u));
+        _jy = TL.MultiplyBits(p, TL.BroadcastBits(Kensler.JitterYSalt));
         _jyMultiplier = TL.ShiftRightBits(_jy, 18) | TL.BroadcastBits(1);
     }
 
@@ -747,11 +738,11 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
         i = TL.Xor(i, p);
         i = TL.Xor(i, TL.ShiftRightBits(i, 17));
         i = TL.Xor(i, TL.ShiftRightBits(i, 10));
-        i = TL.MultiplyBits(i, TL.BroadcastBits(0xb36534e5u));
+        i = TL.MultiplyBits(i, TL.BroadcastBits(Kensler.RandFloatMultiplier1));
         i = TL.Xor(i, TL.ShiftRightBits(i, 12));
         i = TL.Xor(i, TL.ShiftRightBits(i, 21));
-        i = TL.MultiplyBits(i, TL.BroadcastBits(0x93fc4795u));
-        i = TL.Xor(i, TL.BroadcastBits(0xdf6e307fu));
+        i = TL.MultiplyBits(i, TL.BroadcastBits(Kensler.RandFloatMultiplier2));
+        i = TL.Xor(i, TL.BroadcastBits(Kensler.RandFloatXor));
         i = TL.Xor(i, TL.ShiftRightBits(i, 17));
         return TL.MultiplyBits(i, multiplier);
     }
@@ -764,7 +755,6 @@ internal struct CorrelatedMultiJitteredLanes<TL> : ILaneSampler<TL>, IStagedPoin
 internal struct HammersleyLanes<TL> : ILaneSampler<TL>
     where TL : struct, ILanes<TL>
 {
-    private const uint ShiftSalt = 0x68e31da4u;
 
     private readonly uint _salt;
     private readonly double[] _unshifted;
@@ -786,7 +776,7 @@ internal struct HammersleyLanes<TL> : ILaneSampler<TL>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void BeginPacket(int x0, int row)
     {
-        TL h1 = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(ShiftSalt)));
+        TL h1 = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(HammersleySampler.ShiftSalt)));
         _shiftX = TL.Top24(h1);
         _shiftY = TL.Top24(TL.Hash(h1));
     }
@@ -815,7 +805,6 @@ internal struct SobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
 {
     private readonly float[] _block = PointBlock.Create<TL>();
-    private const uint IndexSalt = 0x1b873593u;
 
     private readonly uint _salt;
     private TL _indexSeed, _xSeed, _ySeed;
@@ -827,7 +816,7 @@ internal struct SobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void BeginPacket(int x0, int row)
     {
-        _indexSeed = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(IndexSalt)));
+        _indexSeed = TL.Hash(TL.Xor(LaneHash.PixelKeys<TL>(x0, row, _salt), TL.BroadcastBits(SobolSampler.IndexSalt)));
         _xSeed = TL.Hash(_indexSeed);
         _ySeed = TL.Hash(_xSeed);
     }
@@ -872,10 +861,10 @@ internal struct SobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static TL LaineKarras(TL x)
     {
-        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0x6c50b47cu)));
-        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0xb82f1e52u)));
-        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0xc7afe638u)));
-        return TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(0x8d22f6e6u)));
+        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras1)));
+        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras2)));
+        x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras3)));
+        return TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras4)));
     }
 
     /// <summary>Bit j of the result is the XOR of the bits k ⊇ j of <paramref name="x"/>: <see cref="LowDiscrepancy.SobolDimension1"/> before its final reversal.</summary>

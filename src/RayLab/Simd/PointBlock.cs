@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// A lane sampler's point formula cut into stages that <see cref="PointBlock"/> runs one after another over a block

@@ -1,6 +1,6 @@
 using System.Runtime.Intrinsics;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// A SIMD register of float lanes, one lane per pixel of a packet: the operations the packet kernel needs,

@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
 using RayLab.Sampling;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// Where the samples of a packet's pixels go, lane by lane: sample <c>index</c> of pixels

@@ -2,7 +2,7 @@ using System.Runtime.CompilerServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// The scene's <see cref="SphereHierarchy"/> for one frame of the packet kernel: each box in float, as offsets

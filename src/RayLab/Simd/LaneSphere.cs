@@ -1,6 +1,7 @@
 using System.Runtime.CompilerServices;
+using RayLab.Geometry;
 
-namespace RayLab.Rendering.Point.Packets;
+namespace RayLab.Simd;
 
 /// <summary>
 /// One sphere against a packet of rays in float: the stable discriminant <c>Δ = r² − |f⊥|²</c>, <c>f⊥ = f − (f·d / d·d) d</c>
@@ -113,12 +114,10 @@ internal static class LaneSphere
 /// <param name="Rounding">16 ε (|o − C| + r), the largest |o − C| over the window (world units).</param>
 internal readonly record struct DepthBound(float Silhouette, float Rounding)
 {
-    private const double Epsilon = 1.0 / (1 << 23);
-
     /// <summary>The constants of a sphere of radius <paramref name="radius"/>, |o − C| ≤ <paramref name="largest"/>, Δ's error ≤ <paramref name="discBound"/>.</summary>
     /// <param name="discBound">B, the bound of Δ's error.</param>
     /// <param name="radius">The sphere's radius.</param>
     /// <param name="largest">The largest |o − C| over the window.</param>
     public static DepthBound Of(double discBound, double radius, double largest) =>
-        new((float)(2 * discBound * (1 + 1e-3)), (float)(16 * Epsilon * (largest + radius)));
+        new((float)(2 * discBound * (1 + 1e-3)), (float)(16 * FloatRounding.MachineEpsilon * (largest + radius)));
 }

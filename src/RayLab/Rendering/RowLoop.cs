@@ -1,0 +1,127 @@
+using System.Diagnostics;
+using System.Runtime.ExceptionServices;
+
+namespace RayLab.Rendering;
+
+/// <summary>
+/// A renderer as <see cref="RowLoop"/> sees it: rows cut into bands of a fixed height, a scratch for each thread,
+/// and one row at a time. A row's pixels must depend only on the row, never on which thread or scratch renders it,
+/// so the bytes are the same whatever the thread count.
+/// </summary>
+/// <typeparam name="TScratch">One thread's working space.</typeparam>
+internal interface IRowRenderer<TScratch>
+{
+    /// <summary>Rows per band (1 unless the renderer says otherwise): a band's rows go to one thread, top to bottom. Fixed by the renderer, never by the thread count.</summary>
+    int BandHeight => 1;
+
+    /// <summary>A thread's scratch, new or kept from an earlier render.</summary>
+    TScratch Rent();
+
+    /// <summary>Starts the band of rows <paramref name="first"/> to <paramref name="end"/> − 1 on this thread.</summary>
+    void BeginBand(int first, int end, ref TScratch scratch)
+    {
+    }
+
+    /// <summary>Renders row <paramref name="row"/> (0 at the top) with this thread's scratch.</summary>
+    void RenderRow(int row, ref TScratch scratch);
+
+    /// <summary>A thread is done: adds its counts to <paramref name="totals"/> (under the loop's lock) and keeps its scratch for reuse.</summary>
+    void Return(TScratch scratch, ref RowTotals totals)
+    {
+    }
+}
+
+/// <summary>The scratch of a renderer that needs none.</summary>
+internal readonly struct NoScratch;
+
+/// <summary>What the threads of one render counted: rays traced beyond the renderer's fixed count, and samples traced again in double.</summary>
+internal struct RowTotals
+{
+    /// <summary>Rays the threads traced.</summary>
+    public long Rays;
+
+    /// <summary>Samples whose float answer was uncertain and were traced again in double.</summary>
+    public long Retraced;
+}
+
+/// <summary>
+/// The one row loop every renderer runs on: it owns the clock, the threads (at most
+/// <see cref="RenderOptions.MaxDegreeOfParallelism"/>), the band order, the progress count, the cancellation check
+/// before each row, each thread's scratch and the <see cref="RenderStatistics"/>. A renderer supplies only "render
+/// this row with this scratch" (<see cref="IRowRenderer{TScratch}"/>). Start the loop before the renderer's
+/// per-frame set-up, so the set-up is timed too.
+/// </summary>
+internal readonly struct RowLoop
+{
+    private readonly RenderOptions _options;
+    private readonly int _rows;
+    private readonly long _started;
+
+    private RowLoop(RenderOptions options, int rows)
+    {
+        _options = options;
+        _rows = rows;
+        (int first, int end) = options.Rows(rows);
+        options.Progress?.Start(end - first);
+        _started = Stopwatch.GetTimestamp();
+    }
+
+    /// <summary>Starts the clock and the progress count for a render of <paramref name="rows"/> rows.</summary>
+    public static RowLoop Start(RenderOptions options, int rows) => new(options, rows);
+
+    /// <summary>
+    /// Renders every row: bands of <see cref="IRowRenderer{TScratch}.BandHeight"/> rows in parallel, each band's rows in
+    /// order on one thread, the token checked before each row. A renderer's own exception is rethrown as it was thrown.
+    /// </summary>
+    /// <returns>What the threads counted.</returns>
+    /// <exception cref="OperationCanceledException">The render was cancelled.</exception>
+    public RowTotals Run<TScratch>(IRowRenderer<TScratch> renderer)
+    {
+        var totals = new RowTotals();
+        var gate = new Lock();
+        int band = renderer.BandHeight;
+        // The rows this render fills (all, or Renderer.RenderRows' band), in the renderer's bands as a whole render cuts them.
+        (int start, int stop) = _options.Rows(_rows);
+        int firstBand = start / band;
+        RenderProgress? progress = _options.Progress;
+        CancellationToken token = _options.CancellationToken;
+        var parallel = new ParallelOptions { MaxDegreeOfParallelism = _options.MaxDegreeOfParallelism, CancellationToken = token };
+        try
+        {
+            Parallel.For(firstBand, stop > start ? ((stop + band - 1) / band) : firstBand, parallel, renderer.Rent, (b, _, scratch) =>
+            {
+                int first = Math.Max(start, b * band), end = Math.Min(stop, (b + 1) * band);
+                renderer.BeginBand(first, end, ref scratch);
+                for (int row = first; row < end && !token.IsCancellationRequested; row++)
+                {
+                    renderer.RenderRow(row, ref scratch);
+                    progress?.CompleteRow();
+                }
+
+                return scratch;
+            }, scratch =>
+            {
+                lock (gate)
+                {
+                    renderer.Return(scratch, ref totals);
+                }
+            });
+        }
+        catch (AggregateException e) when (e.InnerExceptions.Count == 1)
+        {
+            // The renderer's own exception (a pixel method's point outside the pixel, say), not Parallel.For's wrapper.
+            ExceptionDispatchInfo.Capture(e.InnerExceptions[0]).Throw();
+        }
+
+        token.ThrowIfCancellationRequested();
+        return totals;
+    }
+
+    /// <summary>Stops the clock: the render's statistics.</summary>
+    /// <param name="rays">Primary rays traced.</param>
+    /// <param name="kernel">The loop that rendered.</param>
+    /// <param name="retraced">Samples traced again in double.</param>
+    /// <param name="scalarReason">Why an auto render took the scalar path, or null.</param>
+    public RenderStatistics Finish(long rays, RenderKernel kernel, long retraced = 0, string? scalarReason = null) =>
+        new(rays, Stopwatch.GetElapsedTime(_started)) { Kernel = kernel, RetracedSamples = retraced, ScalarReason = scalarReason };
+}
