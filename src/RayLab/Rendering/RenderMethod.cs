@@ -53,6 +53,13 @@ public abstract class RenderMethod
     /// <summary>Renders into <paramref name="image"/>; fills <paramref name="raysPerPixel"/> (if given) with the rays charged to each pixel.</summary>
     internal abstract RenderStatistics Render(Scene scene, ImagePlane plane, Image image, RenderOptions options, float[]? raysPerPixel);
 
+    /// <summary>The entries of <paramref name="raysPerPixel"/> for the rows this render fills (empty when it is null).</summary>
+    private static Span<float> RowsOf(float[]? raysPerPixel, Image image, RenderOptions options)
+    {
+        (int first, int end) = options.Rows(image.Height);
+        return raysPerPixel is null ? default : raysPerPixel.AsSpan(first * image.Width, (end - first) * image.Width);
+    }
+
     private sealed class SampledMethod(IPixelSampler sampler) : RenderMethod
     {
         public override string Name => sampler.Name;
@@ -64,7 +71,7 @@ public abstract class RenderMethod
         internal override RenderStatistics Render(Scene scene, ImagePlane plane, Image image, RenderOptions options, float[]? raysPerPixel)
         {
             RenderStatistics stats = PointRenderer.Render(scene, plane, sampler, image, options);
-            raysPerPixel?.AsSpan().Fill(sampler.SamplesPerPixel);
+            RowsOf(raysPerPixel, image, options).Fill(sampler.SamplesPerPixel);
             return stats;
         }
     }
@@ -98,7 +105,7 @@ public abstract class RenderMethod
         internal override RenderStatistics Render(Scene scene, ImagePlane plane, Image image, RenderOptions options, float[]? raysPerPixel)
         {
             RenderStatistics stats = ExactRenderer.RenderPlane(scene, plane, image, options);
-            raysPerPixel?.AsSpan().Clear();
+            RowsOf(raysPerPixel, image, options).Clear();
             return stats;
         }
     }

@@ -12,6 +12,15 @@ namespace RayLab.Rendering;
 internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, RenderKernel Kernel, RenderProgress? Progress, CancellationToken CancellationToken,
     ScratchPool? Pool = null)
 {
+    /// <summary>The first row to render, 0 the top (<see cref="Renderer.RenderRows"/>).</summary>
+    public int FirstRow { get; init; }
+
+    /// <summary>One past the last row to render; <see cref="int.MaxValue"/> for every row to the bottom.</summary>
+    public int EndRow { get; init; } = int.MaxValue;
+
+    /// <summary>The rows [Start, End) of an image <paramref name="height"/> rows tall that this render fills.</summary>
+    public (int Start, int End) Rows(int height) => (Math.Min(FirstRow, height), Math.Min(EndRow, height));
+
     /// <summary>A kept <typeparamref name="T"/> from <see cref="Pool"/>, or a new one.</summary>
     public T Rent<T>()
         where T : class, new() => Pool is null ? new T() : Pool.Rent<T>();

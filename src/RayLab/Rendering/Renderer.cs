@@ -67,7 +67,10 @@ public sealed class Renderer
     /// <returns>Rays traced, render time and the kernel that ran.</returns>
     /// <exception cref="ArgumentException">The camera's settings do not form a valid view (see <see cref="Camera.GetImagePlane"/>), or <paramref name="raysPerPixel"/> has the wrong length.</exception>
     /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
-    public RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, Image image, float[]? raysPerPixel = null)
+    public RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, Image image, float[]? raysPerPixel = null) =>
+        Render(scene, camera, method, image, raysPerPixel, Options);
+
+    private static RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, Image image, float[]? raysPerPixel, RenderOptions options)
     {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
@@ -79,7 +82,36 @@ public sealed class Renderer
         }
 
         ImagePlane plane = camera.GetImagePlane(image.Width, image.Height);
-        return method.Render(scene, plane, image, Options, raysPerPixel);
+        return method.Render(scene, plane, image, options, raysPerPixel);
+    }
+
+    /// <summary>
+    /// Renders rows <paramref name="firstRow"/> to <paramref name="firstRow"/> + <paramref name="rowCount"/> − 1 of
+    /// <paramref name="image"/> and leaves the others as they are: a band of the picture, for a caller that shows
+    /// progress or yields between bands (the browser playground, which has one thread). A pixel's value does not
+    /// depend on the rows rendered with it, so bands rendered one after another give the bytes of one
+    /// <see cref="Render(Scene, Camera, RenderMethod, Image, float[])"/>. The statistics count the band's rays for
+    /// point sampling and pixel methods; adaptive's count the whole image's pixel corners (the band's rays per pixel
+    /// are exact: sum <paramref name="raysPerPixel"/> for the band's cost).
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="method">Point sampling, adaptive, a pixel method of your own, or exact.</param>
+    /// <param name="image">The whole image; its size sets the camera's window.</param>
+    /// <param name="firstRow">The band's first row, 0 the top.</param>
+    /// <param name="rowCount">How many rows the band has (0 renders nothing).</param>
+    /// <param name="raysPerPixel">Optional, W·H long: receives the rays charged to each pixel of the band.</param>
+    /// <returns>The band's rays, render time and the kernel that ran.</returns>
+    /// <exception cref="ArgumentOutOfRangeException">The band does not lie inside the image.</exception>
+    /// <exception cref="ArgumentException">The camera's settings do not form a valid view, or <paramref name="raysPerPixel"/> has the wrong length.</exception>
+    /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
+    public RenderStatistics RenderRows(Scene scene, Camera camera, RenderMethod method, Image image, int firstRow, int rowCount, float[]? raysPerPixel = null)
+    {
+        ArgumentNullException.ThrowIfNull(image);
+        ArgumentOutOfRangeException.ThrowIfNegative(firstRow);
+        ArgumentOutOfRangeException.ThrowIfNegative(rowCount);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(rowCount, image.Height - firstRow);
+        return Render(scene, camera, method, image, raysPerPixel, Options with { FirstRow = firstRow, EndRow = firstRow + rowCount });
     }
 
     /// <summary>Renders <paramref name="scene"/> into <paramref name="image"/> with a point sampler.</summary>

@@ -61,7 +61,8 @@ internal readonly struct RowLoop
     {
         _options = options;
         _rows = rows;
-        options.Progress?.Start(rows);
+        (int first, int end) = options.Rows(rows);
+        options.Progress?.Start(end - first);
         _started = Stopwatch.GetTimestamp();
     }
 
@@ -78,15 +79,18 @@ internal readonly struct RowLoop
     {
         var totals = new RowTotals();
         var gate = new Lock();
-        int rows = _rows, band = renderer.BandHeight;
+        int band = renderer.BandHeight;
+        // The rows this render fills (all, or Renderer.RenderRows' band), in the renderer's bands as a whole render cuts them.
+        (int start, int stop) = _options.Rows(_rows);
+        int firstBand = start / band;
         RenderProgress? progress = _options.Progress;
         CancellationToken token = _options.CancellationToken;
         var parallel = new ParallelOptions { MaxDegreeOfParallelism = _options.MaxDegreeOfParallelism, CancellationToken = token };
         try
         {
-            Parallel.For(0, (rows + band - 1) / band, parallel, renderer.Rent, (b, _, scratch) =>
+            Parallel.For(firstBand, stop > start ? ((stop + band - 1) / band) : firstBand, parallel, renderer.Rent, (b, _, scratch) =>
             {
-                int first = b * band, end = Math.Min(rows, first + band);
+                int first = Math.Max(start, b * band), end = Math.Min(stop, (b + 1) * band);
                 renderer.BeginBand(first, end, ref scratch);
                 for (int row = first; row < end && !token.IsCancellationRequested; row++)
                 {

@@ -17,7 +17,8 @@ internal static class PointRenderer
     /// <summary>Renders the scene with <paramref name="sampler"/> into <paramref name="image"/>.</summary>
     public static RenderStatistics Render(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
     {
-        long rays = (long)image.Width * image.Height * sampler.SamplesPerPixel;
+        (int first, int end) = options.Rows(image.Height);
+        long rays = (long)image.Width * (end - first) * sampler.SamplesPerPixel;
         RenderKernel kernel = KernelChoice.Choose(options.Kernel, scene, plane, out PacketFrame? frame, out string? reason);
         var loop = RowLoop.Start(options, image.Height);
         long retraced = kernel switch

@@ -1,0 +1,568 @@
+using System.Diagnostics;
+using System.Globalization;
+using System.Reflection;
+using Microsoft.AspNetCore.Components;
+using Microsoft.JSInterop;
+using RayLab.Cameras;
+using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Exact;
+using RayLab.Sampling;
+using RayLab.Scenes;
+using RayLab.Web.Lab;
+
+namespace RayLab.Web;
+
+/// <summary>
+/// The playground page: the scene, camera and method on the left, the picture in the middle, the pixel inspector and
+/// the error-against-time chart on the right. Every render goes through the library's public API on the page's one
+/// thread; a camera move shows an exact preview at a reduced size, and the full render that follows runs in row bands
+/// that yield to the browser, cancelled by the next move.
+/// </summary>
+public sealed partial class Playground : IDisposable
+{
+    [Inject]
+    private NavigationManager Navigation { get; set; } = default!;
+
+    [Inject]
+    private IJSRuntime JS { get; set; } = default!;
+
+    private LabState _state = LabState.FromPreset(Presets.Names[0]);
+    private string _editorText = "";
+    private string? _editorError;
+    private string? _error;
+    private string _status = "loading";
+    private int _frames;
+    private Frame? _frame;
+    private Inspection? _inspection;
+    private PreparedScene? _prepared;
+    private ImagePlane? _plane;
+    private double? _previewMs;
+    private double _previewScale = 0.5;
+    private double _longestGap;
+    private double? _firstMs;
+    private double? _startMs;
+    private double? _firstBandMs;
+    private readonly List<Trial> _trials = [];
+    private IJSInProcessObjectReference? _module;
+    private DotNetObjectReference<Playground>? _self;
+    private CancellationTokenSource? _cancel;
+    private (string Key, Image Image)? _exact;
+    private (string Key, Intensity[] Linear)? _exactLinear;
+
+    /// <summary>The RayLab version the page runs (the core assembly's informational version).</summary>
+    private static string Version { get; } =
+        typeof(Scene).Assembly.GetCustomAttribute<AssemblyInformationalVersionAttribute>()?.InformationalVersion.Split('+')[0] ?? "unknown";
+
+    private static readonly Renderer OneThread = new() { MaxDegreeOfParallelism = 1 };
+
+    protected override void OnInitialized()
+    {
+        _state = LabState.FromQuery(new Uri(Navigation.Uri).Query);
+        _editorText = _state.SceneText;
+        Prepare();
+    }
+
+    protected override async Task OnAfterRenderAsync(bool firstRender)
+    {
+        if (!firstRender)
+        {
+            return;
+        }
+
+        _module = await JS.InvokeAsync<IJSInProcessObjectReference>("import", "./js/raylab.js");
+        _startMs = _module.Invoke<double>("now");
+        _self = DotNetObjectReference.Create(this);
+        _module.InvokeVoid("attach", "view", _self);
+        await RenderFullAsync();
+    }
+
+    /// <summary>Checks the state with the library (SceneDescription.Prepare); a problem becomes the page's error line.</summary>
+    private bool Prepare()
+    {
+        try
+        {
+            if (OwnMethods.IsOwn(_state.Sampler.Type))
+            {
+                // The library checks everything but the method, which is the sample project's.
+                RenderMethod own = OwnMethods.Create(_state.Sampler);
+                _prepared = (_state with { Sampler = SamplerSettings.Default }).Describe().Prepare() with { Method = own };
+            }
+            else
+            {
+                _prepared = _state.Describe().Prepare();
+            }
+
+            _plane = _prepared.Camera.GetImagePlane(_state.Width, _state.Height);
+            _error = null;
+            return true;
+        }
+        catch (SceneFileException e)
+        {
+            _error = e.Message;
+            return false;
+        }
+        catch (ArgumentOutOfRangeException e)
+        {
+            _error = new SceneFileException(_state.Source, "sampler.samples", e.Message.Split('(')[0].Trim()).Message;
+            return false;
+        }
+    }
+
+    /// <summary>A key for everything the exact picture depends on: scene, camera and size.</summary>
+    private string ExactKey => $"{_state.SceneText.GetHashCode(StringComparison.Ordinal)}|{_state.Camera}|{_state.Width}x{_state.Height}";
+
+    /// <summary>
+    /// Renders the current state at full size in row bands, yielding to the browser between bands, then the exact picture
+    /// (cached per view) for the error; a new move or setting cancels it.
+    /// </summary>
+    private async Task RenderFullAsync()
+    {
+        CancellationTokenSource cancel = Restart();
+        if (!Prepare())
+        {
+            _status = "error";
+            StateHasChanged();
+            return;
+        }
+
+        PreparedScene prepared = _prepared!;
+        _module?.Invoke<double>("longestFrameGap");
+        _status = "rendering";
+        StateHasChanged();
+        try
+        {
+            await Task.Delay(1, cancel.Token);
+            var clock = Stopwatch.StartNew();
+            var image = new Image(_state.Width, _state.Height);
+            var rays = new float[image.Width * image.Height];
+            RenderStatistics stats = await RenderInBandsAsync(prepared.Scene, prepared.Camera, prepared.Method, image, rays, _state.View == "picture", cancel.Token);
+            double wall = clock.Elapsed.TotalMilliseconds;
+            Paint(image.PixelBytes.ToArray(), image.Width, image.Height);
+            _firstMs ??= _module?.Invoke<double>("now");
+            await Task.Delay(1, cancel.Token);
+            string key = ExactKey;
+            Image exact;
+            if (prepared.IsExact)
+            {
+                exact = image;
+            }
+            else if (_exact is (string k, Image cached) && k == key)
+            {
+                exact = cached;
+            }
+            else
+            {
+                exact = new Image(image.Width, image.Height);
+                await RenderInBandsAsync(prepared.Scene, prepared.Camera, RenderMethod.Exact, exact, null, false, cancel.Token);
+            }
+
+            _exact = (key, exact);
+            ImageError error = ImageError.Measure(image, exact);
+            _frame = new Frame(image, rays, exact, stats, wall, error, prepared.SamplerDescription);
+            _trials.Add(new Trial(prepared.SamplerDescription, prepared.SamplerName, stats.RenderTime.TotalMilliseconds, error.Rmse));
+            if (_state.View != "picture")
+            {
+                PaintView();
+            }
+
+            if (_state.Pick is (int px, int py))
+            {
+                Inspect(px, py);
+            }
+
+            _longestGap = _module?.Invoke<double>("longestFrameGap") ?? 0;
+            _frames++;
+            _status = "ready";
+            UpdateUrl();
+            StateHasChanged();
+        }
+        catch (OperationCanceledException)
+        {
+            // A newer render took over.
+        }
+        catch (ArgumentException e)
+        {
+            // What the scene check does not catch, e.g. a scene the exact reference cannot take: a message, the page stays.
+            _error = SceneFileException.OneLine(e.Message);
+            _status = "error";
+            StateHasChanged();
+        }
+    }
+
+    /// <summary>Cancels the render under way and returns the source for the next one.</summary>
+    private CancellationTokenSource Restart()
+    {
+        _cancel?.Cancel();
+        _cancel?.Dispose();
+        _cancel = new CancellationTokenSource();
+        return _cancel;
+    }
+
+    /// <summary>
+    /// Renders <paramref name="image"/> a band of rows at a time (<see cref="Renderer.RenderRows"/>), yielding to the
+    /// browser between bands so that input is never blocked for longer than a band; each band's rows are painted as
+    /// they come when <paramref name="paint"/> is set. The band height follows the measured speed, aiming at
+    /// <see cref="BandMilliseconds"/> a band.
+    /// </summary>
+    private async Task<RenderStatistics> RenderInBandsAsync(Scene scene, Camera camera, RenderMethod method, Image image, float[]? rays, bool paint, CancellationToken cancel)
+    {
+        var renderer = new Renderer { MaxDegreeOfParallelism = 1, CancellationToken = cancel, Kernel = _state.Kernel };
+        long primary = 0;
+        TimeSpan time = default;
+        RenderKernel kernel = RenderKernel.Scalar;
+        // Two rows first: the first band of a method pays for the interpreter's first calls, measured at 0.5-1.7 s for 8 rows.
+        int rows = _bandRows.GetValueOrDefault(method.Name, 2);
+        for (int first = 0; first < image.Height;)
+        {
+            int count = Math.Min(rows, image.Height - first);
+            RenderStatistics band = renderer.RenderRows(scene, camera, method, image, first, count, rays);
+            primary += band.PrimaryRays;
+            time += band.RenderTime;
+            kernel = band.Kernel;
+            if (paint)
+            {
+                _module?.InvokeVoid("paintRows", "view", image.PixelBytes.Slice(first * image.Width * 3, count * image.Width * 3).ToArray(), image.Width, first);
+                _firstBandMs ??= _module?.Invoke<double>("now");
+            }
+
+            first += count;
+            rows = Math.Clamp((int)(count * BandMilliseconds / Math.Max(band.RenderTime.TotalMilliseconds, 0.5)), 1, image.Height);
+            await Task.Delay(1, cancel);
+        }
+
+        _bandRows[method.Name] = rows;
+        // Adaptive bands each count the whole image's pixel corners: the rays charged to the pixels are the cost.
+        if (rays is not null && method.Name == "adaptive")
+        {
+            primary = (long)Math.Round(rays.Sum(r => (double)r));
+        }
+
+        return new RenderStatistics(primary, time) { Kernel = kernel };
+    }
+
+    /// <summary>What one band of a full render aims to take: short enough for input and painting to go on between bands.</summary>
+    private const double BandMilliseconds = 40;
+
+    private readonly Dictionary<string, int> _bandRows = [];
+
+    /// <summary>A camera move from the pointer: an exact preview at a reduced size, sized to stay near 30 ms.</summary>
+    [JSInvokable]
+    public async Task Move(double dx, double dy, double zoom)
+    {
+        Restart();
+        CameraSettings camera = Orbit.Rotate(_state.Camera, dx * Orbit.RadiansPerPixel, dy * Orbit.RadiansPerPixel);
+        if (zoom != 1)
+        {
+            camera = Orbit.Zoom(camera, zoom);
+        }
+
+        _state = _state with { Camera = camera };
+        if (!Prepare())
+        {
+            _status = "error";
+            StateHasChanged();
+            return;
+        }
+
+        int w = Math.Max(1, (int)(_state.Width * _previewScale)), h = Math.Max(1, (int)(_state.Height * _previewScale));
+        var preview = new Image(w, h);
+        var clock = Stopwatch.StartNew();
+        try
+        {
+            OneThread.Render(_prepared!.Scene, _prepared.Camera, PreviewMethod(), preview);
+        }
+        catch (ArgumentException e)
+        {
+            _error = SceneFileException.OneLine(e.Message);
+            StateHasChanged();
+            return;
+        }
+
+        _module?.InvokeVoid("paintPreview", "view", preview.PixelBytes.ToArray(), w, h, _state.Width, _state.Height);
+        double ms = clock.Elapsed.TotalMilliseconds;
+        _previewMs = ms;
+        // Keep the preview near 30 ms: its pixel count scales with the square of the scale.
+        _previewScale = Math.Clamp(_previewScale * Math.Sqrt(30 / Math.Max(ms, 1)), 0.15, 1);
+        _status = "preview";
+        StateHasChanged();
+        await Task.Yield();
+    }
+
+    /// <summary>The exact picture, or one ray per pixel for a scene the exact reference cannot take.</summary>
+    private RenderMethod PreviewMethod()
+    {
+        try
+        {
+            ExactRenderer.Check(_prepared!.Scene, _prepared.Camera, _state.Width, _state.Height);
+            return RenderMethod.Exact;
+        }
+        catch (UnsupportedSceneException)
+        {
+            return RenderMethod.Sampled(new RegularSampler(1));
+        }
+    }
+
+    /// <summary>The pointer let go (or the wheel stopped): the full render, and the URL follows the camera.</summary>
+    [JSInvokable]
+    public async Task MoveEnd()
+    {
+        UpdateUrl();
+        await RenderFullAsync();
+    }
+
+    /// <summary>A click on the picture: the pixel inspector shows that pixel.</summary>
+    [JSInvokable]
+    public void Pick(int x, int y)
+    {
+        if (x < 0 || y < 0 || x >= _state.Width || y >= _state.Height)
+        {
+            return;
+        }
+
+        _state = _state with { Pick = (x, y) };
+        try
+        {
+            Inspect(x, y);
+        }
+        catch (ArgumentException e)
+        {
+            _inspection = null;
+            _error = SceneFileException.OneLine(e.Message);
+        }
+
+        UpdateUrl();
+        StateHasChanged();
+    }
+
+    /// <summary>Fills the inspector for pixel (<paramref name="x"/>, <paramref name="y"/>) with the current method's points.</summary>
+    private void Inspect(int x, int y)
+    {
+        if (_prepared is null || _plane is null || _frame is null)
+        {
+            return;
+        }
+
+        Scene scene = _prepared.Scene;
+        ImagePlane plane = _plane;
+        SamplerSettings settings = _state.Sampler;
+        Rgb24 rendered = _frame.Picture.GetPixel(x, y);
+        string inside = InsideDataUrl(scene, plane, x, y);
+        if (settings.IsAdaptive)
+        {
+            AdaptiveDiagram d = AdaptiveDiagram.Trace(scene, _prepared.Camera, _state.Width, _state.Height, settings.CreateAdaptive(), x, y);
+            _inspection = new Inspection(x, y, _prepared.SamplerDescription,
+                [.. d.Points.Select(p => new InspectedPoint(p.Label, p.X, p.Y, p.Value, p.Weight))], d.Squares, d.Value, d.Exact, rendered, inside);
+            return;
+        }
+
+        Intensity exact = ExactLinear()[((long)y * _state.Width) + x];
+        if (settings.IsExact)
+        {
+            _inspection = new Inspection(x, y, "exact", [], [], exact, exact, rendered, inside);
+            return;
+        }
+
+        if (OwnMethods.IsOwn(settings.Type) && OwnMethods.Sampler(settings) is null)
+        {
+            // Mitchell's method decides its points pixel by pixel: the inspector shows its value only.
+            var level = new Intensity(rendered.R / 255.0, rendered.G / 255.0, rendered.B / 255.0);
+            _inspection = new Inspection(x, y, _prepared.SamplerDescription, [], [], level, exact, rendered, inside);
+            return;
+        }
+
+        IPixelSampler sampler = OwnMethods.Sampler(settings) ?? settings.CreateSampler();
+        var samples = new SamplePoint[sampler.SamplesPerPixel];
+        sampler.GetSamples(x, y, samples);
+        double weight = 1.0 / samples.Length;
+        InspectedPoint[] points = [.. samples.Select((s, i) => new InspectedPoint(
+            (i + 1).ToString(CultureInfo.InvariantCulture), s.X, s.Y, scene.Trace(plane.GetPixelRay(x, y, s.X, s.Y), plane.TMin, plane.TMax), weight))];
+        Intensity value = Renderer.RenderPixel(scene, plane, sampler, x, y);
+        _inspection = new Inspection(x, y, _prepared.SamplerDescription, points, [], value, exact, rendered, inside);
+    }
+
+    /// <summary>The exact picture's linear values for the current view (cached: one exact render per view).</summary>
+    private Intensity[] ExactLinear()
+    {
+        string key = ExactKey;
+        if (_exactLinear is not (string k, Intensity[] linear) || k != key)
+        {
+            linear = new ExactRenderer { MaxDegreeOfParallelism = 1 }.RenderLinear(_prepared!.Scene, _prepared.Camera, _state.Width, _state.Height);
+            _exactLinear = (key, linear);
+        }
+
+        return linear;
+    }
+
+    /// <summary>What lies inside the pixel, traced at 24×24 points, as a PNG data URL for the inspector's background.</summary>
+    private static string InsideDataUrl(Scene scene, ImagePlane plane, int x, int y)
+    {
+        const int n = 24;
+        var inside = new Image(n, n);
+        for (int j = 0; j < n; j++)
+        {
+            for (int i = 0; i < n; i++)
+            {
+                inside.SetPixel(i, j, scene.Trace(plane.GetPixelRay(x, y, (i + 0.5) / n, (j + 0.5) / n), plane.TMin, plane.TMax));
+            }
+        }
+
+        using var png = new MemoryStream();
+        inside.Save(png, ImageFormat.Png);
+        return "data:image/png;base64," + Convert.ToBase64String(png.ToArray());
+    }
+
+    /// <summary>Paints the current view (picture, rays per pixel or error) of the last full frame.</summary>
+    private void PaintView()
+    {
+        if (_frame is not Frame f)
+        {
+            return;
+        }
+
+        switch (_state.View)
+        {
+            case "rays":
+                Paint(ColourMap.Paint(f.Rays, RaysMax), f.Picture.Width, f.Picture.Height);
+                break;
+            case "error":
+                Paint(ColourMap.Paint(ImageError.PerPixel(f.Picture, f.Exact), ErrorMax), f.Picture.Width, f.Picture.Height);
+                break;
+            default:
+                Paint(f.Picture.PixelBytes.ToArray(), f.Picture.Width, f.Picture.Height);
+                break;
+        }
+    }
+
+    private double RaysMax => _frame is null || _frame.Rays.Length == 0 ? 1 : Math.Max(1, _frame.Rays.Max());
+
+    private double ErrorMax => _frame is null ? 1 : Math.Max(1, _frame.Error.Max);
+
+    private void Paint(byte[] rgb, int width, int height) => _module?.InvokeVoid("paint", "view", rgb, width, height);
+
+    private void UpdateUrl()
+    {
+        string url = Navigation.BaseUri + "?" + _state.ToQuery();
+        if (url != Navigation.Uri)
+        {
+            Navigation.NavigateTo(url, forceLoad: false, replace: true);
+        }
+    }
+
+    /// <summary>Applies a change from a control, then renders.</summary>
+    private async Task Change(Func<LabState, LabState> change)
+    {
+        _state = change(_state);
+        await RenderFullAsync();
+    }
+
+    private async Task SetView(string view)
+    {
+        _state = _state with { View = view };
+        PaintView();
+        UpdateUrl();
+        await Task.CompletedTask;
+    }
+
+    private async Task LoadPreset(string preset)
+    {
+        LabState fresh = LabState.FromPreset(preset, _state.Width, _state.Height);
+        _editorText = fresh.SceneText;
+        _editorError = null;
+        _exact = null;
+        await Change(_ => fresh with { View = _state.View });
+    }
+
+    /// <summary>The editor's Apply: the library parses and checks the text; its message is shown, and the last good scene stays.</summary>
+    private async Task ApplyEditor()
+    {
+        try
+        {
+            SceneDescription file = SceneFile.Parse(_editorText, "editor");
+            file.Prepare();
+            _editorError = null;
+            _exact = null;
+            await Change(s => s with { Preset = LabState.Custom, Json = _editorText, Width = file.Width, Height = file.Height, Camera = file.Camera, Sampler = file.Sampler, Pick = null });
+        }
+        catch (SceneFileException e)
+        {
+            _editorError = e.Message;
+        }
+    }
+
+    private static double? ReadNumber(ChangeEventArgs e) =>
+        double.TryParse(e.Value?.ToString(), NumberStyles.Float, CultureInfo.InvariantCulture, out double d) && double.IsFinite(d) ? d : null;
+
+    private static Double3? ReadVector(ChangeEventArgs e)
+    {
+        string[] parts = (e.Value?.ToString() ?? "").Split(',', StringSplitOptions.TrimEntries);
+        return parts.Length == 3
+            && double.TryParse(parts[0], NumberStyles.Float, CultureInfo.InvariantCulture, out double x)
+            && double.TryParse(parts[1], NumberStyles.Float, CultureInfo.InvariantCulture, out double y)
+            && double.TryParse(parts[2], NumberStyles.Float, CultureInfo.InvariantCulture, out double z)
+            ? new Double3(x, y, z) : null;
+    }
+
+    private Task SetCamera(ChangeEventArgs e, Func<CameraSettings, double, CameraSettings> set) =>
+        ReadNumber(e) is double d ? Change(s => s with { Camera = set(s.Camera, d) }) : Task.CompletedTask;
+
+    private Task SetCameraVector(ChangeEventArgs e, Func<CameraSettings, Double3, CameraSettings> set) =>
+        ReadVector(e) is Double3 v ? Change(s => s with { Camera = set(s.Camera, v) }) : Task.CompletedTask;
+
+    private Task SetSampler(ChangeEventArgs e, Func<SamplerSettings, double, SamplerSettings> set) =>
+        ReadNumber(e) is double d ? Change(s => s with { Sampler = set(s.Sampler, d) }) : Task.CompletedTask;
+
+    private Task SetWindow(ChangeEventArgs e, int corner)
+    {
+        if (ReadNumber(e) is not double d)
+        {
+            return Task.CompletedTask;
+        }
+
+        Window w = _state.Camera.Window ?? _plane?.Window ?? new Window(-1, -1, 1, 1);
+        w = corner switch
+        {
+            0 => w with { U0 = d },
+            1 => w with { V0 = d },
+            2 => w with { U1 = d },
+            _ => w with { V1 = d },
+        };
+        return Change(s => s with { Camera = s.Camera with { Window = w } });
+    }
+
+    // (+ 0.0 turns −0 into 0; a value that rounds to zero prints as 0, not −0)
+    private static string F(double value, string format = "0.###") =>
+        (format != "R" && Math.Abs(value) < 5e-5 ? 0.0 : value + 0.0).ToString(format, CultureInfo.InvariantCulture);
+
+    private static string Vec(Double3 v) => $"{F(v.X)}, {F(v.Y)}, {F(v.Z)}";
+
+    private static string Css(Intensity i) => $"rgb({Intensity.ToLevel(i.R)},{Intensity.ToLevel(i.G)},{Intensity.ToLevel(i.B)})";
+
+    private static string Levels(Intensity i) => $"{Intensity.ToLevel(i.R)} {Intensity.ToLevel(i.G)} {Intensity.ToLevel(i.B)}";
+
+    private static readonly string[] Sizes = ["320x180", "640x360", "800x600", "1280x720", "1920x1080"];
+
+    private Task SetSize(ChangeEventArgs e)
+    {
+        string[] parts = (e.Value?.ToString() ?? "").Split('x');
+        return parts.Length == 2 && int.TryParse(parts[0], CultureInfo.InvariantCulture, out int w) && int.TryParse(parts[1], CultureInfo.InvariantCulture, out int h)
+            ? Change(s => s with { Width = w, Height = h, Pick = null })
+            : Task.CompletedTask;
+    }
+
+    private static string ViewName(string view) => view switch
+    {
+        "rays" => "Rays per pixel",
+        "error" => "Error against exact",
+        _ => "Picture",
+    };
+
+    private static string Hue(int index) => $"hsl({(index * 67) % 360}, 80%, 62%)";
+
+    public void Dispose()
+    {
+        _cancel?.Cancel();
+        _cancel?.Dispose();
+        _self?.Dispose();
+        _module?.Dispose();
+    }
+}

@@ -1,0 +1,295 @@
+using System.Globalization;
+using System.Security.Cryptography;
+using Microsoft.Playwright;
+using Microsoft.Playwright.Xunit.v3;
+using RayLab.Rendering.Adaptive;
+using RayLab.Sampling;
+using RayLab.Scenes;
+
+namespace RayLab.Web.Tests;
+
+/// <summary>
+/// The playground in Debian's headless Chromium. Each test opens a fresh browser context (a cold cache), waits on the
+/// page's gates (#lab's data-state and data-frame), never on a clock, and fails on any console error.
+/// </summary>
+public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) : PlaywrightTest, IClassFixture<StaticSite>
+{
+    private static readonly string Chromium = Environment.GetEnvironmentVariable("CHROMIUM") is { Length: > 0 } c ? c : "/usr/bin/chromium";
+
+    /// <summary>A page with its console errors collected.</summary>
+    private sealed record Session(IBrowser Browser, IPage Page, List<string> Errors) : IAsyncDisposable
+    {
+        public async ValueTask DisposeAsync() => await Browser.DisposeAsync();
+    }
+
+    private async Task<Session> OpenAsync(string query = "")
+    {
+        IBrowser browser = await BrowserType.LaunchAsync(new() { ExecutablePath = Chromium, Headless = true, Args = ["--no-sandbox"] });
+        IPage page = await (await browser.NewContextAsync(new() { ViewportSize = new() { Width = 1400, Height = 1000 } })).NewPageAsync();
+        var errors = new List<string>();
+        page.Console += (_, m) =>
+        {
+            if (m.Type == "error")
+            {
+                errors.Add($"{m.Text} ({m.Location})");
+            }
+        };
+        page.PageError += (_, e) => errors.Add(e);
+        await page.GotoAsync(site.Address + query);
+        await WaitForFrame(page, 1);
+        return new Session(browser, page, errors);
+    }
+
+    /// <summary>Waits until the page has finished <paramref name="frame"/> full renders and is ready.</summary>
+    private static async Task WaitForFrame(IPage page, int frame) => await page.WaitForFunctionAsync(
+        $"() => {{ const l = document.getElementById('lab'); return l && l.dataset.state === 'ready' && Number(l.dataset.frame) >= {frame}; }}",
+        null, new() { Timeout = 120_000 });
+
+    private static async Task<int> Frame(IPage page) => int.Parse(await page.GetAttributeAsync("#lab", "data-frame") ?? "0", CultureInfo.InvariantCulture);
+
+    /// <summary>SHA-256 of the canvas as RGB24 bytes, row 0 first (the layout of Image.PixelBytes).</summary>
+    private static Task<string> CanvasHash(IPage page) => page.EvaluateAsync<string>("""
+        async () => {
+          const c = document.getElementById('view');
+          const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+          const rgb = new Uint8Array(c.width * c.height * 3);
+          for (let i = 0, j = 0; i < d.length; i += 4, j += 3) { rgb[j] = d[i]; rgb[j + 1] = d[i + 1]; rgb[j + 2] = d[i + 2]; }
+          const h = new Uint8Array(await crypto.subtle.digest('SHA-256', rgb));
+          return [...h].map(b => b.toString(16).padStart(2, '0')).join('');
+        }
+        """);
+
+    private static SceneDescription Scene(string preset, int width = 640, int height = 360) =>
+        SceneFile.Load(Path.Combine(StaticSite.RepositoryRoot, "samples", "scenes", preset + ".json")) with { Width = width, Height = height };
+
+    /// <summary>The library's picture of the same scene, method and size, with the kernel the page reports, as a SHA-256.</summary>
+    private static async Task<string> LibraryHash(IPage page, SceneDescription description, RenderMethod? method = null)
+    {
+        RenderKernel kernel = Enum.Parse<RenderKernel>(await page.GetAttributeAsync("#lab", "data-kernel") ?? "Auto");
+        PreparedScene prepared = description.Prepare();
+        prepared = method is null ? prepared : prepared with { Method = method };
+        Image image = prepared.CreateImage();
+        prepared.Render(new Renderer { Kernel = kernel }, image);
+        return Convert.ToHexStringLower(SHA256.HashData(image.PixelBytes));
+    }
+
+    private static async Task ClickPixel(IPage page, int x, int y)
+    {
+        ILocator canvas = page.Locator("#view");
+        LocatorBoundingBoxResult box = (await canvas.BoundingBoxAsync())!;
+        int w = int.Parse((await canvas.GetAttributeAsync("data-width"))!, CultureInfo.InvariantCulture);
+        int h = int.Parse((await canvas.GetAttributeAsync("data-height"))!, CultureInfo.InvariantCulture);
+        await canvas.ClickAsync(new() { Position = new() { X = (float)((x + 0.5) * box.Width / w), Y = (float)((y + 0.5) * box.Height / h) } });
+    }
+
+    private static async Task Change(IPage page, string selector, string value)
+    {
+        await page.FillAsync(selector, value);
+        await page.DispatchEventAsync(selector, "change");
+    }
+
+    [Fact]
+    public async Task The_first_picture_equals_the_librarys_render_of_the_same_scene_method_and_size()
+    {
+        await using Session s = await OpenAsync();
+        Assert.Equal("adaptive", await s.Page.GetAttributeAsync("#lab", "data-method"));
+        Assert.Equal(await LibraryHash(s.Page, Scene("two-spheres")), await CanvasHash(s.Page));
+        TestContext.Current.SendDiagnosticMessage($"figure: first picture {await s.Page.GetAttributeAsync("#lab", "data-first-ms")} ms after navigation (cold cache)");
+
+        await using Session jittered = await OpenAsync("?scene=two-spheres&m=jittered&n=4&seed=1");
+        Assert.Equal(await LibraryHash(jittered.Page, Scene("two-spheres") with { Sampler = new SamplerSettings("jittered", 4, 1) }), await CanvasHash(jittered.Page));
+        Assert.Empty(s.Errors);
+        Assert.Empty(jittered.Errors);
+    }
+
+    [Fact]
+    public async Task The_sample_projects_own_methods_render_the_librarys_picture()
+    {
+        await using Session grid = await OpenAsync("?scene=off-axis&m=rotated-grid&n=4");
+        Assert.Equal(await LibraryHash(grid.Page, Scene("off-axis"), RenderMethod.Sampled(new RayLab.OwnMethod.RotatedGridSampler(4))), await CanvasHash(grid.Page));
+        await ClickPixel(grid.Page, 100, 100);
+        await grid.Page.WaitForSelectorAsync("#inspector[data-points='4']");
+
+        await using Session mitchell = await OpenAsync("?scene=off-axis&m=mitchell");
+        Assert.Equal(await LibraryHash(mitchell.Page, Scene("off-axis"), RenderMethod.Custom(new RayLab.OwnMethod.MitchellMethod())), await CanvasHash(mitchell.Page));
+        Assert.Empty(grid.Errors);
+        Assert.Empty(mitchell.Errors);
+    }
+
+    [Fact]
+    public async Task Changing_the_sampler_or_the_sample_count_renders_again()
+    {
+        await using Session s = await OpenAsync();
+        string adaptive = await CanvasHash(s.Page);
+        await s.Page.SelectOptionAsync("#method", "jittered");
+        await WaitForFrame(s.Page, 2);
+        Assert.Equal("jittered", await s.Page.GetAttributeAsync("#lab", "data-method"));
+        int samples = int.Parse(await s.Page.InputValueAsync("#samples"), CultureInfo.InvariantCulture);
+        string first = await CanvasHash(s.Page);
+        Assert.NotEqual(adaptive, first);
+
+        await Change(s.Page, "#samples", "9");
+        await WaitForFrame(s.Page, 3);
+        string nine = await CanvasHash(s.Page);
+        Assert.NotEqual(first, nine);
+        Assert.Equal(await LibraryHash(s.Page, Scene("two-spheres") with { Sampler = new SamplerSettings("jittered", 9, 1) }), nine);
+        Assert.NotEqual(9, samples);
+        Assert.Empty(s.Errors);
+    }
+
+    [Fact]
+    public async Task Clicking_a_pixel_shows_as_many_sample_points_as_the_count()
+    {
+        await using Session s = await OpenAsync("?scene=two-spheres&m=jittered&n=9&seed=3");
+        await ClickPixel(s.Page, 200, 150);
+        await s.Page.WaitForSelectorAsync("#inspector[data-points='9']");
+        IReadOnlyList<ILocator> circles = await s.Page.Locator("#inspector circle.sample").AllAsync();
+        Assert.Equal(9, circles.Count);
+        var expected = new SamplePoint[9];
+        ((IPixelSampler)new JitteredSampler(9, 3)).GetSamples(200, 150, expected);
+        string[] shown = [.. await Task.WhenAll(circles.Select(async c => $"{await c.GetAttributeAsync("data-x")},{await c.GetAttributeAsync("data-y")}"))];
+        Assert.Equal(expected.Select(p => $"{R(p.X)},{R(p.Y)}"), shown);
+        Assert.Empty(s.Errors);
+    }
+
+    [Fact]
+    public async Task For_adaptive_the_inspector_shows_the_same_points_as_the_librarys_diagram()
+    {
+        await using Session s = await OpenAsync();
+        SceneDescription description = Scene("two-spheres");
+        PreparedScene prepared = description.Prepare();
+        AdaptiveSampler sampler = description.Sampler.CreateAdaptive();
+        AdaptiveDiagram edge = AdaptiveDiagram.FindEdgePixel(prepared.Scene, prepared.Camera, 640, 360, sampler);
+        await ClickPixel(s.Page, edge.PixelX, edge.PixelY);
+        await s.Page.WaitForSelectorAsync($"#inspector[data-points='{edge.Points.Count}']");
+        IReadOnlyList<ILocator> circles = await s.Page.Locator("#inspector circle.sample").AllAsync();
+        string[] shown = [.. await Task.WhenAll(circles.Select(async c =>
+            $"{await c.GetAttributeAsync("data-label")} {await c.GetAttributeAsync("data-x")},{await c.GetAttributeAsync("data-y")} {await c.GetAttributeAsync("data-weight")}"))];
+        Assert.Equal(edge.Points.Select(p => $"{p.Label} {R(p.X)},{R(p.Y)} {R(p.Weight)}"), shown);
+        Assert.True(edge.Points.Count > 5, "an edge pixel is subdivided");
+        // The README's screenshot, when asked for: RAYLAB_WEB_SCREENSHOT=docs/playground.png dotnet test tests/RayLab.Web.Tests.
+        if (Environment.GetEnvironmentVariable("RAYLAB_WEB_SCREENSHOT") is { Length: > 0 } screenshot)
+        {
+            await s.Page.SetViewportSizeAsync(1280, 800);
+            await s.Page.ScreenshotAsync(new() { Path = Path.GetFullPath(screenshot, StaticSite.RepositoryRoot) });
+        }
+
+        Assert.Empty(s.Errors);
+    }
+
+    [Fact]
+    public async Task A_bad_scene_shows_the_librarys_validation_text_and_the_page_still_works()
+    {
+        const string bad = """{ "spheres": [ { "center": [0, 0, 0], "radius": -1, "color": [1, 1, 1] } ] }""";
+        string expected = Assert.Throws<SceneFileException>(() => SceneFile.Parse(bad, "editor").Prepare()).Message;
+        await using Session s = await OpenAsync();
+        await s.Page.ClickAsync("summary");
+        await Change(s.Page, "#editor", bad);
+        await s.Page.ClickAsync("#apply");
+        await s.Page.WaitForSelectorAsync("#editor-error");
+        Assert.Equal(expected, (await s.Page.TextContentAsync("#editor-error"))?.Trim());
+
+        await Change(s.Page, "#editor", "{ not json");
+        await s.Page.ClickAsync("#apply");
+        await s.Page.WaitForSelectorAsync("#editor-error:has-text('not valid JSON')");
+
+        int frame = await Frame(s.Page);
+        await s.Page.SelectOptionAsync("#method", "exact");
+        await WaitForFrame(s.Page, frame + 1);
+        Assert.Equal("exact", await s.Page.GetAttributeAsync("#lab", "data-method"));
+        Assert.Empty(s.Errors);
+    }
+
+    [Fact]
+    public async Task Dragging_changes_the_camera_and_the_url_follows_and_reopens_the_same_picture()
+    {
+        await using Session s = await OpenAsync("?scene=two-spheres&m=exact");
+        string before = s.Page.Url;
+        string beforeHash = await CanvasHash(s.Page);
+        LocatorBoundingBoxResult box = (await s.Page.Locator("#view").BoundingBoxAsync())!;
+        float cx = box.X + (box.Width / 2), cy = box.Y + (box.Height / 2);
+        await s.Page.Mouse.MoveAsync(cx, cy);
+        await s.Page.Mouse.DownAsync();
+        await s.Page.Mouse.MoveAsync(cx + 90, cy + 30, new() { Steps = 10 });
+        await s.Page.Mouse.UpAsync();
+        await WaitForFrame(s.Page, 2);
+        await s.Page.WaitForFunctionAsync($"() => location.href !== {System.Text.Json.JsonSerializer.Serialize(before)}");
+        string after = s.Page.Url;
+        Assert.NotEqual(Query(before)["pos"], Query(after)["pos"]);
+        string afterHash = await CanvasHash(s.Page);
+        Assert.NotEqual(beforeHash, afterHash);
+        TestContext.Current.SendDiagnosticMessage($"figure: drag preview (exact, reduced size) {await s.Page.GetAttributeAsync("#lab", "data-preview-ms")} ms");
+
+        await using Session shared = await OpenAsync(new Uri(after).Query);
+        Assert.Equal(afterHash, await CanvasHash(shared.Page));
+        Assert.Empty(s.Errors);
+        Assert.Empty(shared.Errors);
+    }
+
+    /// <summary>The figures of docs/performance.md's browser section, printed, not asserted (speed lives in figures, not tests).</summary>
+    [Fact]
+    public async Task Timings_are_printed_as_figures()
+    {
+        var lines = new List<string> { site.PublishNote, $"site: {site.BrotliBytes() / 1e6:0.00} MB with brotli (each file's .br copy, else the file)" };
+        await using (Session cold = await OpenAsync())
+        {
+            lines.Add($"first picture (two-spheres adaptive 640x360), ms after navigation, cold cache: .NET and the page up {await cold.Page.GetAttributeAsync("#lab", "data-start-ms")}, "
+                + $"first band painted {await cold.Page.GetAttributeAsync("#lab", "data-first-band-ms")}, whole picture {await cold.Page.GetAttributeAsync("#lab", "data-first-ms")}");
+        }
+
+        foreach ((string name, string query) in new[]
+        {
+            ("exact 640x360", "m=exact"), ("jittered 4 spp 640x360", "m=jittered&n=4&seed=1"),
+            ("jittered 4 spp 640x360, scalar kernel", "m=jittered&n=4&seed=1&k=scalar"), ("adaptive (scene's) 640x360", ""),
+        })
+        {
+            await using Session s = await OpenAsync("?scene=two-spheres&" + query);
+            var ms = new List<string> { await s.Page.GetAttributeAsync("#lab", "data-render-ms") ?? "" };
+            var gaps = new List<string> { await s.Page.GetAttributeAsync("#lab", "data-gap-ms") ?? "" };
+            for (int i = 0; i < 3; i++)
+            {
+                int frame = await Frame(s.Page);
+                await s.Page.ClickAsync("#rerender");
+                await WaitForFrame(s.Page, frame + 1);
+                ms.Add(await s.Page.GetAttributeAsync("#lab", "data-render-ms") ?? "");
+                gaps.Add(await s.Page.GetAttributeAsync("#lab", "data-gap-ms") ?? "");
+            }
+
+            lines.Add($"{name}: render {string.Join(", ", ms)} ms (first, then again); longest frame gap {string.Join(", ", gaps)} ms");
+            Assert.Empty(s.Errors);
+        }
+
+        await using (Session drag = await OpenAsync("?scene=two-spheres&m=exact"))
+        {
+            LocatorBoundingBoxResult box = (await drag.Page.Locator("#view").BoundingBoxAsync())!;
+            float cx = box.X + (box.Width / 2), cy = box.Y + (box.Height / 2);
+            var previews = new List<string>();
+            await drag.Page.Mouse.MoveAsync(cx, cy);
+            await drag.Page.Mouse.DownAsync();
+            for (int i = 1; i <= 8; i++)
+            {
+                await drag.Page.Mouse.MoveAsync(cx + (i * 12), cy);
+                await drag.Page.WaitForFunctionAsync("() => document.getElementById('lab').dataset.state === 'preview'");
+                previews.Add(await drag.Page.GetAttributeAsync("#lab", "data-preview-ms") ?? "");
+            }
+
+            await drag.Page.Mouse.UpAsync();
+            await WaitForFrame(drag.Page, 2);
+            lines.Add($"drag previews (exact at a reduced size): {string.Join(", ", previews)} ms");
+        }
+
+        // Diagnostic messages (xunit.runner.json) reach the console at any verbosity; the file keeps them for docs/performance.md.
+        string file = Path.Combine(AppContext.BaseDirectory, "web-figures.txt");
+        await File.WriteAllLinesAsync(file, lines, TestContext.Current.CancellationToken);
+        foreach (string line in lines)
+        {
+            output.WriteLine(line);
+            TestContext.Current.SendDiagnosticMessage("figure: " + line);
+        }
+    }
+
+    private static string R(double value) => value.ToString("R", CultureInfo.InvariantCulture);
+
+    private static Dictionary<string, string> Query(string url) => new Uri(url).Query.TrimStart('?').Split('&')
+        .Select(p => p.Split('=', 2)).ToDictionary(p => p[0], p => Uri.UnescapeDataString(p[1]));
+}
