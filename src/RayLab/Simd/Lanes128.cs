@@ -5,9 +5,11 @@ using RayLab.Sampling;
 
 namespace RayLab.Simd;
 
-/// <summary>4 float lanes (SSE or Arm NEON). See <see cref="ILanes{TSelf}"/>.</summary>
-/// <param name="V">The register.</param>
-internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
+// The operations that read the same at every register width, written once for Vector128. This file is also the
+// template of Lanes256 and Lanes512: the build's source generator (src/RayLab.Generators, LanesGenerator) writes
+// them from it by renaming Vector128 and Lanes128. What differs per width is in Lanes128.Isa.cs, Lanes256.Isa.cs
+// and Lanes512.Isa.cs.
+internal readonly partial record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
 {
     public static int Count => Vector128<float>.Count;
 
@@ -41,18 +43,10 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
         new(Fma.IsSupported ? Vector128.FusedMultiplyAdd(a.V, b.V, c.V) : (a.V * b.V) + c.V);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes128 NegatedMultiplyAdd(Lanes128 a, Lanes128 b, Lanes128 c) =>
-        new(Fma.IsSupported ? Fma.MultiplyAddNegated(a.V, b.V, c.V) : c.V - (a.V * b.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Sqrt(Lanes128 x) => new(Vector128.Sqrt(x.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Abs(Lanes128 x) => new(Vector128.Abs(x.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes128 MinAbs(Lanes128 smallest, Lanes128 x) =>
-        new(Avx512DQ.VL.IsSupported ? Avx512DQ.VL.Range(smallest.V, x.V, 0b1010) : Vector128.MinNative(smallest.V, Vector128.Abs(x.V)));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Min(Lanes128 a, Lanes128 b) => new(Vector128.MinNative(a.V, b.V));
@@ -62,13 +56,6 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 LessThan(Lanes128 a, Lanes128 b) => new(Vector128.LessThan(a.V, b.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes128 Select(Lanes128 mask, Lanes128 whenTrue, Lanes128 whenFalse) =>
-        new(Sse41.IsSupported ? Sse41.BlendVariable(whenFalse.V, whenTrue.V, mask.V) : Vector128.ConditionalSelect(mask.V, whenTrue.V, whenFalse.V));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static uint MaskBits(Lanes128 mask) => mask.V.ExtractMostSignificantBits();
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Load(ReadOnlySpan<float> source) => new(Vector128.Create(source));
@@ -128,15 +115,6 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
     public static Lanes128 ShiftRightBits(Lanes128 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes128 ShiftRightBitsVariable(Lanes128 bits, Lanes128 counts)
-    {
-        Vector128<uint> b = bits.V.AsUInt32(), c = counts.V.AsUInt32();
-        return new((Avx2.IsSupported
-            ? Avx2.ShiftRightLogicalVariable(b, c)
-            : Vector128.Create(b[0] >> (int)c[0], b[1] >> (int)c[1], b[2] >> (int)c[2], b[3] >> (int)c[3])).AsSingle());
-    }
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 LessThanBits(Lanes128 a, Lanes128 b) => new(Vector128.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -167,24 +145,10 @@ internal readonly record struct Lanes128(Vector128<float> V) : ILanes<Lanes128>
         return new(Vector128.Narrow(formula.Apply(aLow, jLow + offset, cLow, default), formula.Apply(aHigh, jHigh + offset, cHigh, default)));
     }
 
+    /// <summary>The bit reversal by five swaps of halves, for hardware without a byte shuffle.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static (Vector128<double> Low, Vector128<double> High) ToDouble(Vector128<int> v) => Sse2.IsSupported
-        ? (Sse2.ConvertToVector128Double(v), Sse2.ConvertToVector128Double(Sse2.UnpackHigh(v.AsInt64(), v.AsInt64()).AsInt32()))
-        : (Vector128.ConvertToDouble(Vector128.WidenLower(v)), Vector128.ConvertToDouble(Vector128.WidenUpper(v)));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Lanes128 ReverseBits(Lanes128 bits)
+    private static Lanes128 ReverseBitsBySwaps(Lanes128 bits)
     {
-        if (Ssse3.IsSupported)
-        {
-            // The bytes of each lane in reverse order, then each byte's bits reversed by its two nibbles' lookups.
-            Vector128<byte> swapped = Ssse3.Shuffle(bits.V.AsByte(), Vector128.Create((byte)3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
-            Vector128<byte> nibble = Vector128.Create((byte)0x0f);
-            Vector128<byte> low = Ssse3.Shuffle(Vector128.Create(0x00, 0x80, 0x40, 0xc0, 0x20, 0xa0, 0x60, 0xe0, 0x10, 0x90, 0x50, 0xd0, 0x30, 0xb0, 0x70, 0xf0), swapped & nibble);
-            Vector128<byte> high = Ssse3.Shuffle(Vector128.Create((byte)0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf), (swapped.AsUInt16() >>> 4).AsByte() & nibble);
-            return new((low | high).AsSingle());
-        }
-
         Vector128<uint> x = bits.V.AsUInt32();
         x = (x << 16) | (x >>> 16);
         x = ((x & Vector128.Create(0x00ff00ffu)) << 8) | ((x >>> 8) & Vector128.Create(0x00ff00ffu));
