@@ -37,52 +37,63 @@ public static class ComparePlan
         var cases = new List<CompareCase>();
         foreach (string name in samplers.Where(s => s != "adaptive"))
         {
-            bool grid = Samplers.Create(name, 1, seed) is GridSampler;
-            var seen = new Dictionary<int, int>();
-            foreach (int budget in budgets)
-            {
-                ArgumentOutOfRangeException.ThrowIfLessThan(budget, 1, nameof(budgets));
-                int spp = grid ? (int)Math.Pow(Math.Floor(Math.Sqrt(budget)), 2) : budget;
-                if (seen.TryGetValue(spp, out int earlier))
-                {
-                    notes.Add($"{name}: budget {budget} would be {spp} samples (an n×n grid), as budget {earlier} is; left out.");
-                    continue;
-                }
-
-                seen[spp] = budget;
-                if (spp != budget)
-                {
-                    notes.Add($"{name}: budget {budget} runs as {spp} samples (an n×n grid needs a perfect square).");
-                }
-
-                cases.Add(CompareCase.Sampled(Samplers.Create(name, spp, seed), budget));
-            }
+            AddPointCases(cases, name, budgets, seed, notes);
         }
 
         if (samplers.Contains("adaptive"))
         {
-            if (contrasts.Count == 0)
-            {
-                throw new ArgumentException("adaptive needs at least one contrast", nameof(contrasts));
-            }
-
-            foreach (double contrast in contrasts)
-            {
-                foreach (int depth in maxDepths)
-                {
-                    cases.Add(CompareCase.Adaptive(new AdaptiveSampler(0, depth, contrast)));
-                }
-            }
-
-            // The guarded sampler beside the lab's rule, at the smallest contrast asked for.
-            double finest = contrasts.Min();
-            foreach (int depth in maxDepths)
-            {
-                cases.Add(CompareCase.Adaptive(new AdaptiveSampler(0, depth, finest, guard: true)));
-            }
+            AddAdaptiveCases(cases, maxDepths, contrasts);
         }
 
         return cases;
+    }
+
+    /// <summary>One setting per budget of a point sampler; a grid sampler runs the largest n×n within each budget, once per n.</summary>
+    private static void AddPointCases(List<CompareCase> cases, string name, IReadOnlyList<int> budgets, uint seed, ICollection<string> notes)
+    {
+        bool grid = Samplers.Create(name, 1, seed) is GridSampler;
+        var seen = new Dictionary<int, int>();
+        foreach (int budget in budgets)
+        {
+            ArgumentOutOfRangeException.ThrowIfLessThan(budget, 1, nameof(budgets));
+            int spp = grid ? (int)Math.Pow(Math.Floor(Math.Sqrt(budget)), 2) : budget;
+            if (seen.TryGetValue(spp, out int earlier))
+            {
+                notes.Add($"{name}: budget {budget} would be {spp} samples (an n×n grid), as budget {earlier} is; left out.");
+                continue;
+            }
+
+            seen[spp] = budget;
+            if (spp != budget)
+            {
+                notes.Add($"{name}: budget {budget} runs as {spp} samples (an n×n grid needs a perfect square).");
+            }
+
+            cases.Add(CompareCase.Sampled(Samplers.Create(name, spp, seed), budget));
+        }
+    }
+
+    /// <summary>The lab's rule at every contrast and depth, then the guarded sampler at the smallest contrast.</summary>
+    private static void AddAdaptiveCases(List<CompareCase> cases, IReadOnlyList<int> maxDepths, IReadOnlyList<double> contrasts)
+    {
+        if (contrasts.Count == 0)
+        {
+            throw new ArgumentException("adaptive needs at least one contrast", nameof(contrasts));
+        }
+
+        foreach (double contrast in contrasts)
+        {
+            foreach (int depth in maxDepths)
+            {
+                cases.Add(CompareCase.Adaptive(new AdaptiveSampler(0, depth, contrast)));
+            }
+        }
+
+        double finest = contrasts.Min();
+        foreach (int depth in maxDepths)
+        {
+            cases.Add(CompareCase.Adaptive(new AdaptiveSampler(0, depth, finest, guard: true)));
+        }
     }
 
     /// <summary>The first <see cref="CompareCase.FileStem"/> two settings share (they would write one image), or null.</summary>

@@ -83,6 +83,24 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     {
         var md = new StringBuilder();
         md.Append($"# raylab compare: {heading}\n\n{Definition}\n\n").Append(Table()).Append('\n');
+        TimingNotes(md);
+
+        Slopes(md);
+        TimeToOneLevel(md);
+        TimesToReach(md);
+        Rankings(md);
+
+        if (command.Length > 0)
+        {
+            md.Append($"\nMade by:\n\n```\n{command}\n```\n");
+        }
+
+        return md.ToString();
+    }
+
+    /// <summary>The notes, then how the times were taken where a setting was timed once or rendered again.</summary>
+    private void TimingNotes(StringBuilder md)
+    {
         foreach (string note in notes)
         {
             md.Append($"- {note}\n");
@@ -101,7 +119,11 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
             int most = results.Max(r => r.Renders);
             md.Append(Invariant($"\nEach time is the median of its setting's renders. {retimed} of {results.Count} settings rendered in less than {minimum:F0} ms in all over the repeats were rendered again until they reached it (at most {CompareRunner.MaximumRenders} renders; up to {most} here): a time of a few milliseconds is timer noise.\n"));
         }
+    }
 
+    /// <summary>The convergence-slope section: each line's slopes of ln(error) against ln(rays per pixel).</summary>
+    private void Slopes(StringBuilder md)
+    {
         md.Append("\n## Convergence slopes\n\n")
           .Append("Least-squares slope of ln(error) against ln(rays per pixel) over each line's settings with error > 0 (rays, "
                   + "not time: rays are exact, times are noisy). Theory for pixels on an edge (Mitchell 1996): random −0.5, "
@@ -132,7 +154,11 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
 
             md.Append(Invariant($"| {s.Key} | {rmse} | {mean} | {flip} | {rays.Length} |\n"));
         }
+    }
 
+    /// <summary>The section of each line's fastest setting with every pixel within one level.</summary>
+    private void TimeToOneLevel(StringBuilder md)
+    {
         md.Append("\n## Time to maximum error ≤ 1 level\n\n")
           .Append("The fastest setting whose every pixel is within one level of the exact image.\n\n")
           .Append("| sampler | time (ms) | setting | rays/px |\n|---|---:|---|---:|\n");
@@ -142,7 +168,11 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
                 ? Invariant($"| {s.Key} | {r.Time.TotalMilliseconds:F1} | {r.Case.Setting} | {r.RaysPerPixel:F2} |\n")
                 : Invariant($"| {s.Key} | not reached | best max {s.Min(r => r.Error.Max)} levels | |\n"));
         }
+    }
 
+    /// <summary>For RMSE and mean FLIP: the time each line takes to reach the lowest value every line (and every point sampler) reaches.</summary>
+    private void TimesToReach(StringBuilder md)
+    {
         foreach (Measure measure in new[] { Rmse, MeanFlip })
         {
             double? everyLine = LowestCommon(Series, measure);
@@ -157,15 +187,6 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
                 ReachTable(md, measure, point, $"the lowest {measure.Name} every point sampler reaches");
             }
         }
-
-        Rankings(md);
-
-        if (command.Length > 0)
-        {
-            md.Append($"\nMade by:\n\n```\n{command}\n```\n");
-        }
-
-        return md.ToString();
     }
 
     /// <summary>

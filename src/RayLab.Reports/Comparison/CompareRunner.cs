@@ -77,6 +77,45 @@ public static class CompareRunner
         Scene scene, Camera camera, int width, int height, IReadOnlyList<CompareCase> cases, string folder,
         CompareSettings settings, CancellationToken cancellation = default)
     {
+        Validate(scene, camera, width, height, cases, folder, settings);
+        Renderer renderer = settings.Renderer ?? new Renderer { CancellationToken = cancellation };
+        ICompareProgress progress = settings.Progress ?? new Unobserved();
+        string images = Directory.CreateDirectory(Path.Combine(folder, "images")).FullName;
+        string errors = Directory.CreateDirectory(Path.Combine(folder, "errors")).FullName;
+        string flipMaps = Directory.CreateDirectory(Path.Combine(folder, "flip")).FullName;
+        var flipOptions = new FlipOptions { MaxDegreeOfParallelism = renderer.MaxDegreeOfParallelism };
+
+        var exact = new Image(width, height);
+        RenderStatistics exactStats = progress.Render("exact image", () => renderer.Render(scene, camera, RenderMethod.Exact, exact));
+        exact.Save(Path.Combine(images, "exact.png"));
+
+        var image = new Image(width, height);
+        var results = new CompareResult[cases.Count];
+        for (int i = 0; i < cases.Count; i++)
+        {
+            CompareCase c = cases[i] ?? throw new ArgumentException($"cases[{i}] is null", nameof(cases));
+            (RenderStatistics stats, List<TimeSpan> times) = TimeRenders(c, renderer, scene, camera, image, settings.Repeats, progress, cancellation);
+
+            ImageError error = ImageError.Measure(image, exact);
+            image.Save(Path.Combine(images, c.FileStem + ".png"));
+            HeatMap.Render(ImageError.PerPixel(image, exact), width, height, "levels").Save(Path.Combine(errors, c.FileStem + ".png"));
+            FlipResult flip = Flip.Compute(exact, image, flipOptions);
+            FlipMap.RenderWithLegend(flip).Save(Path.Combine(flipMaps, c.FileStem + ".png"));
+            results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median([.. times]), error, stats.Kernel)
+            {
+                MeanFlip = flip.Mean,
+                Renders = times.Count,
+                Retimed = times.Count > settings.Repeats,
+                TimedOnce = times.Count < settings.Repeats,
+            };
+        }
+
+        return new CompareMeasurement(exactStats, results);
+    }
+
+    /// <summary>The arguments' checks for <see cref="Measure"/>.</summary>
+    private static void Validate(Scene scene, Camera camera, int width, int height, IReadOnlyList<CompareCase> cases, string folder, CompareSettings settings)
+    {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
         ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
@@ -98,63 +137,41 @@ public static class CompareRunner
         {
             throw new ArgumentException($"Repeats must be at least 1, got {settings.Repeats}", nameof(settings));
         }
+    }
 
-        Renderer renderer = settings.Renderer ?? new Renderer { CancellationToken = cancellation };
-        ICompareProgress progress = settings.Progress ?? new Unobserved();
-        string images = Directory.CreateDirectory(Path.Combine(folder, "images")).FullName;
-        string errors = Directory.CreateDirectory(Path.Combine(folder, "errors")).FullName;
-        string flipMaps = Directory.CreateDirectory(Path.Combine(folder, "flip")).FullName;
-        var flipOptions = new FlipOptions { MaxDegreeOfParallelism = renderer.MaxDegreeOfParallelism };
-
-        var exact = new Image(width, height);
-        RenderStatistics exactStats = progress.Render("exact image", () => renderer.Render(scene, camera, RenderMethod.Exact, exact));
-        exact.Save(Path.Combine(images, "exact.png"));
-
-        var image = new Image(width, height);
-        var results = new CompareResult[cases.Count];
-        for (int i = 0; i < cases.Count; i++)
+    /// <summary>
+    /// Renders one setting <paramref name="repeats"/> times (once when the first render is long), then again outside
+    /// the progress count until the renders add up to a time worth measuring; returns the last render's statistics and every time.
+    /// </summary>
+    private static (RenderStatistics Stats, List<TimeSpan> Times) TimeRenders(
+        CompareCase c, Renderer renderer, Scene scene, Camera camera, Image image, int repeats, ICompareProgress progress, CancellationToken cancellation)
+    {
+        var times = new List<TimeSpan>(repeats);
+        RenderStatistics stats = default;
+        for (int k = 0; k < repeats; k++)
         {
-            CompareCase c = cases[i] ?? throw new ArgumentException($"cases[{i}] is null", nameof(cases));
-            var times = new List<TimeSpan>(settings.Repeats);
-            RenderStatistics stats = default;
-            for (int k = 0; k < settings.Repeats; k++)
+            cancellation.ThrowIfCancellationRequested();
+            stats = progress.Render($"{c.Series}, {c.Setting} ({k + 1}/{repeats})", () => c.Render(renderer, scene, camera, image));
+            times.Add(stats.RenderTime);
+            if (k == 0 && repeats > 1 && stats.RenderTime >= LongRender)
             {
-                cancellation.ThrowIfCancellationRequested();
-                stats = progress.Render($"{c.Series}, {c.Setting} ({k + 1}/{settings.Repeats})", () => c.Render(renderer, scene, camera, image));
-                times.Add(stats.RenderTime);
-                if (k == 0 && settings.Repeats > 1 && stats.RenderTime >= LongRender)
-                {
-                    progress.Skipped(settings.Repeats - 1);
-                    break;
-                }
+                progress.Skipped(repeats - 1);
+                break;
             }
-
-            // A render of a few milliseconds is timer and scheduler noise: render again (outside the progress
-            // count) until the renders add up to a time worth measuring; the report says which were.
-            TimeSpan measured = times.Aggregate(TimeSpan.Zero, (sum, t) => sum + t);
-            while (measured < MinimumMeasured && times.Count < MaximumRenders)
-            {
-                cancellation.ThrowIfCancellationRequested();
-                TimeSpan again = c.Render(renderer, scene, camera, image).RenderTime;
-                times.Add(again);
-                measured += again;
-            }
-
-            ImageError error = ImageError.Measure(image, exact);
-            image.Save(Path.Combine(images, c.FileStem + ".png"));
-            HeatMap.Render(ImageError.PerPixel(image, exact), width, height, "levels").Save(Path.Combine(errors, c.FileStem + ".png"));
-            FlipResult flip = Flip.Compute(exact, image, flipOptions);
-            FlipMap.RenderWithLegend(flip).Save(Path.Combine(flipMaps, c.FileStem + ".png"));
-            results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median([.. times]), error, stats.Kernel)
-            {
-                MeanFlip = flip.Mean,
-                Renders = times.Count,
-                Retimed = times.Count > settings.Repeats,
-                TimedOnce = times.Count < settings.Repeats,
-            };
         }
 
-        return new CompareMeasurement(exactStats, results);
+        // A render of a few milliseconds is timer and scheduler noise: render again (outside the progress
+        // count) until the renders add up to a time worth measuring; the report says which were.
+        TimeSpan measured = times.Aggregate(TimeSpan.Zero, (sum, t) => sum + t);
+        while (measured < MinimumMeasured && times.Count < MaximumRenders)
+        {
+            cancellation.ThrowIfCancellationRequested();
+            TimeSpan again = c.Render(renderer, scene, camera, image).RenderTime;
+            times.Add(again);
+            measured += again;
+        }
+
+        return (stats, times);
     }
 
     /// <summary>How the report's times were taken, for its heading: <c>time = median of 3 renders (1 for a render of 1 s or more)</c>.</summary>

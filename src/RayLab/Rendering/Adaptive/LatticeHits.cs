@@ -125,6 +125,7 @@ internal sealed class LatticeHits
     /// Fills <paramref name="ids"/> with the indices hit by lattice points (<paramref name="lxStart"/> + k·<paramref name="lxStep"/>,
     /// <paramref name="ly"/>), k = 0 … ids.Length − 1; returns how many were traced again in double.
     /// </summary>
+    // Long: one packet loop over the row whose lane registers (window, α step, rays, nearest, closest) a split would pass through memory per packet.
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public int TraceRow<TL, TP>(long ly, long lxStart, long lxStep, Span<int> ids)
         where TL : struct, ILanes<TL>

@@ -81,6 +81,7 @@ internal static partial class PacketKernel
     /// The sum over a packet's samples of each lane's colour; <see cref="LaneColour{TL}.Unsure"/> has the lanes
     /// that had an uncertain sample (float only) or that were traced again (careful mode).
     /// </summary>
+    // Long: the sample and sphere loops keep every lane register live; a call inside them makes the JIT spill them all per sample (see the uncertain lanes below).
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static LaneColour<TL> SumPacket<TL, TS, TP, TMode>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int x0, int row, ref int retracedCount)
         where TL : struct, ILanes<TL>
