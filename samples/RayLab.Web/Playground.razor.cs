@@ -6,6 +6,7 @@ using Microsoft.JSInterop;
 using RayLab.Cameras;
 using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
+using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Web.Lab;
@@ -42,6 +43,8 @@ public sealed partial class Playground : IDisposable
     private double? _firstMs;
     private double? _startMs;
     private double? _firstBandMs;
+    private double? _firstPreviewMs;
+    private string? _showing;
     private readonly List<Trial> _trials = [];
     private IJSInProcessObjectReference? _module;
     private DotNetObjectReference<Playground>? _self;
@@ -73,6 +76,12 @@ public sealed partial class Playground : IDisposable
         _startMs = _module.Invoke<double>("now");
         _self = DotNetObjectReference.Create(this);
         _module.InvokeVoid("attach", "view", _self);
+        // The first picture at once: the exact picture at a reduced size, as while dragging; the full render refines it.
+        if (Prepare() && PaintPreview(adapt: false))
+        {
+            _firstPreviewMs = _module.Invoke<double>("now");
+        }
+
         await RenderFullAsync();
     }
 
@@ -171,6 +180,7 @@ public sealed partial class Playground : IDisposable
             }
 
             _longestGap = _module?.Invoke<double>("longestFrameGap") ?? 0;
+            _showing = null;
             _frames++;
             _status = "ready";
             UpdateUrl();
@@ -210,8 +220,15 @@ public sealed partial class Playground : IDisposable
         long primary = 0;
         TimeSpan time = default;
         RenderKernel kernel = RenderKernel.Scalar;
-        // Two rows first: the first band of a method pays for the interpreter's first calls, measured at 0.5-1.7 s for 8 rows.
-        int rows = _bandRows.GetValueOrDefault(method.Name, 2);
+        if (!_bandRows.TryGetValue(method.Name, out int rows))
+        {
+            // A method's first call in the page: the interpreter prepares its code on a strip of 8 pixels (20-40 ms), apart
+            // from the first band, which then starts at one row.
+            renderer.Render(scene, camera, method, new Image(8, 1));
+            rows = 1;
+            await Task.Delay(1, cancel);
+        }
+
         for (int first = 0; first < image.Height;)
         {
             int count = Math.Min(rows, image.Height - first);
@@ -226,7 +243,7 @@ public sealed partial class Playground : IDisposable
             }
 
             first += count;
-            rows = Math.Clamp((int)(count * BandMilliseconds / Math.Max(band.RenderTime.TotalMilliseconds, 0.5)), 1, image.Height);
+            rows = NextBand(count, band.RenderTime.TotalMilliseconds, image.Height);
             await Task.Delay(1, cancel);
         }
 
@@ -239,6 +256,14 @@ public sealed partial class Playground : IDisposable
 
         return new RenderStatistics(primary, time) { Kernel = kernel };
     }
+
+    /// <summary>
+    /// The next band's height: the rows that take <see cref="BandMilliseconds"/> at the last band's speed, at most twice
+    /// the last band, since rows differ in cost (the background is cheap, a sphere's edge is not: a 66-row band of sky
+    /// in 7 ms was followed by 292 rows in 229 ms before this limit).
+    /// </summary>
+    private static int NextBand(int rows, double milliseconds, int height) =>
+        Math.Clamp((int)(rows * BandMilliseconds / Math.Max(milliseconds, 0.5)), 1, Math.Clamp(2 * rows, 1, height));
 
     /// <summary>What one band of a full render aims to take: short enough for input and painting to go on between bands.</summary>
     private const double BandMilliseconds = 40;
@@ -264,28 +289,49 @@ public sealed partial class Playground : IDisposable
             return;
         }
 
+        if (!PaintPreview(adapt: true))
+        {
+            StateHasChanged();
+            return;
+        }
+
+        _status = "preview";
+        StateHasChanged();
+        await Task.Yield();
+    }
+
+    /// <summary>
+    /// Renders the exact picture at a reduced size and paints it scaled up over the canvas; with <paramref name="adapt"/>
+    /// the size follows the measured time, aiming at 30 ms a frame. False (and the error line) when the library refuses.
+    /// </summary>
+    private bool PaintPreview(bool adapt)
+    {
         int w = Math.Max(1, (int)(_state.Width * _previewScale)), h = Math.Max(1, (int)(_state.Height * _previewScale));
         var preview = new Image(w, h);
         var clock = Stopwatch.StartNew();
+        RenderMethod method;
         try
         {
-            OneThread.Render(_prepared!.Scene, _prepared.Camera, PreviewMethod(), preview);
+            method = PreviewMethod();
+            OneThread.Render(_prepared!.Scene, _prepared.Camera, method, preview);
         }
         catch (ArgumentException e)
         {
             _error = SceneFileException.OneLine(e.Message);
-            StateHasChanged();
-            return;
+            return false;
         }
 
         _module?.InvokeVoid("paintPreview", "view", preview.PixelBytes.ToArray(), w, h, _state.Width, _state.Height);
         double ms = clock.Elapsed.TotalMilliseconds;
         _previewMs = ms;
-        // Keep the preview near 30 ms: its pixel count scales with the square of the scale.
-        _previewScale = Math.Clamp(_previewScale * Math.Sqrt(30 / Math.Max(ms, 1)), 0.15, 1);
-        _status = "preview";
-        StateHasChanged();
-        await Task.Yield();
+        if (adapt)
+        {
+            // Its pixel count scales with the square of the scale.
+            _previewScale = Math.Clamp(_previewScale * Math.Sqrt(30 / Math.Max(ms, 1)), 0.15, 1);
+        }
+
+        _showing = $"a preview: {(method == RenderMethod.Exact ? "the exact picture" : "one ray per pixel")} at {w}×{h}, scaled up; the full render follows";
+        return true;
     }
 
     /// <summary>The exact picture, or one ray per pixel for a scene the exact reference cannot take.</summary>
@@ -362,11 +408,12 @@ public sealed partial class Playground : IDisposable
             return;
         }
 
-        if (OwnMethods.IsOwn(settings.Type) && OwnMethods.Sampler(settings) is null)
+        if (OwnMethods.Trace(settings, scene, _prepared.Camera, _state.Width, _state.Height, x, y) is PixelMethodTrace traced)
         {
-            // Mitchell's method decides its points pixel by pixel: the inspector shows its value only.
-            var level = new Intensity(rendered.R / 255.0, rendered.G / 255.0, rendered.B / 255.0);
-            _inspection = new Inspection(x, y, _prepared.SamplerDescription, [], [], level, exact, rendered, inside);
+            // Mitchell's method decides its points pixel by pixel: the points its own code traced here, each an equal share of the mean.
+            double share = 1.0 / traced.Points.Count;
+            InspectedPoint[] own = [.. traced.Points.Select((p, i) => new InspectedPoint((i + 1).ToString(CultureInfo.InvariantCulture), p.X, p.Y, p.Value, share))];
+            _inspection = new Inspection(x, y, _prepared.SamplerDescription, own, [], traced.Value, exact, rendered, inside);
             return;
         }
 

@@ -3,6 +3,7 @@ using System.Security.Cryptography;
 using Microsoft.Playwright;
 using Microsoft.Playwright.Xunit.v3;
 using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -114,6 +115,31 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         Assert.Equal(await LibraryHash(mitchell.Page, Scene("off-axis"), RenderMethod.Custom(new RayLab.OwnMethod.MitchellMethod())), await CanvasHash(mitchell.Page));
         Assert.Empty(grid.Errors);
         Assert.Empty(mitchell.Errors);
+    }
+
+    [Fact]
+    public async Task For_mitchell_the_inspector_shows_the_points_its_own_code_traced()
+    {
+        SceneDescription description = Scene("off-axis");
+        PreparedScene prepared = description.Prepare();
+        var method = new RayLab.OwnMethod.MitchellMethod();
+        // A pixel where the contrast test passes (4 points) and one on an edge where it adds 12 more (16), in reading order.
+        PixelMethodTrace Find(int count) => Enumerable.Range(0, 360).SelectMany(y => Enumerable.Range(0, 640).Select(x => (x, y)))
+            .Where(p => p.x % 7 == 0 && p.y % 5 == 0)
+            .Select(p => PixelMethodTrace.Trace(prepared.Scene, prepared.Camera, 640, 360, method, p.x, p.y))
+            .First(t => t.Points.Count == count);
+
+        await using Session s = await OpenAsync("?scene=off-axis&m=mitchell");
+        foreach (PixelMethodTrace expected in new[] { Find(4), Find(16) })
+        {
+            await ClickPixel(s.Page, expected.PixelX, expected.PixelY);
+            await s.Page.WaitForSelectorAsync($"#inspector[data-points='{expected.Points.Count}']");
+            IReadOnlyList<ILocator> circles = await s.Page.Locator("#inspector circle.sample").AllAsync();
+            string[] shown = [.. await Task.WhenAll(circles.Select(async c => $"{await c.GetAttributeAsync("data-x")},{await c.GetAttributeAsync("data-y")}"))];
+            Assert.Equal(expected.Points.Select(p => $"{R(p.X)},{R(p.Y)}"), shown);
+        }
+
+        Assert.Empty(s.Errors);
     }
 
     [Fact]
@@ -234,7 +260,7 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         await using (Session cold = await OpenAsync())
         {
             lines.Add($"first picture (two-spheres adaptive 640x360), ms after navigation, cold cache: .NET and the page up {await cold.Page.GetAttributeAsync("#lab", "data-start-ms")}, "
-                + $"first band painted {await cold.Page.GetAttributeAsync("#lab", "data-first-band-ms")}, whole picture {await cold.Page.GetAttributeAsync("#lab", "data-first-ms")}");
+                + $"exact preview painted {await cold.Page.GetAttributeAsync("#lab", "data-first-preview-ms")}, first band painted {await cold.Page.GetAttributeAsync("#lab", "data-first-band-ms")}, whole picture {await cold.Page.GetAttributeAsync("#lab", "data-first-ms")}");
         }
 
         foreach ((string name, string query) in new[]

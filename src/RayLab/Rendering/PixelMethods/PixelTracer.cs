@@ -1,4 +1,5 @@
 using RayLab.Cameras;
+using RayLab.Rendering.PixelMethods;
 
 namespace RayLab.Sampling;
 
@@ -56,8 +57,13 @@ public sealed class PixelTracer
         CheckOffset(sx, nameof(sx));
         CheckOffset(sy, nameof(sy));
         RaysTraced++;
-        return _scene.Trace(_plane.GetPixelRay(X, Row, sx, sy), _plane.TMin, _plane.TMax);
+        Intensity value = _scene.Trace(_plane.GetPixelRay(X, Row, sx, sy), _plane.TMin, _plane.TMax);
+        Recorded?.Add(new TracedPoint(sx, sy, value));
+        return value;
     }
+
+    /// <summary>Where <see cref="Trace"/> records the current pixel's points (<see cref="PixelMethodTrace"/>); null when rendering.</summary>
+    internal List<TracedPoint>? Recorded { get; set; }
 
     /// <summary>Moves to pixel (<paramref name="x"/>, <paramref name="row"/>) with no rays traced yet.</summary>
     internal void Begin(int x, int row)

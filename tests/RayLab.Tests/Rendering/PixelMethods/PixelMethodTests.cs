@@ -1,3 +1,4 @@
+using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 
 namespace RayLab.Tests.Rendering.PixelMethods;
@@ -134,5 +135,40 @@ public class PixelMethodTests
         Assert.Equal("uneven", RenderMethod.Custom(new UnevenMethod()).Name);
         Assert.Equal(0, RenderMethod.Custom(new UnevenMethod()).SamplesPerPixel);
         Assert.Throws<ArgumentNullException>(() => RenderMethod.Custom<int>(null!));
+    }
+
+    [Fact]
+    public void ATracedPixelHasTheRendersRaysAndValueAndTheMethodsOwnPoints()
+    {
+        (byte[] bytes, _, float[] rays) = Render(new UnevenMethod(), 1);
+        int row = 18, edges = 0;
+        for (int x = 0; x < 48; x++)
+        {
+            PixelMethodTrace trace = PixelMethodTrace.Trace(TwoSpheres, Camera, 48, 36, new UnevenMethod(), x, row);
+            Assert.Equal((x, row), (trace.PixelX, trace.PixelY));
+            Assert.Equal(rays[(row * 48) + x], trace.Points.Count);
+            int at = ((row * 48) + x) * 3;
+            Assert.Equal(new Rgb24(bytes[at], bytes[at + 1], bytes[at + 2]), Rgb24.FromIntensity(trace.Value));
+            int n = 1 + (x % 3);
+            Assert.Equal(Enumerable.Range(0, n).Select(i => ((i + 0.5) / n, (i + 0.5) / n)), trace.Points.Take(n).Select(p => (p.X, p.Y)));
+            // The fourth point comes from the left neighbour's value: the trace ran the row up to this pixel.
+            if (trace.Points.Count > n)
+            {
+                edges++;
+                Assert.Equal((1.0, 0.0), (trace.Points[n].X, trace.Points[n].Y));
+            }
+        }
+
+        Assert.True(edges > 0, "the row crosses an edge");
+    }
+
+    [Theory]
+    [InlineData(-1, 0, "px")]
+    [InlineData(48, 0, "px")]
+    [InlineData(0, 36, "py")]
+    public void APixelOutsideTheImageIsRejectedNamingIt(int px, int py, string name)
+    {
+        var e = Assert.Throws<ArgumentOutOfRangeException>(() => PixelMethodTrace.Trace(TwoSpheres, Camera, 48, 36, new CentreMethod(), px, py));
+        Assert.Equal(name, e.ParamName);
     }
 }
