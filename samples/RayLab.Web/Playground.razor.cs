@@ -77,9 +77,15 @@ public sealed partial class Playground : IDisposable
         _self = DotNetObjectReference.Create(this);
         _module.InvokeVoid("attach", "view", _self);
         // The first picture at once: the exact picture at a reduced size, as while dragging; the full render refines it.
-        if (Prepare() && PaintPreview(adapt: false))
+        // The interpreter prepares the exact renderer's code on a strip of 8 pixels first, so that input waits for two
+        // short blocks rather than one long one.
+        if (Prepare() && WarmUpPreview())
         {
-            _firstPreviewMs = _module.Invoke<double>("now");
+            await Task.Delay(1);
+            if (PaintPreview(adapt: false))
+            {
+                _firstPreviewMs = _module.Invoke<double>("now");
+            }
         }
 
         await RenderFullAsync();
@@ -266,7 +272,7 @@ public sealed partial class Playground : IDisposable
         Math.Clamp((int)(rows * BandMilliseconds / Math.Max(milliseconds, 0.5)), 1, Math.Clamp(2 * rows, 1, height));
 
     /// <summary>What one band of a full render aims to take: short enough for input and painting to go on between bands.</summary>
-    private const double BandMilliseconds = 40;
+    private const double BandMilliseconds = 30;
 
     private readonly Dictionary<string, int> _bandRows = [];
 
@@ -332,6 +338,20 @@ public sealed partial class Playground : IDisposable
 
         _showing = $"a preview: {(method == RenderMethod.Exact ? "the exact picture" : "one ray per pixel")} at {w}×{h}, scaled up; the full render follows";
         return true;
+    }
+
+    /// <summary>Renders the preview's method on a strip of 8 pixels; false when the library refuses the scene.</summary>
+    private bool WarmUpPreview()
+    {
+        try
+        {
+            OneThread.Render(_prepared!.Scene, _prepared.Camera, PreviewMethod(), new Image(8, 1));
+            return true;
+        }
+        catch (ArgumentException)
+        {
+            return false;
+        }
     }
 
     /// <summary>The exact picture, or one ray per pixel for a scene the exact reference cannot take.</summary>
