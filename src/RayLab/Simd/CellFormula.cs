@@ -15,7 +15,7 @@ namespace RayLab.Simd;
 /// those divisors (every count a sampler gets at 4, 16, 64, 256 spp) cost a multiply, not a divide; a divisor of 1
 /// costs nothing.
 /// </remarks>
-internal readonly struct CellFormula : IDoubleFormula
+internal readonly partial struct CellFormula : IDoubleFormula
 {
     /// <summary>The scale that makes the jitter <see cref="CounterHash.ToUnit"/> of the hash.</summary>
     public const double UnitScale = LowDiscrepancy.TwoToMinus32;
@@ -41,42 +41,18 @@ internal readonly struct CellFormula : IDoubleFormula
     }
 
     /// <inheritdoc />
+    [EveryWidth]
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector128<double> Apply(Vector128<double> a, Vector128<double> bHigh, Vector128<double> c, Vector128<double> bLow) =>
         Cell(a, ((bHigh * 256.0) + bLow) * _scale, c);
 
     /// <summary>The formula with the jitter <paramref name="jitter"/> already scaled.</summary>
+    [EveryWidth]
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector128<double> Cell(Vector128<double> a, Vector128<double> jitter, Vector128<double> c)
     {
         Vector128<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector128.Create(_inner);
         return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector128.Create(_outer);
-    }
-
-    /// <inheritdoc />
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector256<double> Apply(Vector256<double> a, Vector256<double> bHigh, Vector256<double> c, Vector256<double> bLow) =>
-        Cell(a, ((bHigh * 256.0) + bLow) * _scale, c);
-
-    /// <summary>The formula with the jitter <paramref name="jitter"/> already scaled.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector256<double> Cell(Vector256<double> a, Vector256<double> jitter, Vector256<double> c)
-    {
-        Vector256<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector256.Create(_inner);
-        return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector256.Create(_outer);
-    }
-
-    /// <inheritdoc />
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector512<double> Apply(Vector512<double> a, Vector512<double> bHigh, Vector512<double> c, Vector512<double> bLow) =>
-        Cell(a, ((bHigh * 256.0) + bLow) * _scale, c);
-
-    /// <summary>The formula with the jitter <paramref name="jitter"/> already scaled.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector512<double> Cell(Vector512<double> a, Vector512<double> jitter, Vector512<double> c)
-    {
-        Vector512<double> inner = _innerByMultiply ? (a + jitter) * _inner : (a + jitter) / Vector512.Create(_inner);
-        return _outerIsOne ? c + inner : _outerByMultiply ? (c + inner) * _outer : (c + inner) / Vector512.Create(_outer);
     }
 }
 
@@ -85,21 +61,14 @@ internal readonly struct CellFormula : IDoubleFormula
 /// one exact double b, and j = b · scale (the same double as (bHi·256 + bLo) · scale).
 /// </summary>
 /// <param name="cell">The formula.</param>
-internal readonly struct WholeHashCellFormula(CellFormula cell) : IDoubleFormula
+internal readonly partial struct WholeHashCellFormula(CellFormula cell) : IDoubleFormula
 {
     private readonly CellFormula _cell = cell;
 
     /// <inheritdoc />
+    [EveryWidth]
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector128<double> Apply(Vector128<double> a, Vector128<double> b, Vector128<double> c, Vector128<double> d) => _cell.Cell(a, b * _cell.Scale, c);
-
-    /// <inheritdoc />
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector256<double> Apply(Vector256<double> a, Vector256<double> b, Vector256<double> c, Vector256<double> d) => _cell.Cell(a, b * _cell.Scale, c);
-
-    /// <inheritdoc />
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector512<double> Apply(Vector512<double> a, Vector512<double> b, Vector512<double> c, Vector512<double> d) => _cell.Cell(a, b * _cell.Scale, c);
 }
 
 /// <summary>
@@ -107,7 +76,7 @@ internal readonly struct WholeHashCellFormula(CellFormula cell) : IDoubleFormula
 /// with no branch. Multiplying by 1 and adding a c of 0 are exact, so this is the same double as
 /// <see cref="CellFormula"/>'s for every such pair.
 /// </summary>
-internal readonly struct PowerOfTwoCellFormula : IDoubleFormula
+internal readonly partial struct PowerOfTwoCellFormula : IDoubleFormula
 {
     private readonly double _scale, _inner, _outer;
 
@@ -128,17 +97,8 @@ internal readonly struct PowerOfTwoCellFormula : IDoubleFormula
     }
 
     /// <inheritdoc />
+    [EveryWidth]
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector128<double> Apply(Vector128<double> a, Vector128<double> b, Vector128<double> c, Vector128<double> d) =>
-        (c + ((a + (b * _scale)) * _inner)) * _outer;
-
-    /// <inheritdoc />
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector256<double> Apply(Vector256<double> a, Vector256<double> b, Vector256<double> c, Vector256<double> d) =>
-        (c + ((a + (b * _scale)) * _inner)) * _outer;
-
-    /// <inheritdoc />
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Vector512<double> Apply(Vector512<double> a, Vector512<double> b, Vector512<double> c, Vector512<double> d) =>
         (c + ((a + (b * _scale)) * _inner)) * _outer;
 }
