@@ -82,7 +82,7 @@ public sealed partial class Playground : IDisposable
         if (Prepare() && WarmUpPreview())
         {
             await Task.Delay(1);
-            if (PaintPreview(adapt: false))
+            if (PaintPreview(FirstPreviewScale))
             {
                 _firstPreviewMs = _module.Invoke<double>("now");
             }
@@ -295,7 +295,7 @@ public sealed partial class Playground : IDisposable
             return;
         }
 
-        if (!PaintPreview(adapt: true))
+        if (!PaintPreview(null))
         {
             StateHasChanged();
             return;
@@ -307,12 +307,20 @@ public sealed partial class Playground : IDisposable
     }
 
     /// <summary>
-    /// Renders the exact picture at a reduced size and paints it scaled up over the canvas; with <paramref name="adapt"/>
-    /// the size follows the measured time, aiming at 30 ms a frame. False (and the error line) when the library refuses.
+    /// The first picture's scale: a quarter of the width and height, since its time is mostly the interpreter's first
+    /// calls (the half-size one blocked input 100-190 ms).
     /// </summary>
-    private bool PaintPreview(bool adapt)
+    private const double FirstPreviewScale = 0.25;
+
+    /// <summary>
+    /// Renders the exact picture at a reduced size and paints it scaled up over the canvas: at <paramref name="scale"/>,
+    /// or (null) at the drag scale, which follows the measured time, aiming at 30 ms a frame. False (and the error line)
+    /// when the library refuses.
+    /// </summary>
+    private bool PaintPreview(double? scale)
     {
-        int w = Math.Max(1, (int)(_state.Width * _previewScale)), h = Math.Max(1, (int)(_state.Height * _previewScale));
+        double s = scale ?? _previewScale;
+        int w = Math.Max(1, (int)(_state.Width * s)), h = Math.Max(1, (int)(_state.Height * s));
         var preview = new Image(w, h);
         var clock = Stopwatch.StartNew();
         RenderMethod method;
@@ -330,7 +338,7 @@ public sealed partial class Playground : IDisposable
         _module?.InvokeVoid("paintPreview", "view", preview.PixelBytes.ToArray(), w, h, _state.Width, _state.Height);
         double ms = clock.Elapsed.TotalMilliseconds;
         _previewMs = ms;
-        if (adapt)
+        if (scale is null)
         {
             // Its pixel count scales with the square of the scale.
             _previewScale = Math.Clamp(_previewScale * Math.Sqrt(30 / Math.Max(ms, 1)), 0.15, 1);
