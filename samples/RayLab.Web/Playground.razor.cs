@@ -276,7 +276,7 @@ public sealed partial class Playground : IDisposable
 
     private readonly Dictionary<string, int> _bandRows = [];
 
-    /// <summary>A camera move from the pointer: an exact preview at a reduced size, sized to stay near 30 ms.</summary>
+    /// <summary>A camera move from the pointer: an exact preview at a reduced size, sized to stay near <see cref="PreviewMilliseconds"/>.</summary>
     [JSInvokable]
     public async Task Move(double dx, double dy, double zoom)
     {
@@ -306,6 +306,9 @@ public sealed partial class Playground : IDisposable
         await Task.Yield();
     }
 
+    /// <summary>What a preview frame while dragging aims to take (the target is 50 ms: the margin is for the frame that runs long).</summary>
+    private const double PreviewMilliseconds = 25;
+
     /// <summary>
     /// The first picture's scale: a quarter of the width and height, since its time is mostly the interpreter's first
     /// calls (the half-size one blocked input 100-190 ms).
@@ -314,7 +317,7 @@ public sealed partial class Playground : IDisposable
 
     /// <summary>
     /// Renders the exact picture at a reduced size and paints it scaled up over the canvas: at <paramref name="scale"/>,
-    /// or (null) at the drag scale, which follows the measured time, aiming at 30 ms a frame. False (and the error line)
+    /// or (null) at the drag scale, which follows the measured time, aiming at <see cref="PreviewMilliseconds"/> a frame. False (and the error line)
     /// when the library refuses.
     /// </summary>
     private bool PaintPreview(double? scale)
@@ -340,8 +343,9 @@ public sealed partial class Playground : IDisposable
         _previewMs = ms;
         if (scale is null)
         {
-            // Its pixel count scales with the square of the scale.
-            _previewScale = Math.Clamp(_previewScale * Math.Sqrt(30 / Math.Max(ms, 1)), 0.15, 1);
+            // Its pixel count scales with the square of the scale; it grows by at most a quarter a move, since one fast
+            // frame followed by a full-size step overshot to 51-58 ms on one move in eight.
+            _previewScale = Math.Clamp(_previewScale * Math.Min(Math.Sqrt(PreviewMilliseconds / Math.Max(ms, 1)), 1.25), 0.15, 1);
         }
 
         _showing = $"a preview: {(method == RenderMethod.Exact ? "the exact picture" : "one ray per pixel")} at {w}×{h}, scaled up; the full render follows";
