@@ -44,6 +44,7 @@ public sealed partial class Playground : IDisposable
     private double? _startMs;
     private double? _firstBandMs;
     private double? _firstPreviewMs;
+    private int? _firstRows;
     private string? _showing;
     private readonly List<Trial> _trials = [];
     private IJSInProcessObjectReference? _module;
@@ -76,6 +77,17 @@ public sealed partial class Playground : IDisposable
         _startMs = _module.Invoke<double>("now");
         _self = DotNetObjectReference.Create(this);
         _module.InvokeVoid("attach", "view", _self);
+        if (FirstPicture.Take(_state) is Handoff first)
+        {
+            // Program rendered the picture before the controls started: take it over, and render the rows left once the
+            // controls' own first render is painted.
+            _firstBandMs = first.FirstBandMs;
+            _firstRows = first.Done.Rows;
+            await Task.Delay(1);
+            await RenderFullAsync(first);
+            return;
+        }
+
         // The first picture at once: the exact picture at a reduced size, as while dragging; the full render refines it.
         // The interpreter prepares the exact renderer's code on a strip of 8 pixels first, so that input waits for two
         // short blocks rather than one long one.
@@ -91,22 +103,12 @@ public sealed partial class Playground : IDisposable
         await RenderFullAsync();
     }
 
-    /// <summary>Checks the state with the library (SceneDescription.Prepare); a problem becomes the page's error line.</summary>
+    /// <summary>Checks the state with the library (<see cref="LabState.Prepare"/>); a problem becomes the page's error line.</summary>
     private bool Prepare()
     {
         try
         {
-            if (OwnMethods.IsOwn(_state.Sampler.Type))
-            {
-                // The library checks everything but the method, which is the sample project's.
-                RenderMethod own = OwnMethods.Create(_state.Sampler);
-                _prepared = (_state with { Sampler = SamplerSettings.Default }).Describe().Prepare() with { Method = own };
-            }
-            else
-            {
-                _prepared = _state.Describe().Prepare();
-            }
-
+            _prepared = _state.Prepare();
             _plane = _prepared.Camera.GetImagePlane(_state.Width, _state.Height);
             _error = null;
             return true;
@@ -116,11 +118,6 @@ public sealed partial class Playground : IDisposable
             _error = e.Message;
             return false;
         }
-        catch (ArgumentOutOfRangeException e)
-        {
-            _error = new SceneFileException(_state.Source, "sampler.samples", e.Message.Split('(')[0].Trim()).Message;
-            return false;
-        }
     }
 
     /// <summary>A key for everything the exact picture depends on: scene, camera and size.</summary>
@@ -128,9 +125,10 @@ public sealed partial class Playground : IDisposable
 
     /// <summary>
     /// Renders the current state at full size in row bands, yielding to the browser between bands, then the exact picture
-    /// (cached per view) for the error; a new move or setting cancels it.
+    /// (cached per view) for the error; a new move or setting cancels it. With <paramref name="first"/>, it goes on from
+    /// the rows the first picture finished before the controls started.
     /// </summary>
-    private async Task RenderFullAsync()
+    private async Task RenderFullAsync(Handoff? first = null)
     {
         CancellationTokenSource cancel = Restart();
         if (!Prepare())
@@ -146,14 +144,23 @@ public sealed partial class Playground : IDisposable
         StateHasChanged();
         try
         {
-            await Task.Delay(1, cancel.Token);
             var clock = Stopwatch.StartNew();
-            var image = new Image(_state.Width, _state.Height);
-            var rays = new float[image.Width * image.Height];
-            RenderStatistics stats = await RenderInBandsAsync(prepared.Scene, prepared.Camera, prepared.Method, image, rays, _state.View == "picture", cancel.Token);
-            double wall = clock.Elapsed.TotalMilliseconds;
+            var image = first?.Image ?? new Image(_state.Width, _state.Height);
+            var rays = first?.Rays ?? new float[image.Width * image.Height];
+            BandProgress from = first?.Done ?? BandProgress.None;
+            if (first is not null)
+            {
+                Paint(image.PixelBytes.ToArray(), image.Width, image.Height);
+            }
+
+            await Task.Delay(1, cancel.Token);
+            bool paint = _state.View == "picture";
+            BandProgress done = await _bands.RenderAsync(
+                PageRenderer(cancel.Token), prepared, image, rays, from, paint ? PaintRows(image) : null, null, cancel.Token);
+            RenderStatistics stats = done.Statistics(prepared.Method.Name, rays);
+            double wall = (first?.WallMs ?? 0) + clock.Elapsed.TotalMilliseconds;
             Paint(image.PixelBytes.ToArray(), image.Width, image.Height);
-            _firstMs ??= _module?.Invoke<double>("now");
+            _firstMs ??= first?.DoneMs ?? _module?.Invoke<double>("now");
             await Task.Delay(1, cancel.Token);
             string key = ExactKey;
             Image exact;
@@ -168,7 +175,7 @@ public sealed partial class Playground : IDisposable
             else
             {
                 exact = new Image(image.Width, image.Height);
-                await RenderInBandsAsync(prepared.Scene, prepared.Camera, RenderMethod.Exact, exact, null, false, cancel.Token);
+                await _bands.RenderAsync(PageRenderer(cancel.Token), prepared with { Method = RenderMethod.Exact }, exact, null, BandProgress.None, null, null, cancel.Token);
             }
 
             _exact = (key, exact);
@@ -214,67 +221,17 @@ public sealed partial class Playground : IDisposable
         return _cancel;
     }
 
-    /// <summary>
-    /// Renders <paramref name="image"/> a band of rows at a time (<see cref="Renderer.RenderRows"/>), yielding to the
-    /// browser between bands so that input is never blocked for longer than a band; each band's rows are painted as
-    /// they come when <paramref name="paint"/> is set. The band height follows the measured speed, aiming at
-    /// <see cref="BandMilliseconds"/> a band.
-    /// </summary>
-    private async Task<RenderStatistics> RenderInBandsAsync(Scene scene, Camera camera, RenderMethod method, Image image, float[]? rays, bool paint, CancellationToken cancel)
+    /// <summary>The renderer of the page's full renders: one thread (the page's), the state's kernel, cancelled by the next change.</summary>
+    private Renderer PageRenderer(CancellationToken cancel) => new() { MaxDegreeOfParallelism = 1, CancellationToken = cancel, Kernel = _state.Kernel };
+
+    /// <summary>Paints a band of <paramref name="image"/>'s rows onto the canvas as it is finished.</summary>
+    private Action<int, int> PaintRows(Image image) => (first, count) =>
     {
-        var renderer = new Renderer { MaxDegreeOfParallelism = 1, CancellationToken = cancel, Kernel = _state.Kernel };
-        long primary = 0;
-        TimeSpan time = default;
-        RenderKernel kernel = RenderKernel.Scalar;
-        if (!_bandRows.TryGetValue(method.Name, out int rows))
-        {
-            // A method's first call in the page: the interpreter prepares its code on a strip of 8 pixels (20-40 ms), apart
-            // from the first band, which then starts at one row.
-            renderer.Render(scene, camera, method, new Image(8, 1));
-            rows = 1;
-            await Task.Delay(1, cancel);
-        }
+        _module?.InvokeVoid("paintRows", "view", image.PixelBytes.Slice(first * image.Width * 3, count * image.Width * 3).ToArray(), image.Width, first);
+        _firstBandMs ??= _module?.Invoke<double>("now");
+    };
 
-        for (int first = 0; first < image.Height;)
-        {
-            int count = Math.Min(rows, image.Height - first);
-            RenderStatistics band = renderer.RenderRows(scene, camera, method, image, first, count, rays);
-            primary += band.PrimaryRays;
-            time += band.RenderTime;
-            kernel = band.Kernel;
-            if (paint)
-            {
-                _module?.InvokeVoid("paintRows", "view", image.PixelBytes.Slice(first * image.Width * 3, count * image.Width * 3).ToArray(), image.Width, first);
-                _firstBandMs ??= _module?.Invoke<double>("now");
-            }
-
-            first += count;
-            rows = NextBand(count, band.RenderTime.TotalMilliseconds, image.Height);
-            await Task.Delay(1, cancel);
-        }
-
-        _bandRows[method.Name] = rows;
-        // Adaptive bands each count the whole image's pixel corners: the rays charged to the pixels are the cost.
-        if (rays is not null && method.Name == "adaptive")
-        {
-            primary = (long)Math.Round(rays.Sum(r => (double)r));
-        }
-
-        return new RenderStatistics(primary, time) { Kernel = kernel };
-    }
-
-    /// <summary>
-    /// The next band's height: the rows that take <see cref="BandMilliseconds"/> at the last band's speed, at most twice
-    /// the last band, since rows differ in cost (the background is cheap, a sphere's edge is not: a 66-row band of sky
-    /// in 7 ms was followed by 292 rows in 229 ms before this limit).
-    /// </summary>
-    private static int NextBand(int rows, double milliseconds, int height) =>
-        Math.Clamp((int)(rows * BandMilliseconds / Math.Max(milliseconds, 0.5)), 1, Math.Clamp(2 * rows, 1, height));
-
-    /// <summary>What one band of a full render aims to take: short enough for input and painting to go on between bands.</summary>
-    private const double BandMilliseconds = 30;
-
-    private readonly Dictionary<string, int> _bandRows = [];
+    private readonly Bands _bands = new();
 
     /// <summary>A camera move from the pointer: an exact preview at a reduced size, sized to stay near <see cref="PreviewMilliseconds"/>.</summary>
     [JSInvokable]

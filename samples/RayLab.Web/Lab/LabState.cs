@@ -63,6 +63,30 @@ internal sealed record LabState
     public SceneDescription Describe() =>
         SceneFile.Parse(SceneText, Source) with { Width = Width, Height = Height, Camera = Camera, Sampler = Sampler };
 
+    /// <summary>
+    /// The scene, camera and method this state renders, checked by the library (<see cref="SceneDescription.Prepare"/>);
+    /// the sample project's own methods are checked by their own constructors.
+    /// </summary>
+    /// <exception cref="SceneFileException">The state is not a scene the library renders: the message names the field.</exception>
+    public PreparedScene Prepare()
+    {
+        try
+        {
+            if (OwnMethods.IsOwn(Sampler.Type))
+            {
+                // The library checks everything but the method, which is the sample project's.
+                RenderMethod own = OwnMethods.Create(Sampler);
+                return (this with { Sampler = SamplerSettings.Default }).Describe().Prepare() with { Method = own };
+            }
+
+            return Describe().Prepare();
+        }
+        catch (ArgumentOutOfRangeException e)
+        {
+            throw new SceneFileException(Source, "sampler.samples", e.Message.Split('(')[0].Trim());
+        }
+    }
+
     /// <summary>The name the library's messages give the scene: the preset's, or <c>editor</c>.</summary>
     public string Source => Preset == Custom ? "editor" : Preset;
 

@@ -120,10 +120,26 @@ export function attach(id, component) {
 }
 
 // How long the main thread was blocked: the longest gap between animation frames since the last call (for the figures).
+// A call starts the next gap at its own time, so what blocked the page before it (Blazor's start) is not counted.
 let longest = 0, last = 0;
 function frame(t) { if (last) longest = Math.max(longest, t - last); last = t; requestAnimationFrame(frame); }
 requestAnimationFrame(frame);
-export function longestFrameGap() { const l = longest; longest = 0; return l; }
+export function longestFrameGap() { const l = longest; longest = 0; last = performance.now(); return l; }
 
 // Milliseconds since navigation started (the first picture's time).
 export function now() { return performance.now(); }
+
+// The first picture, painted band by band onto the loading page before the page's controls start (Lab/FirstPicture.cs):
+// view is .NET's memory view of the band's RGB24 bytes.
+export function paintFirstRows(view, width, height, firstRow, method) {
+  const canvas = document.getElementById('first');
+  if (!canvas) return;
+  if (canvas.hidden) {
+    canvas.width = width; canvas.height = height; canvas.hidden = false;
+    const caption = document.getElementById('first-caption');
+    if (caption) caption.textContent = `The picture: ${method}, ${width}×${height}. The controls follow.`;
+  }
+  const ctx = canvas.getContext('2d');
+  const rgb = view.slice();
+  ctx.putImageData(imageData(ctx, rgb, width, rgb.length / 3 / width), 0, firstRow);
+}
