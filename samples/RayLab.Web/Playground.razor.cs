@@ -51,6 +51,7 @@ public sealed partial class Playground : IDisposable
     private DotNetObjectReference<Playground>? _self;
     private CancellationTokenSource? _cancel;
     private (string Key, Image Image)? _exact;
+    private (Image Image, byte[] Bytes)? _preview;
     private (string Key, Intensity[] Linear)? _exactLinear;
 
     /// <summary>The RayLab version the page runs (the core assembly's informational version).</summary>
@@ -281,7 +282,13 @@ public sealed partial class Playground : IDisposable
     {
         double s = scale ?? _previewScale;
         int w = Math.Max(1, (int)(_state.Width * s)), h = Math.Max(1, (int)(_state.Height * s));
-        var preview = new Image(w, h);
+        // One image and one byte array per preview size, kept across moves: a drag makes no garbage for the collector.
+        if (_preview is not { } kept || kept.Image.Width != w || kept.Image.Height != h)
+        {
+            _preview = (new Image(w, h), new byte[w * h * 3]);
+        }
+
+        (Image preview, byte[] bytes) = _preview.Value;
         var clock = Stopwatch.StartNew();
         RenderMethod method;
         try
@@ -295,7 +302,8 @@ public sealed partial class Playground : IDisposable
             return false;
         }
 
-        _module?.InvokeVoid("paintPreview", "view", preview.PixelBytes.ToArray(), w, h, _state.Width, _state.Height);
+        preview.PixelBytes.CopyTo(bytes);
+        _module?.InvokeVoid("paintPreview", "view", bytes, w, h, _state.Width, _state.Height);
         double ms = clock.Elapsed.TotalMilliseconds;
         _previewMs = ms;
         if (scale is null)
