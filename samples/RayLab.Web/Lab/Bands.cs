@@ -27,7 +27,11 @@ internal sealed class Bands(double milliseconds = Bands.Milliseconds, bool warmU
         Action<int, int>? painted, Func<bool>? stop, CancellationToken cancel)
     {
         RenderMethod method = prepared.Method;
-        if (!_rows.TryGetValue(method.Name, out int rows) && warmUp)
+        bool first = !_rows.TryGetValue(method.Name, out int rows);
+        // A method's first render aims at half the band time: the interpreter compiles its hot loops during a band
+        // (60-90 ms at once), and the band's own time comes on top.
+        double aim = first ? milliseconds / 2 : milliseconds;
+        if (first && warmUp)
         {
             // A method's first call in the page: the interpreter prepares its code on a strip of 8 pixels (20-40 ms), apart
             // from the first band, which then starts at one row.
@@ -44,7 +48,7 @@ internal sealed class Bands(double milliseconds = Bands.Milliseconds, bool warmU
             RenderStatistics band = renderer.RenderRows(prepared.Scene, prepared.Camera, method, image, done.Rows, count, rays);
             painted?.Invoke(done.Rows, count);
             done = new BandProgress(done.Rows + count, done.PrimaryRays + band.PrimaryRays, done.RenderTime + band.RenderTime, band.Kernel);
-            rows = Next(count, band.RenderTime.TotalMilliseconds, image.Height);
+            rows = Next(count, band.RenderTime.TotalMilliseconds, image.Height, aim);
             _rows[method.Name] = rows;
             await Task.Delay(1, cancel);
         }
@@ -53,12 +57,12 @@ internal sealed class Bands(double milliseconds = Bands.Milliseconds, bool warmU
     }
 
     /// <summary>
-    /// The next band's height: the rows that take the aimed time at the last band's speed, at most twice the
+    /// The next band's height: the rows that take <paramref name="aim"/> at the last band's speed, at most twice the
     /// last band, since rows differ in cost (the background is cheap, a sphere's edge is not: a 66-row band of sky in 7 ms
     /// was followed by 292 rows in 229 ms before this limit).
     /// </summary>
-    private int Next(int rows, double took, int height) =>
-        Math.Clamp((int)(rows * milliseconds / Math.Max(took, 0.5)), 1, Math.Clamp(2 * rows, 1, height));
+    private static int Next(int rows, double took, int height, double aim) =>
+        Math.Clamp((int)(rows * aim / Math.Max(took, 0.5)), 1, Math.Clamp(2 * rows, 1, height));
 }
 
 /// <summary>How far a render in bands has come: the rows finished from the top, and their statistics.</summary>
