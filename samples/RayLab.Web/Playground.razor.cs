@@ -228,7 +228,7 @@ public sealed partial class Playground : IDisposable
     /// <summary>Paints a band of <paramref name="image"/>'s rows onto the canvas as it is finished.</summary>
     private Action<int, int> PaintRows(Image image) => (first, count) =>
     {
-        _module?.InvokeVoid("paintRows", "view", image.PixelBytes.Slice(first * image.Width * 3, count * image.Width * 3).ToArray(), image.Width, first);
+        _module?.InvokeVoid("paintRows", "view", Bands.RowBytes(image, first, count).ToArray(), image.Width, first);
         _firstBandMs ??= _module?.Invoke<double>("now");
     };
 

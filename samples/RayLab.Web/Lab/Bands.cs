@@ -31,7 +31,7 @@ internal sealed class Bands(double milliseconds = Bands.Milliseconds, bool warmU
         // A method's first render aims at half the band time: the interpreter compiles its hot loops during a band
         // (60-90 ms at once), and the band's own time comes on top.
         double aim = first ? milliseconds / 2 : milliseconds;
-        if (first && warmUp)
+        if (first && warmUp && from.Rows < image.Height)
         {
             // A method's first call in the page: the interpreter prepares its code on a strip of 8 pixels (20-40 ms), apart
             // from the first band, which then starts at one row.
@@ -55,6 +55,9 @@ internal sealed class Bands(double milliseconds = Bands.Milliseconds, bool warmU
 
         return done;
     }
+
+    /// <summary>The RGB24 bytes of <paramref name="count"/> rows of <paramref name="image"/> from row <paramref name="first"/>.</summary>
+    public static Span<byte> RowBytes(Image image, int first, int count) => image.PixelBytes.Slice(first * image.Width * 3, count * image.Width * 3);
 
     /// <summary>
     /// The next band's height: the rows that take <paramref name="aim"/> at the last band's speed, at most twice the

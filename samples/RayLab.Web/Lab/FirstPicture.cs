@@ -45,7 +45,7 @@ internal static partial class FirstPicture
             double? firstBand = null;
             BandProgress done = await bands.RenderAsync(renderer, prepared, image, rays, BandProgress.None, (first, count) =>
             {
-                PaintRows(image.PixelBytes.Slice(first * image.Width * 3, count * image.Width * 3), image.Width, image.Height, first, prepared.SamplerDescription);
+                PaintRows(Bands.RowBytes(image, first, count), image.Width, image.Height, first, prepared.SamplerDescription);
                 firstBand ??= Now();
             }, () => clock.Elapsed >= Budget, CancellationToken.None);
             _handoff = new Handoff(state.ToQuery(), image, rays, done, clock.Elapsed.TotalMilliseconds, firstBand, done.Rows == image.Height ? Now() : null);
