@@ -38,7 +38,9 @@ public sealed partial class Playground : IDisposable
     private PreparedScene? _prepared;
     private ImagePlane? _plane;
     private double? _previewMs;
-    private double _previewScale = 0.5;
+    private int _previews;
+    private int _previewStep = 4;
+    private DragWarmUp _dragWarm;
     private double _longestGap;
     private double? _firstMs;
     private double? _startMs;
@@ -51,7 +53,7 @@ public sealed partial class Playground : IDisposable
     private DotNetObjectReference<Playground>? _self;
     private CancellationTokenSource? _cancel;
     private (string Key, Image Image)? _exact;
-    private (Image Image, byte[] Bytes)? _preview;
+    private readonly Dictionary<(int Width, int Height), (Image Image, byte[] Bytes)> _previewImages = [];
     private (string Key, Intensity[] Linear)? _exactLinear;
 
     /// <summary>The RayLab version the page runs (the core assembly's informational version).</summary>
@@ -95,7 +97,7 @@ public sealed partial class Playground : IDisposable
         if (Prepare() && WarmUpPreview())
         {
             await Task.Delay(1);
-            if (PaintPreview(FirstPreviewScale))
+            if (PaintPreview(FirstPreviewStep))
             {
                 _firstPreviewMs = _module.Invoke<double>("now");
             }
@@ -199,6 +201,10 @@ public sealed partial class Playground : IDisposable
             _status = "ready";
             UpdateUrl();
             StateHasChanged();
+            if (_dragWarm == DragWarmUp.NotStarted)
+            {
+                await WarmUpDragAsync(cancel.Token);
+            }
         }
         catch (OperationCanceledException)
         {
@@ -268,53 +274,120 @@ public sealed partial class Playground : IDisposable
     private const double PreviewMilliseconds = 25;
 
     /// <summary>
-    /// The first picture's scale: a quarter of the width and height, since its time is mostly the interpreter's first
-    /// calls (the half-size one blocked input 100-190 ms).
+    /// The first picture's preview step (a quarter of the width and height), since its time is mostly the interpreter's
+    /// first calls (the half-size one blocked input 100-190 ms).
     /// </summary>
-    private const double FirstPreviewScale = 0.25;
+    private const int FirstPreviewStep = 8;
+
+    /// <summary>The preview sizes: step k scales the width and height by 2^(-k/4), from the full size (0) down to 0.15 (11).</summary>
+    private static double PreviewScale(int step) => Math.Pow(2, -step / 4.0);
+
+    private const int SmallestPreviewStep = 11;
 
     /// <summary>
-    /// Renders the exact picture at a reduced size and paints it scaled up over the canvas: at <paramref name="scale"/>,
-    /// or (null) at the drag scale, which follows the measured time, aiming at <see cref="PreviewMilliseconds"/> a frame. False (and the error line)
-    /// when the library refuses.
+    /// Renders the exact picture at a reduced size and paints it scaled up over the canvas: at <paramref name="step"/>, or
+    /// (null) at the drag's step, which follows the measured time, aiming at <see cref="PreviewMilliseconds"/> a frame.
+    /// False (and the error line) when the library refuses.
     /// </summary>
-    private bool PaintPreview(double? scale)
+    private bool PaintPreview(int? step)
     {
-        double s = scale ?? _previewScale;
-        int w = Math.Max(1, (int)(_state.Width * s)), h = Math.Max(1, (int)(_state.Height * s));
-        // One image and one byte array per preview size, kept across moves: a drag makes no garbage for the collector.
-        if (_preview is not { } kept || kept.Image.Width != w || kept.Image.Height != h)
+        int at = step ?? _previewStep;
+        if (RenderPreview(at) is not (Image preview, byte[] bytes, RenderMethod method, double renderMs))
         {
-            _preview = (new Image(w, h), new byte[w * h * 3]);
+            return false;
         }
 
-        (Image preview, byte[] bytes) = _preview.Value;
+        var clock = Stopwatch.StartNew();
+        _module?.InvokeVoid("paintPreview", "view", bytes, preview.Width, preview.Height, _state.Width, _state.Height);
+        double ms = renderMs + clock.Elapsed.TotalMilliseconds;
+        _previewMs = ms;
+        _previews++;
+        if (step is null)
+        {
+            // A step up is 1.41 times the pixels, so it grows by one step a move at most, and only when the frame would
+            // stay under the aim: one fast frame followed by a larger step overshot to 51-58 ms on one move in eight.
+            double wanted = PreviewScale(at) * Math.Sqrt(PreviewMilliseconds / Math.Max(ms, 1));
+            int next = at - 1;
+            while (next < SmallestPreviewStep && PreviewScale(next) > wanted)
+            {
+                next++;
+            }
+
+            _previewStep = next;
+        }
+
+        _showing = $"a preview: {(method == RenderMethod.Exact ? "the exact picture" : "one ray per pixel")} at {preview.Width}×{preview.Height}, scaled up; the full render follows";
+        return true;
+    }
+
+    /// <summary>
+    /// Renders the preview's method at <paramref name="step"/> into that size's image and byte copy, which are kept: the
+    /// steps are few, so a drag reuses them and makes no large objects for the collector. With its time in ms; null (and
+    /// the error line) when the library refuses.
+    /// </summary>
+    private (Image Image, byte[] Bytes, RenderMethod Method, double Ms)? RenderPreview(int step)
+    {
+        double s = PreviewScale(step);
+        int w = Math.Max(1, (int)(_state.Width * s)), h = Math.Max(1, (int)(_state.Height * s));
+        if (!_previewImages.TryGetValue((w, h), out (Image Image, byte[] Bytes) kept))
+        {
+            if (_previewImages.Count > SmallestPreviewStep)
+            {
+                _previewImages.Clear(); // the page's size changed: the old sizes will not come back soon
+            }
+
+            kept = (new Image(w, h), new byte[w * h * 3]);
+            _previewImages[(w, h)] = kept;
+        }
+
         var clock = Stopwatch.StartNew();
         RenderMethod method;
         try
         {
             method = PreviewMethod();
-            OneThread.Render(_prepared!.Scene, _prepared.Camera, method, preview);
+            OneThread.Render(_prepared!.Scene, _prepared.Camera, method, kept.Image);
         }
         catch (ArgumentException e)
         {
             _error = SceneFileException.OneLine(e.Message);
-            return false;
+            return null;
         }
 
-        preview.PixelBytes.CopyTo(bytes);
-        _module?.InvokeVoid("paintPreview", "view", bytes, w, h, _state.Width, _state.Height);
-        double ms = clock.Elapsed.TotalMilliseconds;
-        _previewMs = ms;
-        if (scale is null)
+        kept.Image.PixelBytes.CopyTo(kept.Bytes);
+        return (kept.Image, kept.Bytes, method, clock.Elapsed.TotalMilliseconds);
+    }
+
+    /// <summary>
+    /// Renders two drag previews, unpainted, while the page is idle after its first picture. The interpreter compiles a
+    /// loop's faster code once it has run many times; without this that compile fell in a drag's second frame (46-82 ms).
+    /// </summary>
+    private async Task WarmUpDragAsync(CancellationToken cancel)
+    {
+        _dragWarm = DragWarmUp.Started;
+        try
         {
-            // Its pixel count scales with the square of the scale; it grows by at most a quarter a move, since one fast
-            // frame followed by a full-size step overshot to 51-58 ms on one move in eight.
-            _previewScale = Math.Clamp(_previewScale * Math.Min(Math.Sqrt(PreviewMilliseconds / Math.Max(ms, 1)), 1.25), 0.15, 1);
+            for (int i = 0; i < 2; i++)
+            {
+                await Task.Delay(1, cancel);
+                if (RenderPreview(_previewStep) is null)
+                {
+                    return;
+                }
+            }
         }
+        finally
+        {
+            _dragWarm = DragWarmUp.Done;
+            StateHasChanged();
+        }
+    }
 
-        _showing = $"a preview: {(method == RenderMethod.Exact ? "the exact picture" : "one ray per pixel")} at {w}×{h}, scaled up; the full render follows";
-        return true;
+    /// <summary>Where the drag's warm-up is: it runs once a page, after the first picture (a new move cancels it).</summary>
+    private enum DragWarmUp
+    {
+        NotStarted,
+        Started,
+        Done,
     }
 
     /// <summary>Renders the preview's method on a strip of 8 pixels; false when the library refuses the scene.</summary>
