@@ -39,6 +39,7 @@ public sealed partial class Playground : IDisposable
     private ImagePlane? _plane;
     private double? _previewMs;
     private int _previews;
+    private string _previewCollections = "0/0"; // the garbage collections during the last preview: nursery/major
     private int _previewStep = 4;
     private DragWarmUp _dragWarm;
     private double _longestGap;
@@ -341,6 +342,7 @@ public sealed partial class Playground : IDisposable
         }
 
         var clock = Stopwatch.StartNew();
+        int minor = GC.CollectionCount(0), major = GC.CollectionCount(GC.MaxGeneration);
         RenderMethod method;
         try
         {
@@ -354,6 +356,7 @@ public sealed partial class Playground : IDisposable
         }
 
         kept.Image.PixelBytes.CopyTo(kept.Bytes);
+        _previewCollections = $"{GC.CollectionCount(0) - minor}/{GC.CollectionCount(GC.MaxGeneration) - major}";
         return (kept.Image, kept.Bytes, method, clock.Elapsed.TotalMilliseconds);
     }
 
@@ -366,7 +369,7 @@ public sealed partial class Playground : IDisposable
         _dragWarm = DragWarmUp.Started;
         try
         {
-            for (int i = 0; i < 2; i++)
+            for (int i = 0; i < 8; i++)
             {
                 await Task.Delay(1, cancel);
                 if (RenderPreview(_previewStep) is null)

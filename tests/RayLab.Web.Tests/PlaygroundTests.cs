@@ -354,7 +354,9 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
                 int painted = int.Parse(await drag.Page.GetAttributeAsync("#lab", "data-previews") ?? "0", CultureInfo.InvariantCulture);
                 await drag.Page.Mouse.MoveAsync(cx + (i * 12), cy);
                 await drag.Page.WaitForFunctionAsync($"() => Number(document.getElementById('lab').dataset.previews) > {painted}");
-                previews.Add(await drag.Page.GetAttributeAsync("#lab", "data-preview-ms") ?? "");
+                // With the garbage collections that ran during the preview, if any (nursery/major).
+                string gc = await drag.Page.GetAttributeAsync("#lab", "data-preview-gc") ?? "0/0";
+                previews.Add((await drag.Page.GetAttributeAsync("#lab", "data-preview-ms") ?? "") + (gc == "0/0" ? "" : $" (GC {gc})"));
             }
 
             await drag.Page.Mouse.UpAsync();
