@@ -361,18 +361,20 @@ public sealed partial class Playground : IDisposable
     }
 
     /// <summary>
-    /// Renders two drag previews, unpainted, while the page is idle after its first picture. The interpreter compiles a
-    /// loop's faster code once it has run many times; without this that compile fell in a drag's second frame (46-82 ms).
+    /// Renders <see cref="DragWarmUpPreviews"/> drag previews, unpainted, one a task, while the page is idle after its
+    /// first picture. The interpreter compiles a loop's faster code once it has run many times; without this, that
+    /// compile fell in the second frame of a drag (46-82 ms), and with two previews in its seventh (47-76 ms).
     /// </summary>
     private async Task WarmUpDragAsync(CancellationToken cancel)
     {
         _dragWarm = DragWarmUp.Started;
         try
         {
-            for (int i = 0; i < 8; i++)
+            for (int i = 0; i < DragWarmUpPreviews; i++)
             {
+                // The drag's step and the steps either side, where its first moves go, so each size's image is made too.
                 await Task.Delay(1, cancel);
-                if (RenderPreview(_previewStep) is null)
+                if (RenderPreview(Math.Clamp(_previewStep + (i % 3) - 1, 0, SmallestPreviewStep)) is null)
                 {
                     return;
                 }
@@ -384,6 +386,8 @@ public sealed partial class Playground : IDisposable
             StateHasChanged();
         }
     }
+
+    private const int DragWarmUpPreviews = 8;
 
     /// <summary>Where the drag's warm-up is: it runs once a page, after the first picture (a new move cancels it).</summary>
     private enum DragWarmUp
