@@ -362,8 +362,9 @@ public sealed partial class Playground : IDisposable
 
     /// <summary>
     /// Renders <see cref="DragWarmUpPreviews"/> drag previews, unpainted, one a task, while the page is idle after its
-    /// first picture. The interpreter compiles a loop's faster code once it has run many times; without this, that
-    /// compile fell in the second frame of a drag (46-82 ms), and with two previews in its seventh (47-76 ms).
+    /// first picture. The interpreter compiles a loop's faster code once it has run many times: without this, that
+    /// compile fell in the second frame of a drag (46-82 ms); with two previews, in its seventh (47-76 ms), and with
+    /// eight in its second (34-56 ms), each time about the tenth preview rendered.
     /// </summary>
     private async Task WarmUpDragAsync(CancellationToken cancel)
     {
@@ -387,7 +388,7 @@ public sealed partial class Playground : IDisposable
         }
     }
 
-    private const int DragWarmUpPreviews = 8;
+    private const int DragWarmUpPreviews = 12;
 
     /// <summary>Where the drag's warm-up is: it runs once a page, after the first picture (a new move cancels it).</summary>
     private enum DragWarmUp
