@@ -363,8 +363,8 @@ public sealed partial class Playground : IDisposable
     /// <summary>
     /// Renders <see cref="DragWarmUpPreviews"/> drag previews, unpainted, one a task, while the page is idle after its
     /// first picture. The interpreter compiles a loop's faster code once it has run many times: without this, that
-    /// compile fell in the second frame of a drag (46-82 ms); with two previews, in its seventh (47-76 ms), and with
-    /// eight in its second (34-56 ms), each time about the tenth preview rendered.
+    /// compile fell in the second or the eighth frame of a drag (43-82 ms); with two previews, in its seventh (up to
+    /// 76 ms), and with eight mostly in its second (up to 64 ms): each time at about the tenth preview rendered.
     /// </summary>
     private async Task WarmUpDragAsync(CancellationToken cancel)
     {

@@ -340,7 +340,7 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         foreach (string query in new[] { "", "?scene=two-spheres&m=exact" })
         {
             await using Session drag = await OpenAsync(query);
-            // The page renders eight previews when idle after its first picture; a user's hand takes longer than that.
+            // The page warms a drag up with previews when idle after its first picture; a user's hand takes longer than that.
             await drag.Page.WaitForFunctionAsync("() => document.getElementById('lab').dataset.dragWarm === 'done'");
             LocatorBoundingBoxResult box = (await drag.Page.Locator("#view").BoundingBoxAsync())!;
             float cx = box.X + (box.Width / 2), cy = box.Y + (box.Height / 2);
