@@ -139,7 +139,5 @@ export function paintFirstRows(view, width, height, firstRow, method) {
     const caption = document.getElementById('first-caption');
     if (caption) caption.textContent = `The picture: ${method}, ${width}×${height}. The controls follow.`;
   }
-  const ctx = canvas.getContext('2d');
-  const rgb = view.slice();
-  ctx.putImageData(imageData(ctx, rgb, width, rgb.length / 3 / width), 0, firstRow);
+  paintRows('first', view.slice(), width, firstRow);
 }
