@@ -22,7 +22,7 @@ namespace RayLab.Sampling;
 /// </para>
 /// <para>
 /// Points are 32-bit binary fractions (value · 2⁻³²), x and y interleaved: entry 2i is x of point i, 2i + 1 its y.
-/// A table of L points per set takes 8·L·<see cref="SetCount"/> bytes: 32 KB at 16 samples, 8 MB at 4 096.
+/// A table of L points per set takes 8·L·<see cref="SetCount"/> bytes: 8 KB at 16 samples, 2 MB at 4 096.
 /// </para>
 /// </remarks>
 internal static class Pmj02Tables

@@ -69,65 +69,110 @@ public sealed class ZSobolSampler : PixelSampler
     internal uint SobolIndex(int x, int y, int index)
     {
         int m = Log2Block;
-        ulong code = (Morton(x, y) << m) | (uint)index;
-        int low = m & 1;
+        ulong pixel = Morton(x, y) << m;
         ulong result = 0;
-        for (int shift = 30 + m; shift >= low; shift -= 2)
+        for (int shift = 30 + m; shift >= m; shift -= 2)
         {
-            result |= (ulong)PermuteDigit((int)(code >> shift) & 3, code >> (shift + 2)) << shift;
+            result |= (ulong)PermuteDigit((int)(pixel >> shift) & 3, pixel >> (shift + 2)) << shift;
         }
 
-        if (low == 1)
+        ulong key = PixelKey(pixel);
+        int node = 0, t = 0;
+        for (int shift = m - 2; shift >= (m & 1); shift -= 2, node = (4 * node) + 1)
         {
-            result |= (code & 1) ^ FlipBit(code >> 1);
+            int digit = (index >> shift) & 3;
+            result |= (ulong)((Permutations[Pick(NodeByte(key, node + t))] >> (2 * digit)) & 3) << shift;
+            t = (4 * t) + digit;
+        }
+
+        if ((m & 1) == 1)
+        {
+            result |= (uint)(index & 1) ^ (uint)(NodeByte(key, node + t) >> 7);
         }
 
         return (uint)result;
     }
 
     /// <summary>
-    /// <see cref="SobolIndex"/> of samples 0 … <paramref name="indices"/>.Length − 1 of pixel (x, y), the same values
-    /// with the permutations shared: a digit's permutation is recomputed only when the digits above it change, which
-    /// <paramref name="digits"/> remembers from one call to the next (neighbouring pixels share their upper digits).
+    /// <see cref="SobolIndex"/> of samples 0 … 2ᵐ − 1 of pixel (x, y) into <paramref name="block"/> (length 2ᵐ), the
+    /// same values with the permutations shared. The pixel's own digits are recomputed only from the highest bit in
+    /// which its Morton code differs from the last pixel's (<paramref name="digits"/>), and the samples' digits are
+    /// expanded level by level, one permutation per group of samples that share the digits above: about 2ᵐ/3
+    /// permutations a pixel, against m/2 a sample.
     /// </summary>
-    internal void FillIndices(int x, int y, Span<uint> indices, DigitCache digits)
+    internal void FillIndices(int x, int y, Span<uint> block, DigitCache digits)
     {
         int m = Log2Block;
         ulong pixel = Morton(x, y) << m;
-        int low = m & 1;
-        for (int s = 0; s < indices.Length; s++)
+        ulong diff = pixel ^ digits.LastPixel;
+        ulong prefix = digits.LastPrefix;
+        int top = diff == 0 ? -1 : 63 - BitOperations.LeadingZeroCount(diff);
+        for (int shift = m; shift <= Math.Min(top, 30 + m); shift += 2)
         {
-            ulong code = pixel | (uint)s;
-            ulong result = 0;
-            int level = 0;
-            for (int shift = 30 + m; shift >= low; shift -= 2, level++)
+            prefix = (prefix & ~(3ul << shift)) | ((ulong)PermuteDigit((int)(pixel >> shift) & 3, pixel >> (shift + 2)) << shift);
+        }
+
+        digits.LastPixel = pixel;
+        digits.LastPrefix = prefix;
+
+        // block[t] holds the samples whose digits above the current level are t; each level splits every entry in four.
+        ulong key = PixelKey(pixel);
+        block[0] = (uint)prefix;
+        int count = 1, node = 0, chunk = -1;
+        ulong hash = 0;
+        for (int shift = m - 2; shift >= (m & 1); shift -= 2, node += count, count *= 4)
+        {
+            for (int t = count - 1; t >= 0; t--)
             {
-                ulong higher = code >> (shift + 2);
-                if (digits.Higher[level] != higher)
+                uint start = block[t];
+                byte permutation = Permutations[Pick(CachedNodeByte(key, node + t, ref chunk, ref hash))];
+                for (int d = 3; d >= 0; d--)
                 {
-                    digits.Higher[level] = higher;
-                    digits.Permutation[level] = Permutations[PermutationOf(higher)];
+                    block[(4 * t) + d] = start | (((uint)(permutation >> (2 * d)) & 3u) << shift);
                 }
-
-                result |= (ulong)((digits.Permutation[level] >> (2 * ((int)(code >> shift) & 3))) & 3) << shift;
             }
+        }
 
-            if (low == 1)
+        if ((m & 1) == 1)
+        {
+            for (int t = count - 1; t >= 0; t--)
             {
-                result |= (code & 1) ^ FlipBit(code >> 1);
+                uint start = block[t], flip = (uint)(CachedNodeByte(key, node + t, ref chunk, ref hash) >> 7);
+                block[(2 * t) + 1] = start | (1u ^ flip);
+                block[2 * t] = start | flip;
             }
-
-            indices[s] = (uint)result;
         }
     }
+
+    /// <summary>The hash key of a pixel's own digits (its Morton code · 2ᵐ), from which its samples' digit permutations come.</summary>
+    private ulong PixelKey(ulong pixel) => Mix(pixel ^ DigitSalt ^ 0x9e3779b97f4a7c15ul);
+
+    /// <summary>
+    /// Byte <paramref name="node"/> of a pixel's hash stream: the random byte of one node of the pixel's tree of
+    /// sample digits (node 0 the top digit; the 4ʲ nodes of level j numbered after those above, in order of the
+    /// digits above them). Eight nodes share one 64-bit hash.
+    /// </summary>
+    private static byte NodeByte(ulong key, int node) => (byte)(Mix(key + ((ulong)(node >> 3) * 0xd1b54a32d192ed03ul)) >> (8 * (node & 7)));
+
+    /// <summary><see cref="NodeByte"/>, its 64-bit hash kept while the nodes asked for stay in one group of eight.</summary>
+    private static byte CachedNodeByte(ulong key, int node, ref int chunk, ref ulong hash)
+    {
+        if (node >> 3 != chunk)
+        {
+            chunk = node >> 3;
+            hash = Mix(key + ((ulong)chunk * 0xd1b54a32d192ed03ul));
+        }
+
+        return (byte)(hash >> (8 * (node & 7)));
+    }
+
+    /// <summary>One of the 24 permutations from a random byte.</summary>
+    private static int Pick(byte b) => (b * 24) >> 8;
 
     private int PermuteDigit(int digit, ulong higher) => (Permutations[PermutationOf(higher)] >> (2 * digit)) & 3;
 
     /// <summary>Which of the 24 permutations the digits <paramref name="higher"/> above a digit pick.</summary>
     private int PermutationOf(ulong higher) => (int)(((Mix(higher ^ DigitSalt) >> 40) * 24) >> 24);
-
-    /// <summary>The last binary digit's flip (odd m), from the digits above it.</summary>
-    private ulong FlipBit(ulong higher) => Mix(higher ^ DigitSalt ^ 0x9e3779b97f4a7c15ul) >> 63;
 
     /// <summary>A 64-bit mixer (the splitmix64 finalizer).</summary>
     private static ulong Mix(ulong z)
@@ -170,11 +215,11 @@ public sealed class ZSobolSampler : PixelSampler
         return [.. result];
     }
 
-    /// <summary>Per level of digits: the digits above it last seen (none yet: all ones) and the permutation they picked.</summary>
+    /// <summary>The last pixel <see cref="FillIndices"/> filled: its Morton code · 2ᵐ (none yet: all ones) and its permuted digits.</summary>
     internal sealed class DigitCache
     {
-        public ulong[] Higher { get; } = [.. Enumerable.Repeat(ulong.MaxValue, 64)];
+        public ulong LastPixel { get; set; } = ulong.MaxValue;
 
-        public byte[] Permutation { get; } = new byte[64];
+        public ulong LastPrefix { get; set; }
     }
 }

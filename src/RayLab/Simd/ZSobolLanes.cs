@@ -23,7 +23,7 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     public ZSobolLanes(ZSobolSampler sampler)
     {
         _sampler = sampler;
-        _pixel = new uint[sampler.SamplesPerPixel];
+        _pixel = new uint[1 << sampler.Log2Block];
         _indices = new float[sampler.SamplesPerPixel * TL.Count];
         _xSeed = TL.BroadcastBits(sampler.XSeed);
         _ySeed = TL.BroadcastBits(sampler.YSeed);
@@ -37,9 +37,9 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
         for (int lane = 0; lane < count; lane++)
         {
             _sampler.FillIndices(x0 + lane, row, _pixel, _digits);
-            for (int index = 0; index < _pixel.Length; index++)
+            for (int index = 0, slot = lane; index < _sampler.SamplesPerPixel; index++, slot += count)
             {
-                indices[(index * count) + lane] = _pixel[index];
+                indices[slot] = _pixel[index];
             }
         }
     }

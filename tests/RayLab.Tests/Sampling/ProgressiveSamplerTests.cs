@@ -167,15 +167,15 @@ public class ProgressiveSamplerTests
     [Fact]
     public void ZSobolFilledIndicesAreTheFormulas()
     {
-        foreach (int samples in new[] { 1, 3, 16, 32, 100 })
+        foreach (int samples in new[] { 1, 2, 3, 16, 32, 100, 512 })
         {
             var sampler = new ZSobolSampler(samples, 11);
             var cache = new ZSobolSampler.DigitCache();
-            var indices = new uint[samples];
-            foreach ((int x, int y) in Pixels.Concat([(2, 0), (3, 0), (40000, 65535)]))
+            var block = new uint[1 << sampler.Log2Block];
+            foreach ((int x, int y) in Pixels.Concat([(2, 0), (3, 0), (4, 0), (40000, 65535), (40001, 65535), (3, 0)]))
             {
-                sampler.FillIndices(x, y, indices, cache);
-                Assert.Equal(Enumerable.Range(0, samples).Select(i => sampler.SobolIndex(x, y, i)), indices);
+                sampler.FillIndices(x, y, block, cache);
+                Assert.Equal(Enumerable.Range(0, block.Length).Select(i => sampler.SobolIndex(x, y, i)), block);
             }
         }
     }
