@@ -43,6 +43,7 @@ public sealed class CameraChecks(ITestOutputHelper output)
         }
     }
 
+    [Trait("Section", "3")]
     [Fact(DisplayName = English ? "3 Camera: the frame w = −g/|g|, u = (up × w)/|up × w|, v = w × u" : "3 Kamera: baza w = −g/|g|, u = (up × w)/|up × w|, v = w × u")]
     public void Frame() => Run(output, () =>
     {
@@ -57,6 +58,7 @@ public sealed class CameraChecks(ITestOutputHelper output)
         }
     });
 
+    [Trait("Section", "3")]
     [Fact(DisplayName = English ? "3 Camera: the pixel's place on the window, α = (x + sx)/nx, β = 1 − (y + sy)/ny" : "3 Kamera: położenie piksela na oknie, α = (x + sx)/nx, β = 1 − (y + sy)/ny")]
     public void PixelCentre() => Run(output, () =>
     {
@@ -75,15 +77,19 @@ public sealed class CameraChecks(ITestOutputHelper output)
         output.WriteLine(F($"{Points.Length} {T("punktów jak w RayLab", "points as RayLab's")}"));
     });
 
+    [Trait("Section", "3.1")]
     [Fact(DisplayName = English ? "3.1 Orthographic camera: the window, ViewHeight high, width from nx/ny" : "3.1 Kamera ortogonalna: okno o wysokości ViewHeight, szerokość z nx/ny")]
     public void OrthographicWindow() => Run(output, () => SameWindows(false));
 
+    [Trait("Section", "3.1")]
     [Fact(DisplayName = English ? "3.1 Orthographic camera: parallel rays through each pixel, as RayLab's (off-axis window, non-default up)" : "3.1 Kamera ortogonalna: równoległe promienie przez każdy piksel, jak w RayLab (okno niewyśrodkowane, inne up)")]
     public void OrthographicRays() => Run(output, () => SameRays(false));
 
+    [Trait("Section", "3.2")]
     [Fact(DisplayName = English ? "3.2 Perspective camera: the window from Fov and s, tan(Fov/2) = (v1 − v0)/(2 s)" : "3.2 Kamera perspektywiczna: okno z Fov i s, tg(Fov/2) = (v1 − v0)/(2 s)")]
     public void PerspectiveWindow() => Run(output, () => SameWindows(true));
 
+    [Trait("Section", "3.2")]
     [Fact(DisplayName = English ? "3.2 Perspective camera: the ray e + t (p − e) through each pixel, as RayLab's (off-axis window, non-default s and up)" : "3.2 Kamera perspektywiczna: promień e + t (p − e) przez każdy piksel, jak w RayLab (okno niewyśrodkowane, inne s i up)")]
     public void PerspectiveRays() => Run(output, () => SameRays(true));
 

@@ -12,6 +12,7 @@ public sealed class ImageChecks(ITestOutputHelper output)
         0.0, 1.0 / 256 - 1e-12, 1.0 / 256, 0.1, 0.5, 127.5 / 256, 0.999 / 256 * 255, 255.0 / 256 - 1e-9, 255.0 / 256, 0.999999, 1.0, 1.5, -0.1, double.NaN,
     };
 
+    [Trait("Section", "2.2")]
     [Theory(DisplayName = English ? "2.2 Image: the 8-bit rule i = int(256·I), cut not rounded, 0 … 255" : "2.2 Obraz: reguła 8-bitowa i = int(256·I), obcięcie a nie zaokrąglenie, 0 … 255")]
     [MemberData(nameof(Edges))]
     public void EightBitRule(double intensity) => Run(output, () =>
@@ -24,6 +25,7 @@ public sealed class ImageChecks(ITestOutputHelper output)
             F($"2.2 Image: for I = {intensity:R} the rule i = int(256·I) gives {expected} (256·I = {256 * intensity:R}, cut; below 0 → 0, from 255/256 up → 255, NaN → 0), ToByte gave {actual}.")));
     });
 
+    [Trait("Section", "2.2")]
     [Fact(DisplayName = English ? "2.2 Image: SetPixel writes the levels of an intensity into the bitmap, (x, y) with row 0 at the top" : "2.2 Obraz: SetPixel zapisuje poziomy natężenia do bitmapy, (x, y), wiersz 0 na górze")]
     public void SetPixel() => Run(output, () =>
     {

@@ -8,6 +8,7 @@ public sealed class IntensityChecks(ITestOutputHelper output)
 {
     private static readonly double[][] Inputs = [[0.5, 0.25, 0.125], [-0.5, 0.3, 2], [0, 0, 0], [1, 1, 1], [0.9, 0.2, 0.2]];
 
+    [Trait("Section", "2.1")]
     [Fact(DisplayName = English ? "2.1 Intensity: constructors with 3, 2, 1 and 0 components, negative → 0" : "2.1 Natężenie: konstruktory z 3, 2, 1 i 0 składowymi, ujemne → 0")]
     public void Constructors() => Run(output, () =>
     {
@@ -18,6 +19,7 @@ public sealed class IntensityChecks(ITestOutputHelper output)
         output.WriteLine(T("5 konstruktorów jak w RayLab", "5 constructors as RayLab's"));
     });
 
+    [Trait("Section", "2.1")]
     [Fact(DisplayName = English ? "2.1 Intensity: +, −, × and ÷ a number, as RayLab's Intensity" : "2.1 Natężenie: +, −, × i ÷ przez skalar, jak Intensity z RayLab")]
     public void Operators() => Run(output, () =>
     {
@@ -46,6 +48,7 @@ public sealed class IntensityChecks(ITestOutputHelper output)
         output.WriteLine(F($"{compared} {T("działań jak w RayLab", "operations as RayLab's")}"));
     });
 
+    [Trait("Section", "2.1")]
     [Fact(DisplayName = English ? "2.1 Intensity: printing shows R, G and B" : "2.1 Natężenie: wypisanie pokazuje R, G i B")]
     public void Printing() => Run(output, () =>
     {

@@ -1,5 +1,6 @@
 using RayLab;
 using RayLab.Cameras;
+using RayLab.ImageSharp;
 using RayLab.Metrics;
 using RayLab.Rendering.Exact;
 using static MyLab.Tests.Check;
@@ -9,22 +10,8 @@ namespace MyLab.Tests;
 /// <summary>Pictures for the checks: RayLab's renders (the oracle), the exact image, and yours as a RayLab image.</summary>
 internal static class Pictures
 {
-    /// <summary>Your bitmap as a RayLab image, byte for byte.</summary>
-    public static Image ToRayLab(LabImage image)
-    {
-        var result = new Image(image.Width, image.Height);
-        for (int y = 0; y < image.Height; y++)
-        {
-            Span<RayLab.Rgb24> row = result.GetRowSpan(y);
-            for (int x = 0; x < image.Width; x++)
-            {
-                SixLabors.ImageSharp.PixelFormats.Rgb24 p = image.Bitmap[x, y];
-                row[x] = new RayLab.Rgb24(p.R, p.G, p.B);
-            }
-        }
-
-        return result;
-    }
+    /// <summary>Your bitmap as a RayLab image, byte for byte (RayLab.ImageSharp).</summary>
+    public static Image ToRayLab(LabImage image) => image.Bitmap.ToRayLabImage();
 
     /// <summary>Each pixel's exact area-weighted colour: what every antialiasing method aims at.</summary>
     public static Image Exact(Camera camera, int width, int height)

@@ -10,6 +10,7 @@ public sealed class SamplingChecks(ITestOutputHelper output)
 {
     private const int Pixels = 2000;
 
+    [Trait("Section", "4.1.1")]
     [Theory(DisplayName = English ? "4.1.1 Regular sampling: the k×k grid of cell centres, the same in every pixel" : "4.1.1 Próbkowanie regularne: siatka k×k środków komórek, ta sama w każdym pikselu")]
     [InlineData(1)]
     [InlineData(4)]
@@ -37,6 +38,7 @@ public sealed class SamplingChecks(ITestOutputHelper output)
         output.WriteLine(F($"n = {n}: {T("siatka jak w RayLab", "the grid as RayLab's")}"));
     });
 
+    [Trait("Section", "4.1.2")]
     [Fact(DisplayName = English ? "4.1.2 Random sampling: uniform points in the pixel, different in each pixel" : "4.1.2 Próbkowanie losowe: punkty równomiernie w pikselu, inne w każdym pikselu")]
     public void Random() => Run(output, () =>
     {
@@ -68,6 +70,7 @@ public sealed class SamplingChecks(ITestOutputHelper output)
             F($"4.1.2 Random sampling: the points are not uniform in the pixel. The 16 cells hold {string.Join(", ", cells)} points (uniform: {Pixels * n / 16}); χ² = {chi2:F1} > 37.7 (p = 0.001). RayLab: χ² = {oracle:F1}.")));
     });
 
+    [Trait("Section", "4.1.3")]
     [Theory(DisplayName = English ? "4.1.3 Jittered sampling: exactly one random point in each cell of the k×k grid (stratification)" : "4.1.3 Próbkowanie jittered: dokładnie jeden losowy punkt w każdej komórce siatki k×k (stratyfikacja)")]
     [InlineData(16)]
     [InlineData(25)]
@@ -109,13 +112,14 @@ public sealed class SamplingChecks(ITestOutputHelper output)
             F($"4.1.3 Jittered sampling: the point in a cell is not uniformly random — the variance of its place in the cell is {variance:F4}, for rand() it is 1/12 = 0.0833 (0 means: always the centre, as regular sampling).")));
     });
 
+    [Trait("Section", "4.1.4")]
     [Theory(DisplayName = English ? "4.1.4 Adaptive sampling: the same rays and the same value in each pixel as RayLab's adaptive (the lab's rule and weights)" : "4.1.4 Próbkowanie adaptacyjne: te same promienie i ta sama wartość w każdym pikselu co adaptacyjne RayLab (reguła i wagi z instrukcji)")]
     [InlineData("perspective")]
     [InlineData("orthographic")]
     public void AdaptivePixels(string cameraName) => Run(output, () => _where, () =>
     {
         // A small picture of the two spheres, so that many of its pixels lie on an edge; every pixel compared.
-        const int width = 64, height = 48;
+        const int width = 48, height = 36;
         LabCamera settings = cameraName == "perspective" ? Perspective() : Orthographic();
         Camera camera = Oracle(settings);
         var plane = camera.GetImagePlane(width, height);

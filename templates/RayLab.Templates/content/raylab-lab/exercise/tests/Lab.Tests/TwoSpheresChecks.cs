@@ -15,6 +15,7 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
 
     public static TheoryData<string> CameraNames => ["orthographic", "perspective"];
 
+    [Trait("Section", "5")]
     [Theory(DisplayName = English ? "5 Task: the render loop, one ray through each pixel's centre, gives RayLab's picture" : "5 Zadanie: pętla renderowania, jeden promień przez środek piksela, daje obraz RayLab")]
     [MemberData(nameof(CameraNames))]
     public void RenderLoop(string cameraName)
@@ -40,6 +41,7 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
             $"5 Task ({cameraName}): the render loop should give RayLab's picture (the same rays, colour from Scene.Trace, the mean, SetPixel). {count} pixels differ; the first ({x}, {y}): RayLab {e}, your loop {a}."));
     }
 
+    [Trait("Section", "5")]
     [Fact(DisplayName = English ? "5 Task: the same picture on every run (a random sampler with the same seed)" : "5 Zadanie: ten sam obraz przy każdym uruchomieniu (losowe próbki z tym samym ziarnem)")]
     public void SameSeedSamePicture()
     {
@@ -59,6 +61,7 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
             $"5 Task: the same seed should give the same picture at any thread count (one Random per row, from the seed and the row). {count} pixels differ; the first ({x}, {y}): {a}, then {b}."));
     }
 
+    [Trait("Section", "5")]
     [Theory(DisplayName = English ? "5 Task: two spheres with your camera and your adaptive sampling, close to the exact image (RMSE, FLIP)" : "5 Zadanie: dwie kule Twoją kamerą i Twoim próbkowaniem adaptacyjnym, blisko dokładnego obrazu (RMSE, FLIP)")]
     [MemberData(nameof(CameraNames))]
     public void TwoSpheres(string cameraName)
