@@ -129,6 +129,12 @@ public sealed class GradeSandbox
                 start.ArgumentList.Add(a);
             }
 
+            // MSBuild's variables of a build this grader may run under (dotnet test) would steer the children's builds.
+            foreach (string key in start.Environment.Keys.Where(k => k.StartsWith("MSBuild", StringComparison.OrdinalIgnoreCase)).ToList())
+            {
+                start.Environment.Remove(key);
+            }
+
             foreach ((string key, string value) in environment)
             {
                 start.Environment[key] = value;

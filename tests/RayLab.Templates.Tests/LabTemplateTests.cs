@@ -157,7 +157,7 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
             }
         }
 
-        Assert.Equal(3, options); // --method, --feed, --skipRestore
+        Assert.Equal(4, options); // --method, --feed, --offline, --skipRestore
     }
 
     private static bool IsBuildOutput(string lab, string file)
