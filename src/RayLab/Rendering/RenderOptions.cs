@@ -12,7 +12,7 @@ namespace RayLab.Rendering;
 internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, RenderKernel Kernel, RenderProgress? Progress, CancellationToken CancellationToken,
     ScratchPool? Pool = null)
 {
-    /// <summary>The first row to render, 0 the top (<see cref="Renderer.RenderRows"/>).</summary>
+    /// <summary>The first row to render, 0 the top (<see cref="Renderer.RenderRows(Scene, Camera, RenderMethod, IPixelRows, int, int, float[])"/>).</summary>
     public int FirstRow { get; init; }
 
     /// <summary>One past the last row to render; <see cref="int.MaxValue"/> for every row to the bottom.</summary>

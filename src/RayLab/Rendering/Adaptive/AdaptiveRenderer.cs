@@ -79,7 +79,7 @@ internal static class AdaptiveRenderer
     }
 
     /// <summary>Renders with <paramref name="sampler"/>'s settings; <paramref name="raysPerPixel"/>, if given, receives each pixel's rays.</summary>
-    public static RenderStatistics Render(Scene scene, ImagePlane plane, AdaptiveSampler sampler, Image image, RenderOptions options, float[]? raysPerPixel)
+    public static RenderStatistics Render(Scene scene, ImagePlane plane, AdaptiveSampler sampler, IPixelRows image, RenderOptions options, float[]? raysPerPixel)
     {
         var loop = RowLoop.Start(options, image.Height);
         var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, sampler.Quincunx, sampler.Guard, options);
@@ -89,7 +89,7 @@ internal static class AdaptiveRenderer
     }
 
     /// <summary>The adaptive rows: bands of <see cref="AdaptiveLattice.BandHeight"/> rows, each thread with its lattice <see cref="AdaptiveLattice.Source"/>.</summary>
-    private sealed class Rows(AdaptiveLattice lattice, AdaptiveSampler sampler, Image image, float[]? raysPerPixel) : IRowRenderer<AdaptiveLattice.Source>
+    private sealed class Rows(AdaptiveLattice lattice, AdaptiveSampler sampler, IPixelRows image, float[]? raysPerPixel) : IRowRenderer<AdaptiveLattice.Source>
     {
         private readonly bool _flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
 
