@@ -158,7 +158,7 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
             }
         }
 
-        Assert.Equal(6, options); // --kind, --lang, --solution, --method, --feed, --skipRestore
+        Assert.Equal(7, options); // --kind, --lang, --solution, --method, --feed, --offline, --skipRestore
     }
 
     private static bool IsBuildOutput(string lab, string file)

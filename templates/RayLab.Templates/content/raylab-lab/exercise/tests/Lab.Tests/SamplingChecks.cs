@@ -139,8 +139,8 @@ public sealed class SamplingChecks(ITestOutputHelper output)
                     if (++calls > 4096)
                     {
                         throw new InvalidOperationException(T(
-                            F($"ponad 4096 promieni w pikselu ({x}, {y}): rekurencja nie zatrzymuje się na MaxDepth = 3"),
-                            F($"over 4096 rays in pixel ({x}, {y}): the recursion does not stop at MaxDepth = 3")));
+                            "ponad 4096 promieni w jednym pikselu: rekurencja nie zatrzymuje się na MaxDepth = 3",
+                            "over 4096 rays in one pixel: the recursion does not stop at MaxDepth = 3"));
                     }
 
                     points.Add((sx, sy));
