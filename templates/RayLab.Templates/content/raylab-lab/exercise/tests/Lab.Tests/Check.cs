@@ -52,6 +52,11 @@ internal static class Check
 
         if (task.Exception?.InnerException is { } e)
         {
+            if (e is Xunit.Sdk.IAssertionException)
+            {
+                System.Runtime.ExceptionServices.ExceptionDispatchInfo.Throw(e); // a check's own failure, as it is
+            }
+
             if (e is NotImplementedException)
             {
                 // The skeletons' message already names the section and what is to write.
