@@ -1,6 +1,8 @@
 using BenchmarkDotNet.Attributes;
+using RayLab.ImageSharp;
 using RayLab.Imaging;
 using RayLab.Scenes;
+using SixLabors.ImageSharp;
 using SkiaSharp;
 using StbImageWriteSharp;
 
@@ -75,11 +77,20 @@ public enum JpegCandidate
 
     /// <summary>StbImageWriteSharp at quality 91, its lowest quality with 4:4:4.</summary>
     Stb91,
+
+    /// <summary>ImageSharp 2.1 (RayLab.ImageSharp's path) at quality 90, its default sampling there (4:2:0), on a ready bitmap.</summary>
+    ImageSharp90,
+
+    /// <summary>ImageSharp 2.1 at quality 90 with 4:4:4 asked for, on a ready bitmap.</summary>
+    ImageSharp90Ycc444,
 }
 
 /// <summary>Writes one candidate's JPEG.</summary>
 public static class JpegCandidates
 {
+    /// <summary>Each picture's ImageSharp bitmap, made once (the adapter's user renders into one; no copy is timed).</summary>
+    private static readonly System.Runtime.CompilerServices.ConditionalWeakTable<Image, SixLabors.ImageSharp.Image<SixLabors.ImageSharp.PixelFormats.Rgb24>> Bitmaps = new();
+
     public static void Write(JpegCandidate candidate, Stream stream, Image image)
     {
         switch (candidate)
@@ -98,6 +109,13 @@ public static class JpegCandidates
                 break;
             case JpegCandidate.Stb91:
                 WriteStb(stream, image, 91);
+                break;
+            case JpegCandidate.ImageSharp90:
+                Bitmaps.GetValue(image, ImageConversions.ToImageSharp).SaveAsJpeg(stream, new SixLabors.ImageSharp.Formats.Jpeg.JpegEncoder { Quality = 90 });
+                break;
+            case JpegCandidate.ImageSharp90Ycc444:
+                Bitmaps.GetValue(image, ImageConversions.ToImageSharp).SaveAsJpeg(stream,
+                    new SixLabors.ImageSharp.Formats.Jpeg.JpegEncoder { Quality = 90, ColorType = SixLabors.ImageSharp.Formats.Jpeg.JpegColorType.YCbCrRatio444 });
                 break;
             default:
                 throw new ArgumentOutOfRangeException(nameof(candidate), candidate, null);

@@ -78,8 +78,8 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
         string[] files = Directory.GetFiles(bin, "*", SearchOption.AllDirectories);
         string[] native = [.. files.Where(IsNativeLibrary).Select(f => Path.GetRelativePath(bin, f))];
         Assert.True(native.Length == 0, $"the core-only app's output holds native libraries: {string.Join(", ", native)}");
-        string[] skia = [.. files.Select(f => Path.GetRelativePath(bin, f)).Where(f => f.Contains("skia", StringComparison.OrdinalIgnoreCase) || f.Contains("harfbuzz", StringComparison.OrdinalIgnoreCase) || f.Contains("scottplot", StringComparison.OrdinalIgnoreCase))];
-        Assert.True(skia.Length == 0, $"the core-only app's output holds Skia/HarfBuzz/ScottPlot files: {string.Join(", ", skia)}");
+        string[] skia = [.. files.Select(f => Path.GetRelativePath(bin, f)).Where(f => f.Contains("skia", StringComparison.OrdinalIgnoreCase) || f.Contains("harfbuzz", StringComparison.OrdinalIgnoreCase) || f.Contains("scottplot", StringComparison.OrdinalIgnoreCase) || f.Contains("sixlabors", StringComparison.OrdinalIgnoreCase) || f.Contains("imagesharp", StringComparison.OrdinalIgnoreCase))];
+        Assert.True(skia.Length == 0, $"the core-only app's output holds Skia/HarfBuzz/ScottPlot/ImageSharp files: {string.Join(", ", skia)}");
         long size = files.Sum(f => new FileInfo(f).Length);
         TestContext.Current.TestOutputHelper?.WriteLine($"core-only app: bin/Release/net10.0 holds {files.Length} files, {size:N0} bytes");
         Assert.True(size < CoreAppBinLimit, $"the core-only app's output is {size:N0} bytes, over {CoreAppBinLimit:N0}: {Largest(bin, files)}");
@@ -108,6 +108,36 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
             .Select(e => (string?)e.Attribute("version") ?? "")];
         Assert.NotEmpty(versions);
         Assert.All(versions, v => Assert.Equal($"[{feed.Version}]", v));
+    }
+
+    [Fact]
+    public void The_imagesharp_package_pins_the_core_and_imagesharp_2_1_13_exactly()
+    {
+        // ImageSharp 3 and newer carry a paid licence: the adapter's nuspec must never let NuGet float up to one.
+        string package = Path.Combine(feed.Feed, $"RayLab.ImageSharp.{feed.Version}.nupkg");
+        using var zip = System.IO.Compression.ZipFile.OpenRead(package);
+        System.IO.Compression.ZipArchiveEntry nuspec = zip.Entries.Single(e => e.FullName.EndsWith(".nuspec", StringComparison.Ordinal));
+        using var reader = new StreamReader(nuspec.Open());
+        System.Xml.Linq.XDocument document = System.Xml.Linq.XDocument.Load(reader);
+        Dictionary<string, string> dependencies = document.Descendants().Where(e => e.Name.LocalName == "dependency")
+            .ToDictionary(e => (string?)e.Attribute("id") ?? "", e => (string?)e.Attribute("version") ?? "");
+        Assert.Equal($"[{feed.Version}]", dependencies["RayLab"]);
+        Assert.Equal("[2.1.13]", dependencies["SixLabors.ImageSharp"]);
+    }
+
+    [Fact]
+    public async Task An_app_on_the_imagesharp_package_runs_the_readme_bitmap_lines_and_saves_jpeg_and_png()
+    {
+        string app = feed.NewProject("imagesharp-app", ["RayLab.ImageSharp"]);
+        File.WriteAllText(Path.Combine(app, "Program.cs"), ReadmeLibraryExample(feed.Repo, block: 1));
+        await feed.RunAsync(app, "dotnet", "run", "-c", "Release");
+
+        SkiaDecode.Result jpeg = SkiaDecode.Load(Path.Combine(app, "obrazkoncowy.jpg"));
+        Assert.True((800, 600, SKEncodedImageFormat.Jpeg) == (jpeg.Width, jpeg.Height, jpeg.Format),
+            $"obrazkoncowy.jpg decodes as {jpeg.Format} {jpeg.Width}x{jpeg.Height}, not Jpeg 800x600");
+        AssertPng(Path.Combine(app, "two-spheres.png"), 800, 600);
+        string list = await feed.RunAsync(app, "dotnet", "list", "package", "--include-transitive");
+        Assert.Matches(@"SixLabors\.ImageSharp +2\.1\.13", list);
     }
 
     [Fact]
@@ -378,13 +408,15 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
         return v4 ? "vector512" : v3 ? "vector256" : "vector128";
     }
 
-    /// <summary>The C# block under the README's "## The library in ten lines" heading.</summary>
-    private static string ReadmeLibraryExample(string repo)
+    /// <summary>C# block number <paramref name="block"/> (0 the first) under the README's "## The library in ten lines" heading.</summary>
+    private static string ReadmeLibraryExample(string repo, int block = 0)
     {
         string readme = File.ReadAllText(Path.Combine(repo, "README.md")).ReplaceLineEndings("\n");
         Match m = ReadmeExample().Match(readme);
-        Assert.True(m.Success, "README.md has no ```csharp block under \"## The library in ten lines\"");
-        return m.Groups["code"].Value;
+        Assert.True(m.Success, "README.md has no \"## The library in ten lines\" section");
+        MatchCollection blocks = CsharpBlock().Matches(m.Groups["section"].Value);
+        Assert.True(blocks.Count > block, $"README.md's \"## The library in ten lines\" has {blocks.Count} ```csharp blocks, not {block + 1}");
+        return blocks[block].Groups["code"].Value;
     }
 
     /// <summary>The project file docs/getting-started.md writes under "## Your own test project" (<c>cat &gt; RayLabTests.csproj &lt;&lt;'EOF'</c>).</summary>
@@ -399,8 +431,11 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
     [GeneratedRegex(@"^## Your own test project\n(?:(?!^## ).)*?cat > RayLabTests\.csproj <<'EOF'\n(?<project>.*?)^EOF$", RegexOptions.Multiline | RegexOptions.Singleline)]
     private static partial Regex GuideTestProjectFile();
 
-    [GeneratedRegex(@"^## The library in ten lines\n(?:(?!^## ).)*?^```csharp\n(?<code>.*?)^```", RegexOptions.Multiline | RegexOptions.Singleline)]
+    [GeneratedRegex(@"^## The library in ten lines\n(?<section>(?:(?!^## ).)*)", RegexOptions.Multiline | RegexOptions.Singleline)]
     private static partial Regex ReadmeExample();
+
+    [GeneratedRegex(@"^```csharp\n(?<code>.*?)^```", RegexOptions.Multiline | RegexOptions.Singleline)]
+    private static partial Regex CsharpBlock();
 
     /// <summary>A package row of <c>dotnet list package</c>: "   &gt; Id   requested   resolved" or "   &gt; Id   resolved".</summary>
     [GeneratedRegex(@"^\s*>\s+(?<id>[A-Za-z0-9_.\-]+)\s", RegexOptions.Multiline)]

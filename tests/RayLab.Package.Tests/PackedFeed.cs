@@ -4,7 +4,7 @@ namespace RayLab.Package.Tests;
 
 /// <summary>
 /// The folder feed every packaging test uses, packed once per run: the core (<c>RayLab</c>), the reports
-/// (<c>RayLab.Reports</c>), and the tool as .NET 10's RID-specific tool — the pointer package <c>RayLab.Tool</c>,
+/// (<c>RayLab.Reports</c>), the ImageSharp adapter (<c>RayLab.ImageSharp</c>), and the tool as .NET 10's RID-specific tool — the pointer package <c>RayLab.Tool</c>,
 /// <c>RayLab.Tool.any</c> (framework-dependent) and, where it can be compiled (linux-x64), <c>RayLab.Tool.linux-x64</c>
 /// (Native AOT). bin/obj of the packs go under the temp folder, not the repository's; every child gets
 /// <see cref="Packages"/>, an NUGET_PACKAGES folder that starts empty.
@@ -37,7 +37,7 @@ public sealed class PackedFeed : IAsyncLifetime
     public async ValueTask InitializeAsync()
     {
         string artifacts = Path.Combine(Root, "artifacts");
-        foreach (string project in new[] { Path.Combine(Repo, "src", "RayLab", "RayLab.csproj"), Path.Combine(Repo, "src", "RayLab.Reports", "RayLab.Reports.csproj") })
+        foreach (string project in new[] { Path.Combine(Repo, "src", "RayLab", "RayLab.csproj"), Path.Combine(Repo, "src", "RayLab.Reports", "RayLab.Reports.csproj"), Path.Combine(Repo, "src", "RayLab.ImageSharp", "RayLab.ImageSharp.csproj") })
         {
             await RunAsync(Root, "dotnet", "pack", project, "-c", "Release", "-o", Feed, "--artifacts-path", artifacts);
         }
@@ -50,10 +50,11 @@ public sealed class PackedFeed : IAsyncLifetime
         }
 
         string core = Directory.GetFiles(Feed, "RayLab.*.nupkg").Select(Path.GetFileName).OfType<string>()
-            .SingleOrDefault(f => !f.StartsWith("RayLab.Tool.", StringComparison.OrdinalIgnoreCase) && !f.StartsWith("RayLab.Reports.", StringComparison.OrdinalIgnoreCase))
+            .SingleOrDefault(f => !f.StartsWith("RayLab.Tool.", StringComparison.OrdinalIgnoreCase) && !f.StartsWith("RayLab.Reports.", StringComparison.OrdinalIgnoreCase)
+                && !f.StartsWith("RayLab.ImageSharp.", StringComparison.OrdinalIgnoreCase))
             ?? throw new InvalidOperationException($"no single RayLab.<version>.nupkg in the feed: {string.Join(", ", Directory.GetFiles(Feed).Select(Path.GetFileName))}");
         Version = Path.GetFileNameWithoutExtension(core)["RayLab.".Length..];
-        foreach (string expected in new[] { $"RayLab.{Version}.snupkg", $"RayLab.Reports.{Version}.nupkg", $"RayLab.Tool.{Version}.nupkg", $"RayLab.Tool.any.{Version}.nupkg" })
+        foreach (string expected in new[] { $"RayLab.{Version}.snupkg", $"RayLab.Reports.{Version}.nupkg", $"RayLab.ImageSharp.{Version}.nupkg", $"RayLab.Tool.{Version}.nupkg", $"RayLab.Tool.any.{Version}.nupkg" })
         {
             if (!File.Exists(Path.Combine(Feed, expected)))
             {

@@ -8,7 +8,7 @@ namespace RayLab;
 /// row first — the layout ImageSharp's <c>Image.LoadPixelData&lt;Rgb24&gt;</c> takes. Intensities are
 /// converted on the way in by the lab's rule (<see cref="EightBit.Level"/>).
 /// </summary>
-public sealed class Image
+public sealed class Image : IPixelRows
 {
     /// <summary>The largest pixel buffer: one .NET array, <see cref="Array.MaxLength"/> bytes (about 715 million pixels).</summary>
     public static long MaxBytes => Array.MaxLength;

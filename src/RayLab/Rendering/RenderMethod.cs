@@ -51,10 +51,10 @@ public abstract class RenderMethod
         new CustomMethod<TScratch>(method ?? throw new ArgumentNullException(nameof(method)));
 
     /// <summary>Renders into <paramref name="image"/>; fills <paramref name="raysPerPixel"/> (if given) with the rays charged to each pixel.</summary>
-    internal abstract RenderStatistics Render(Scene scene, ImagePlane plane, Image image, RenderOptions options, float[]? raysPerPixel);
+    internal abstract RenderStatistics Render(Scene scene, ImagePlane plane, IPixelRows image, RenderOptions options, float[]? raysPerPixel);
 
     /// <summary>The entries of <paramref name="raysPerPixel"/> for the rows this render fills (empty when it is null).</summary>
-    private static Span<float> RowsOf(float[]? raysPerPixel, Image image, RenderOptions options)
+    private static Span<float> RowsOf(float[]? raysPerPixel, IPixelRows image, RenderOptions options)
     {
         (int first, int end) = options.Rows(image.Height);
         return raysPerPixel is null ? default : raysPerPixel.AsSpan(first * image.Width, (end - first) * image.Width);
@@ -68,7 +68,7 @@ public abstract class RenderMethod
 
         public override string ToString() => $"{sampler.Name} {sampler.SamplesPerPixel} spp";
 
-        internal override RenderStatistics Render(Scene scene, ImagePlane plane, Image image, RenderOptions options, float[]? raysPerPixel)
+        internal override RenderStatistics Render(Scene scene, ImagePlane plane, IPixelRows image, RenderOptions options, float[]? raysPerPixel)
         {
             RenderStatistics stats = PointRenderer.Render(scene, plane, sampler, image, options);
             RowsOf(raysPerPixel, image, options).Fill(sampler.SamplesPerPixel);
@@ -82,7 +82,7 @@ public abstract class RenderMethod
 
         public override string ToString() => sampler.ToString();
 
-        internal override RenderStatistics Render(Scene scene, ImagePlane plane, Image image, RenderOptions options, float[]? raysPerPixel) =>
+        internal override RenderStatistics Render(Scene scene, ImagePlane plane, IPixelRows image, RenderOptions options, float[]? raysPerPixel) =>
             AdaptiveRenderer.Render(scene, plane, sampler, image, options, raysPerPixel);
     }
 
@@ -92,7 +92,7 @@ public abstract class RenderMethod
 
         public override string ToString() => method.Name;
 
-        internal override RenderStatistics Render(Scene scene, ImagePlane plane, Image image, RenderOptions options, float[]? raysPerPixel) =>
+        internal override RenderStatistics Render(Scene scene, ImagePlane plane, IPixelRows image, RenderOptions options, float[]? raysPerPixel) =>
             PixelMethodRenderer.Render(scene, plane, method, image, options, raysPerPixel);
     }
 
@@ -102,7 +102,7 @@ public abstract class RenderMethod
 
         public override string ToString() => "exact (area-weighted)";
 
-        internal override RenderStatistics Render(Scene scene, ImagePlane plane, Image image, RenderOptions options, float[]? raysPerPixel)
+        internal override RenderStatistics Render(Scene scene, ImagePlane plane, IPixelRows image, RenderOptions options, float[]? raysPerPixel)
         {
             RenderStatistics stats = ExactRenderer.RenderPlane(scene, plane, image, options);
             RowsOf(raysPerPixel, image, options).Clear();

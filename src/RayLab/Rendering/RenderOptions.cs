@@ -12,7 +12,7 @@ namespace RayLab.Rendering;
 internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, RenderKernel Kernel, RenderProgress? Progress, CancellationToken CancellationToken,
     ScratchPool? Pool = null)
 {
-    /// <summary>The first row to render, 0 the top (<see cref="Renderer.RenderRows"/>).</summary>
+    /// <summary>The first row to render, 0 the top (<see cref="Renderer.RenderRows(Scene, Camera, RenderMethod, IPixelRows, int, int, float[])"/>).</summary>
     public int FirstRow { get; init; }
 
     /// <summary>One past the last row to render; <see cref="int.MaxValue"/> for every row to the bottom.</summary>
@@ -20,6 +20,9 @@ internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, Render
 
     /// <summary>The rows [Start, End) of an image <paramref name="height"/> rows tall that this render fills.</summary>
     public (int Start, int End) Rows(int height) => (Math.Min(FirstRow, height), Math.Min(EndRow, height));
+
+    /// <summary>Records the row loop's phases and band times, for the scaling tool; null (the default) records nothing.</summary>
+    public RowLoopTrace? Trace { get; init; }
 
     /// <summary>A kept <typeparamref name="T"/> from <see cref="Pool"/>, or a new one.</summary>
     public T Rent<T>()

@@ -49,7 +49,10 @@ public sealed class Renderer
     /// <summary>The per-thread buffers kept from one render to the next (the adaptive renderer's lines and caches).</summary>
     private readonly ScratchPool _pool = new();
 
-    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool);
+    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool) { Trace = Trace };
+
+    /// <summary>Records the next renders' row-loop phases and band times (the scaling tool); null records nothing.</summary>
+    internal RowLoopTrace? Trace { get; set; }
 
     /// <summary>
     /// Renders <paramref name="scene"/> into <paramref name="image"/> by <paramref name="method"/>: the one place
@@ -70,7 +73,24 @@ public sealed class Renderer
     public RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, Image image, float[]? raysPerPixel = null) =>
         Render(scene, camera, method, image, raysPerPixel, Options);
 
-    private static RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, Image image, float[]? raysPerPixel, RenderOptions options)
+    /// <summary>
+    /// Renders <paramref name="scene"/> by <paramref name="method"/> into any 8-bit picture that hands out its rows
+    /// (<see cref="IPixelRows"/>): each row is written straight into the picture's own memory by the thread that
+    /// renders it, with the bytes a render into an <see cref="Image"/> of the same size gives. This is how the
+    /// <c>RayLab.ImageSharp</c> package renders into an ImageSharp <c>Image&lt;Rgb24&gt;</c>.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="method">Point sampling, adaptive, a pixel method of your own, or exact.</param>
+    /// <param name="image">The picture to fill; its size sets the camera's window.</param>
+    /// <param name="raysPerPixel">Optional, W·H long, row 0 first: receives the rays charged to each pixel (as for an <see cref="Image"/>).</param>
+    /// <returns>Rays traced, render time and the kernel that ran.</returns>
+    /// <exception cref="ArgumentException">The camera's settings do not form a valid view, the picture's size is less than 1×1, or <paramref name="raysPerPixel"/> has the wrong length.</exception>
+    /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
+    public RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, IPixelRows image, float[]? raysPerPixel = null) =>
+        Render(scene, camera, method, image, raysPerPixel, Options);
+
+    private static RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, IPixelRows image, float[]? raysPerPixel, RenderOptions options)
     {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
@@ -105,7 +125,25 @@ public sealed class Renderer
     /// <exception cref="ArgumentOutOfRangeException">The band does not lie inside the image.</exception>
     /// <exception cref="ArgumentException">The camera's settings do not form a valid view, or <paramref name="raysPerPixel"/> has the wrong length.</exception>
     /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
-    public RenderStatistics RenderRows(Scene scene, Camera camera, RenderMethod method, Image image, int firstRow, int rowCount, float[]? raysPerPixel = null)
+    public RenderStatistics RenderRows(Scene scene, Camera camera, RenderMethod method, Image image, int firstRow, int rowCount, float[]? raysPerPixel = null) =>
+        RenderRows(scene, camera, method, (IPixelRows)image, firstRow, rowCount, raysPerPixel);
+
+    /// <summary>
+    /// Renders a band of rows of any <see cref="IPixelRows"/> picture and leaves the others as they are (see
+    /// <see cref="RenderRows(Scene, Camera, RenderMethod, Image, int, int, float[])"/>).
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="method">Point sampling, adaptive, a pixel method of your own, or exact.</param>
+    /// <param name="image">The whole picture; its size sets the camera's window.</param>
+    /// <param name="firstRow">The band's first row, 0 the top.</param>
+    /// <param name="rowCount">How many rows the band has (0 renders nothing).</param>
+    /// <param name="raysPerPixel">Optional, W·H long: receives the rays charged to each pixel of the band.</param>
+    /// <returns>The band's rays, render time and the kernel that ran.</returns>
+    /// <exception cref="ArgumentOutOfRangeException">The band does not lie inside the picture.</exception>
+    /// <exception cref="ArgumentException">The camera's settings do not form a valid view, or <paramref name="raysPerPixel"/> has the wrong length.</exception>
+    /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
+    public RenderStatistics RenderRows(Scene scene, Camera camera, RenderMethod method, IPixelRows image, int firstRow, int rowCount, float[]? raysPerPixel = null)
     {
         ArgumentNullException.ThrowIfNull(image);
         ArgumentOutOfRangeException.ThrowIfNegative(firstRow);

@@ -74,7 +74,7 @@ public sealed class ExactRenderer
     }
 
     /// <summary>The exact render into an 8-bit image, for <see cref="RenderMethod.Exact"/>.</summary>
-    internal static RenderStatistics RenderPlane(Scene scene, ImagePlane plane, Image image, RenderOptions options) =>
+    internal static RenderStatistics RenderPlane(Scene scene, ImagePlane plane, IPixelRows image, RenderOptions options) =>
         Run(scene, plane, options, sweep: true, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (row, worker) =>
         {
             Span<Rgb24> pixels = image.GetRowSpan(row);

@@ -11,7 +11,7 @@ namespace RayLab.Rendering.PixelMethods;
 internal static class PixelMethodRenderer
 {
     /// <summary>Renders the scene by <paramref name="method"/>; fills <paramref name="raysPerPixel"/> (if given) with each pixel's traced rays.</summary>
-    public static RenderStatistics Render<TScratch>(Scene scene, ImagePlane plane, IPixelMethod<TScratch> method, Image image,
+    public static RenderStatistics Render<TScratch>(Scene scene, ImagePlane plane, IPixelMethod<TScratch> method, IPixelRows image,
         RenderOptions options, float[]? raysPerPixel)
     {
         var loop = RowLoop.Start(options, image.Height);
@@ -20,7 +20,7 @@ internal static class PixelMethodRenderer
     }
 
     /// <summary>The method's rows: each pixel handed to the method through the thread's tracer.</summary>
-    private sealed class Rows<TScratch>(Scene scene, ImagePlane plane, IPixelMethod<TScratch> method, Image image, float[]? raysPerPixel)
+    private sealed class Rows<TScratch>(Scene scene, ImagePlane plane, IPixelMethod<TScratch> method, IPixelRows image, float[]? raysPerPixel)
         : IRowRenderer<ThreadState<TScratch>>
     {
         public ThreadState<TScratch> Rent() => new(new PixelTracer(scene, plane), method.CreateScratch());

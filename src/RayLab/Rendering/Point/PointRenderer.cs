@@ -15,7 +15,7 @@ namespace RayLab.Rendering.Point;
 internal static class PointRenderer
 {
     /// <summary>Renders the scene with <paramref name="sampler"/> into <paramref name="image"/>.</summary>
-    public static RenderStatistics Render(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RenderOptions options)
+    public static RenderStatistics Render(Scene scene, ImagePlane plane, IPixelSampler sampler, IPixelRows image, RenderOptions options)
     {
         (int first, int end) = options.Rows(image.Height);
         long rays = (long)image.Width * (end - first) * sampler.SamplesPerPixel;
@@ -31,20 +31,20 @@ internal static class PointRenderer
         return loop.Finish(rays, kernel, retraced, reason);
     }
 
-    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RowLoop loop)
+    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, IPixelRows image, RowLoop loop)
     {
         var rows = new ScalarLoop(scene, sampler, image, loop);
         return plane.Dispatch<ScalarLoop, long>(ref rows);
     }
 
-    private static long RenderScalar<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image, RowLoop loop)
+    private static long RenderScalar<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, IPixelRows image, RowLoop loop)
         where TP : struct, IProjection
     {
         loop.Run(new ScalarRows<TP>(scene, plane, sampler, image));
         return 0;
     }
 
-    private static long RenderPackets<TL>(ImagePlane plane, PacketFrame frame, IPixelSampler sampler, Image image, RowLoop loop)
+    private static long RenderPackets<TL>(ImagePlane plane, PacketFrame frame, IPixelSampler sampler, IPixelRows image, RowLoop loop)
         where TL : struct, ILanes<TL> => sampler switch
         {
             JitteredSampler jittered => RenderPackets<TL, JitteredLanes<TL>>(plane, frame, () => new(jittered), sampler.SamplesPerPixel, image, loop),
@@ -64,7 +64,7 @@ internal static class PointRenderer
             _ => RenderPackets<TL, BufferedLanes<TL>>(plane, frame, () => new(sampler), sampler.SamplesPerPixel, image, loop),
         };
 
-    private static long RenderPackets<TL, TS>(ImagePlane plane, PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RowLoop loop)
+    private static long RenderPackets<TL, TS>(ImagePlane plane, PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, IPixelRows image, RowLoop loop)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
     {
@@ -72,13 +72,13 @@ internal static class PointRenderer
         return plane.Dispatch<PacketLoop<TL, TS>, long>(ref rows);
     }
 
-    private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RowLoop loop)
+    private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, IPixelRows image, RowLoop loop)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
         where TP : struct, IProjection => loop.Run(new PacketRows<TL, TS, TP>(frame, newSampler, samplesPerPixel, image)).Retraced;
 
     /// <summary>The scalar double loop's rows: each pixel the mean of its samples.</summary>
-    private sealed class ScalarRows<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, Image image) : IRowRenderer<NoScratch>
+    private sealed class ScalarRows<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, IPixelRows image) : IRowRenderer<NoScratch>
         where TP : struct, IProjection
     {
         public NoScratch Rent() => default;
@@ -94,7 +94,7 @@ internal static class PointRenderer
     }
 
     /// <summary>The packet kernel's rows; each thread has its own lane sampler (the buffered one owns arrays).</summary>
-    private sealed class PacketRows<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image) : IRowRenderer<PacketRows<TL, TS, TP>.Scratch>
+    private sealed class PacketRows<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, IPixelRows image) : IRowRenderer<PacketRows<TL, TS, TP>.Scratch>
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
         where TP : struct, IProjection
@@ -142,14 +142,14 @@ internal static class PointRenderer
     }
 
     /// <summary>The scalar loop over the image's rows, compiled for the plane's projection.</summary>
-    private readonly struct ScalarLoop(Scene scene, IPixelSampler sampler, Image image, RowLoop loop) : IProjectionAction<long>
+    private readonly struct ScalarLoop(Scene scene, IPixelSampler sampler, IPixelRows image, RowLoop loop) : IProjectionAction<long>
     {
         public long Run<TP>(ImagePlane<TP> plane)
             where TP : struct, IProjection => RenderScalar<TP>(scene, plane, sampler, image, loop);
     }
 
     /// <summary>The packet loop over the image's rows, compiled for the plane's projection.</summary>
-    private readonly struct PacketLoop<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, Image image, RowLoop loop) : IProjectionAction<long>
+    private readonly struct PacketLoop<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, IPixelRows image, RowLoop loop) : IProjectionAction<long>
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
     {
