@@ -69,25 +69,17 @@ public sealed class ZSobolSampler : PixelSampler
     internal uint SobolIndex(int x, int y, int index)
     {
         int m = Log2Block;
-        ulong pixel = Morton(x, y) << m;
+        ulong code = (Morton(x, y) << m) | (uint)index;
+        int low = m & 1;
         ulong result = 0;
-        for (int shift = 30 + m; shift >= m; shift -= 2)
+        for (int shift = 30 + m; shift >= low; shift -= 2)
         {
-            result |= (ulong)PermuteDigit((int)(pixel >> shift) & 3, pixel >> (shift + 2)) << shift;
+            result |= (ulong)PermuteDigit((int)(code >> shift) & 3, code >> (shift + 2)) << shift;
         }
 
-        ulong key = PixelKey(pixel);
-        int node = 0, t = 0;
-        for (int shift = m - 2; shift >= (m & 1); shift -= 2, node = (4 * node) + 1)
+        if (low == 1)
         {
-            int digit = (index >> shift) & 3;
-            result |= (ulong)((Permutations[Pick(NodeByte(key, node + t))] >> (2 * digit)) & 3) << shift;
-            t = (4 * t) + digit;
-        }
-
-        if ((m & 1) == 1)
-        {
-            result |= (uint)(index & 1) ^ (uint)(NodeByte(key, node + t) >> 7);
+            result |= (code & 1) ^ FlipBit(code >> 1);
         }
 
         return (uint)result;
@@ -116,16 +108,14 @@ public sealed class ZSobolSampler : PixelSampler
         digits.LastPrefix = prefix;
 
         // block[t] holds the samples whose digits above the current level are t; each level splits every entry in four.
-        ulong key = PixelKey(pixel);
         block[0] = (uint)prefix;
-        int count = 1, node = 0, chunk = -1;
-        ulong hash = 0;
-        for (int shift = m - 2; shift >= (m & 1); shift -= 2, node += count, count *= 4)
+        int count = 1;
+        for (int shift = m - 2; shift >= (m & 1); shift -= 2, count *= 4)
         {
             for (int t = count - 1; t >= 0; t--)
             {
                 uint start = block[t];
-                byte permutation = Permutations[Pick(CachedNodeByte(key, node + t, ref chunk, ref hash))];
+                byte permutation = Permutations[PermutationOf((pixel >> (shift + 2)) | (uint)t)];
                 for (int d = 3; d >= 0; d--)
                 {
                     block[(4 * t) + d] = start | (((uint)(permutation >> (2 * d)) & 3u) << shift);
@@ -137,42 +127,20 @@ public sealed class ZSobolSampler : PixelSampler
         {
             for (int t = count - 1; t >= 0; t--)
             {
-                uint start = block[t], flip = (uint)(CachedNodeByte(key, node + t, ref chunk, ref hash) >> 7);
+                uint start = block[t], flip = (uint)FlipBit((pixel >> 1) | (uint)t);
                 block[(2 * t) + 1] = start | (1u ^ flip);
                 block[2 * t] = start | flip;
             }
         }
     }
 
-    /// <summary>The hash key of a pixel's own digits (its Morton code · 2ᵐ), from which its samples' digit permutations come.</summary>
-    private ulong PixelKey(ulong pixel) => Mix(pixel ^ DigitSalt ^ 0x9e3779b97f4a7c15ul);
-
-    /// <summary>
-    /// Byte <paramref name="node"/> of a pixel's hash stream: the random byte of one node of the pixel's tree of
-    /// sample digits (node 0 the top digit; the 4ʲ nodes of level j numbered after those above, in order of the
-    /// digits above them). Eight nodes share one 64-bit hash.
-    /// </summary>
-    private static byte NodeByte(ulong key, int node) => (byte)(Mix(key + ((ulong)(node >> 3) * 0xd1b54a32d192ed03ul)) >> (8 * (node & 7)));
-
-    /// <summary><see cref="NodeByte"/>, its 64-bit hash kept while the nodes asked for stay in one group of eight.</summary>
-    private static byte CachedNodeByte(ulong key, int node, ref int chunk, ref ulong hash)
-    {
-        if (node >> 3 != chunk)
-        {
-            chunk = node >> 3;
-            hash = Mix(key + ((ulong)chunk * 0xd1b54a32d192ed03ul));
-        }
-
-        return (byte)(hash >> (8 * (node & 7)));
-    }
-
-    /// <summary>One of the 24 permutations from a random byte.</summary>
-    private static int Pick(byte b) => (b * 24) >> 8;
-
     private int PermuteDigit(int digit, ulong higher) => (Permutations[PermutationOf(higher)] >> (2 * digit)) & 3;
 
     /// <summary>Which of the 24 permutations the digits <paramref name="higher"/> above a digit pick.</summary>
     private int PermutationOf(ulong higher) => (int)(((Mix(higher ^ DigitSalt) >> 40) * 24) >> 24);
+
+    /// <summary>The last binary digit's flip (odd m), from the digits above it.</summary>
+    private ulong FlipBit(ulong higher) => Mix(higher ^ DigitSalt ^ 0x9e3779b97f4a7c15ul) >> 63;
 
     /// <summary>A 64-bit mixer (the splitmix64 finalizer).</summary>
     private static ulong Mix(ulong z)
