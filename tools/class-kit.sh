@@ -93,6 +93,20 @@ for kind in "${kinds[@]}"; do
 }
 EOF
 done
+# RayLab.ImageSharp and what it needs (SixLabors.ImageSharp), for a lab that adds the package itself.
+if ls "$feed"/RayLab.ImageSharp.*.nupkg >/dev/null 2>&1; then
+  mkdir -p "$work/imagesharp"
+  cat > "$work/imagesharp/nuget.config" <<EOF
+<configuration><packageSources><add key="kit" value="$feed" /></packageSources></configuration>
+EOF
+  cat > "$work/imagesharp/ImageSharpLab.csproj" <<EOF
+<Project Sdk="Microsoft.NET.Sdk">
+  <PropertyGroup><TargetFramework>net10.0</TargetFramework></PropertyGroup>
+  <ItemGroup><PackageReference Include="RayLab.ImageSharp" Version="$version" /></ItemGroup>
+</Project>
+EOF
+  dotnet restore "$work/imagesharp" -v q -nologo
+fi
 # (the cache names files in lower case; NuGet's ids are case-insensitive, so a package already packed here is skipped)
 have=$(ls "$feed" | tr '[:upper:]' '[:lower:]')
 for nupkg in "$NUGET_PACKAGES"/*/*/*.nupkg; do
