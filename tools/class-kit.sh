@@ -52,6 +52,14 @@ if [ $full = 1 ]; then
 fi
 template=$(ls "$feed"/RayLab.Templates.*.nupkg)
 version=$(basename "$template" .nupkg); version=${version#RayLab.Templates.}
+# One version for all (MinVer: the commit's); a commit made while packing would split them.
+for p in "${projects[@]}"; do
+  id=$(basename "$p")
+  if [ ! -e "$feed/$id.$version.nupkg" ]; then
+    echo "tools/class-kit.sh: $id was not packed at the templates' version $version (a commit during the run?); make the kit again" >&2
+    exit 1
+  fi
+done
 
 echo "== a lab of every kind, restored into an empty NuGet cache: its packages go into the feed"
 export DOTNET_CLI_HOME="$work/home" NUGET_PACKAGES="$work/packages"
