@@ -7,13 +7,13 @@
 #   DIR/checks/KIND/       the instructor's pinned checks: a lab of that kind as the template makes it (the exercise
 #                          lab with its reference solution); `raylab grade` replaces each submission's tests/Lab.Tests
 #                          and root build files with these
-#   DIR/raylab-linux-x64/  the native raylab (tools/publish-native.sh), which also grades
+#   DIR/raylab-linux-x64/  the native raylab (as tools/publish-native.sh makes it), which also grades
 #   DIR/playground/        the published playground site (samples/RayLab.Web), for any static host
 #   DIR/README.md          the instructor's page, Polish and English (docs/teaching.md is the long form)
 # Usage: tools/class-kit.sh DIR [--feed-only]
 #   --feed-only  the feed (without the tool packages) and the checks alone: what a lab needs (the CI test uses it)
 # Needs the .NET SDK and network access to a NuGet source for xUnit & co. (the machine's own sources), and for the
-# native build a C toolchain (clang or gcc).
+# native build a C toolchain (clang or gcc) and unzip (or python3).
 set -euo pipefail
 if [ $# -lt 1 ] || [ "${1:0:1}" = "-" ]; then
   echo "usage: tools/class-kit.sh DIR [--feed-only]" >&2
@@ -124,8 +124,18 @@ rm -f "$feed"/*.snupkg
 dotnet new uninstall RayLab.Templates >/dev/null
 
 if [ $full = 1 ]; then
-  echo "== the native raylab (linux-x64) -> $kit/raylab-linux-x64"
-  "$repo/tools/publish-native.sh" "$kit/raylab-linux-x64"
+  # The native tool package holds what tools/publish-native.sh makes (raylab for x86-64-v2, its -v3 and -v4 siblings,
+  # scenes/): unpacked from it rather than compiled three times more.
+  echo "== the native raylab (linux-x64, from RayLab.Tool.linux-x64) -> $kit/raylab-linux-x64"
+  mkdir -p "$work/native"
+  if command -v unzip >/dev/null; then
+    unzip -q "$feed/RayLab.Tool.linux-x64.$version.nupkg" -d "$work/native"
+  else
+    python3 -m zipfile -e "$feed/RayLab.Tool.linux-x64.$version.nupkg" "$work/native"
+  fi
+  entry=$(find "$work/native" -type f -name raylab | head -n 1)
+  cp -r "$(dirname "$entry")" "$kit/raylab-linux-x64"
+  chmod +x "$kit/raylab-linux-x64"/raylab*
   echo "== the playground -> $kit/playground"
   dotnet publish "$repo/samples/RayLab.Web" -c Release -o "$work/web" -v q -nologo
   cp -r "$work/web/wwwroot" "$kit/playground"
