@@ -71,12 +71,13 @@ public sealed class ClassKit : IAsyncLifetime
     public Task<string> RunAsync(string workingDirectory, string fileName, params string[] args) =>
         ChildProcess.RunCheckedAsync(workingDirectory, Environment(), ChildTimeout, fileName, args);
 
-    /// <summary>A lab from the installed template, made with the moved kit's feed as its only source.</summary>
+    /// <summary>A method lab from the installed template, made with the moved kit's feed as its only source.</summary>
     /// <returns>The lab's folder.</returns>
     public async Task<string> NewLabAsync(string folder, string name, bool restore)
     {
         string lab = Path.Combine(folder, name);
-        List<string> args = ["new", "raylab-lab", "-o", lab, "--feed", Path.Combine(Kit, "feed"), "--offline"];
+        // The method lab: these submissions change MyMethod.cs (the exercise lab is the template's default).
+        List<string> args = ["new", "raylab-lab", "-o", lab, "--kind", "method", "--feed", Path.Combine(Kit, "feed"), "--offline"];
         if (!restore)
         {
             args.Add("--skipRestore");

@@ -21,6 +21,9 @@ internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, Render
     /// <summary>The rows [Start, End) of an image <paramref name="height"/> rows tall that this render fills.</summary>
     public (int Start, int End) Rows(int height) => (Math.Min(FirstRow, height), Math.Min(EndRow, height));
 
+    /// <summary>Records the row loop's phases and band times, for the scaling tool; null (the default) records nothing.</summary>
+    public RowLoopTrace? Trace { get; init; }
+
     /// <summary>A kept <typeparamref name="T"/> from <see cref="Pool"/>, or a new one.</summary>
     public T Rent<T>()
         where T : class, new() => Pool is null ? new T() : Pool.Rent<T>();

@@ -49,7 +49,10 @@ public sealed class Renderer
     /// <summary>The per-thread buffers kept from one render to the next (the adaptive renderer's lines and caches).</summary>
     private readonly ScratchPool _pool = new();
 
-    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool);
+    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool) { Trace = Trace };
+
+    /// <summary>Records the next renders' row-loop phases and band times (the scaling tool); null records nothing.</summary>
+    internal RowLoopTrace? Trace { get; set; }
 
     /// <summary>
     /// Renders <paramref name="scene"/> into <paramref name="image"/> by <paramref name="method"/>: the one place

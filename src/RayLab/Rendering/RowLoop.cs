@@ -17,11 +17,6 @@ internal interface IRowRenderer<TScratch>
     /// <summary>A thread's scratch, new or kept from an earlier render.</summary>
     TScratch Rent();
 
-    /// <summary>Starts the band of rows <paramref name="first"/> to <paramref name="end"/> − 1 on this thread.</summary>
-    void BeginBand(int first, int end, ref TScratch scratch)
-    {
-    }
-
     /// <summary>Renders row <paramref name="row"/> (0 at the top) with this thread's scratch.</summary>
     void RenderRow(int row, ref TScratch scratch);
 
@@ -63,6 +58,7 @@ internal readonly struct RowLoop
         _rows = rows;
         (int first, int end) = options.Rows(rows);
         options.Progress?.Start(end - first);
+        options.Trace?.Start();
         _started = Stopwatch.GetTimestamp();
     }
 
@@ -70,8 +66,10 @@ internal readonly struct RowLoop
     public static RowLoop Start(RenderOptions options, int rows) => new(options, rows);
 
     /// <summary>
-    /// Renders every row: bands of <see cref="IRowRenderer{TScratch}.BandHeight"/> rows in parallel, each band's rows in
-    /// order on one thread, the token checked before each row. A renderer's own exception is rethrown as it was thrown.
+    /// Renders every row: bands of <see cref="IRowRenderer{TScratch}.BandHeight"/> rows, each band's rows in order on one
+    /// thread, the token checked before each row. Each thread renders a range of consecutive bands and steals half of
+    /// the fullest range when its own is done (<see cref="BandSchedule"/>), so the threads finish together wherever
+    /// the costly bands are. A renderer's own exception is rethrown as it was thrown.
     /// </summary>
     /// <returns>What the threads counted.</returns>
     /// <exception cref="OperationCanceledException">The render was cancelled.</exception>
@@ -82,20 +80,31 @@ internal readonly struct RowLoop
         int band = renderer.BandHeight;
         // The rows this render fills (all, or Renderer.RenderRows' band), in the renderer's bands as a whole render cuts them.
         (int start, int stop) = _options.Rows(_rows);
-        int firstBand = start / band;
+        int firstBand = start / band, endBand = stop > start ? ((stop + band - 1) / band) : firstBand;
         RenderProgress? progress = _options.Progress;
         CancellationToken token = _options.CancellationToken;
-        var parallel = new ParallelOptions { MaxDegreeOfParallelism = _options.MaxDegreeOfParallelism, CancellationToken = token };
+        RowLoopTrace? trace = _options.Trace;
+        int workers = BandSchedule.Workers(endBand - firstBand, _options.MaxDegreeOfParallelism);
+        var schedule = new BandSchedule(firstBand, endBand, workers, trace is { Scattered: true } && workers == 1);
+        trace?.Begin(firstBand, endBand, band);
+        var parallel = new ParallelOptions { MaxDegreeOfParallelism = workers, CancellationToken = token };
         try
         {
-            Parallel.For(firstBand, stop > start ? ((stop + band - 1) / band) : firstBand, parallel, renderer.Rent, (b, _, scratch) =>
+            // One iteration per worker, its number its range in the schedule; a worker renders bands until the
+            // schedule has none left. A worker that starts late finds its range stolen: nobody waits for a thread.
+            Parallel.For(0, workers, parallel, renderer.Rent, (worker, _, scratch) =>
             {
-                int first = Math.Max(start, b * band), end = Math.Min(stop, (b + 1) * band);
-                renderer.BeginBand(first, end, ref scratch);
-                for (int row = first; row < end && !token.IsCancellationRequested; row++)
+                while (!token.IsCancellationRequested && schedule.TryTake(worker, out int b))
                 {
-                    renderer.RenderRow(row, ref scratch);
-                    progress?.CompleteRow();
+                    long began = trace?.Clock() ?? 0;
+                    int first = Math.Max(start, b * band), end = Math.Min(stop, (b + 1) * band);
+                    for (int row = first; row < end && !token.IsCancellationRequested; row++)
+                    {
+                        renderer.RenderRow(row, ref scratch);
+                        progress?.CompleteRow();
+                    }
+
+                    trace?.Band(b, began, trace.Clock());
                 }
 
                 return scratch;
@@ -113,6 +122,7 @@ internal readonly struct RowLoop
             ExceptionDispatchInfo.Capture(e.InnerExceptions[0]).Throw();
         }
 
+        trace?.End();
         token.ThrowIfCancellationRequested();
         return totals;
     }
@@ -122,6 +132,10 @@ internal readonly struct RowLoop
     /// <param name="kernel">The loop that rendered.</param>
     /// <param name="retraced">Samples traced again in double.</param>
     /// <param name="scalarReason">Why an auto render took the scalar path, or null.</param>
-    public RenderStatistics Finish(long rays, RenderKernel kernel, long retraced = 0, string? scalarReason = null) =>
-        new(rays, Stopwatch.GetElapsedTime(_started)) { Kernel = kernel, RetracedSamples = retraced, ScalarReason = scalarReason };
+    public RenderStatistics Finish(long rays, RenderKernel kernel, long retraced = 0, string? scalarReason = null)
+    {
+        TimeSpan elapsed = Stopwatch.GetElapsedTime(_started);
+        _options.Trace?.Finish();
+        return new(rays, elapsed) { Kernel = kernel, RetracedSamples = retraced, ScalarReason = scalarReason };
+    }
 }

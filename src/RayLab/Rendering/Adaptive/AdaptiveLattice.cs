@@ -13,13 +13,14 @@ namespace RayLab.Rendering.Adaptive;
 /// allocation per point. Nothing of size W×H is kept.
 /// </summary>
 /// <remarks>
-/// <para>The row loop hands a thread bands of <see cref="BandHeight"/> rows, top to bottom: a row's top corner line
-/// is the bottom line of the row above when the same thread rendered it (the lines roll), else traced again (the
+/// <para>The row loop hands a thread runs of consecutive rows, top to bottom: a row's top corner line is the bottom
+/// line of the row above when the same thread rendered that row just before (the lines roll), else traced again (the
 /// value is the same either way, and the count of rays and of points traced again in double counts each line once).</para>
 /// <para>Points on a pixel's left and right edges are shared with the pixel beside it in the same row, which the same
 /// thread evaluates next, so they are kept in a buffer per vertical pixel line. Points on a pixel's top and bottom
 /// edges are shared with another row: each row traces those it needs and notes which, so that a point both rows
-/// traced is counted as one ray — within a band at once, between bands once the render is done.</para>
+/// traced is counted as one ray — at once when the same thread rendered the row above just before, else once the
+/// render is done.</para>
 /// </remarks>
 internal sealed class AdaptiveLattice
 {
@@ -31,9 +32,6 @@ internal sealed class AdaptiveLattice
     private readonly Rgb24[] _levels;
     private readonly RenderOptions _options;
     private readonly BandEdges _edges;
-
-    /// <summary>Rows per band of the row loop: the top corner line is traced again, and edge points are matched after the render, once per band.</summary>
-    public const int BandHeight = 16;
 
     /// <summary>The most entries a thread's band of minimum-depth points may take (16 MB); deeper bands go point by point.</summary>
     private const long MaxDenseEntries = 1 << 22;
@@ -55,7 +53,7 @@ internal sealed class AdaptiveLattice
         _levels = [.. _palette.Select(Rgb24.FromIntensity)];
         _options = options;
         _edges = options.Rent<BandEdges>();
-        _edges.Prepare((plane.Height + BandHeight - 1) / BandHeight);
+        _edges.Prepare(plane.Height);
         Kernel = KernelChoice.Choose(options.Kernel, scene, plane, out PacketFrame? frame, out _);
         _hits = Kernel == RenderKernel.Scalar ? null : LatticeHits.TryCreate(scene, plane, _size, frame);
         if (minDepth > 0)
@@ -144,16 +142,16 @@ internal sealed class AdaptiveLattice
     public Rgb24 Level(int id) => _levels[id];
 
     /// <summary>
-    /// Points on the horizontal pixel lines between bands (other than corners) that both rows beside the line traced:
-    /// each band's sorted list of its top row's top-edge points against the band above's list of its bottom row's
-    /// bottom-edge points. The lists' storage goes back to the pool.
+    /// Points on the horizontal pixel lines (other than corners) that both rows beside the line traced, where the two
+    /// rows were not rendered one after the other by one thread: a row's sorted list of its top-edge points against the
+    /// row above's list of its bottom-edge points. The lists' storage goes back to the pool.
     /// </summary>
     public long SharedEdgeDuplicates()
     {
         long duplicates = 0;
-        for (int band = 1; band < _edges.Count; band++)
+        for (int row = 1; row < _edges.Count; row++)
         {
-            duplicates += Common(CollectionsMarshal.AsSpan(_edges.Bottoms[band - 1]), CollectionsMarshal.AsSpan(_edges.Tops[band]));
+            duplicates += Common(CollectionsMarshal.AsSpan(_edges.Bottoms[row - 1]), CollectionsMarshal.AsSpan(_edges.Tops[row]));
         }
 
         _options.Return(_edges);
@@ -193,8 +191,12 @@ internal sealed class AdaptiveLattice
         return new Source(this, buffers);
     }
 
-    /// <summary>Gives a thread's buffers back for the next thread or render.</summary>
-    public void Return(Source source) => _options.Return(source.Storage);
+    /// <summary>Gives a thread's buffers back for the next thread or render, with its last row's bottom-edge notes for <see cref="SharedEdgeDuplicates"/>.</summary>
+    public void Return(Source source)
+    {
+        source.Storage.FlushBottomPoints(_edges);
+        _options.Return(source.Storage);
+    }
 
     private int Trace(long lx, long ly) => LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lx, ly);
 
@@ -250,13 +252,6 @@ internal sealed class AdaptiveLattice
             }
 
             return buffers.GuardBlocks;
-        }
-
-        /// <summary>Starts the row loop's band of rows <paramref name="first"/> to <paramref name="end"/> − 1 on this thread.</summary>
-        public readonly void BeginBand(int first, int end)
-        {
-            _buffers.BandFirst = first;
-            _buffers.BandEnd = end;
         }
 
         /// <summary>
@@ -424,29 +419,29 @@ internal sealed class AdaptiveLattice
 
         /// <summary>
         /// Ends a row: its notes of horizontal-line points, sorted. Its top-edge points that the row above traced too
-        /// are taken off its rays when that row was the band's; at the band's top and bottom the notes go to the
-        /// lattice for <see cref="SharedEdgeDuplicates"/>.
+        /// are taken off its rays when this thread rendered that row just before; else its top-edge notes, and the
+        /// bottom-edge notes of the row this thread rendered last, go to the lattice for <see cref="SharedEdgeDuplicates"/>.
         /// </summary>
         public void EndRow(int row)
         {
             Buffers buffers = _buffers;
             buffers.TopPoints.Sort();
             buffers.BottomPoints.Sort();
-            if (row != buffers.BandFirst)
+            if (row > 0 && buffers.PointsRow == row - 1)
             {
                 Rays -= Common(CollectionsMarshal.AsSpan(buffers.AboveBottomPoints), CollectionsMarshal.AsSpan(buffers.TopPoints));
             }
-            else if (row > 0)
+            else
             {
-                _lattice._edges.Tops[row / BandHeight].AddRange(buffers.TopPoints);
-            }
-
-            if (row == buffers.BandEnd - 1)
-            {
-                _lattice._edges.Bottoms[row / BandHeight].AddRange(buffers.BottomPoints);
+                buffers.FlushBottomPoints(_lattice._edges);
+                if (row > 0)
+                {
+                    _lattice._edges.Tops[row].AddRange(buffers.TopPoints);
+                }
             }
 
             (buffers.AboveBottomPoints, buffers.BottomPoints) = (buffers.BottomPoints, buffers.AboveBottomPoints);
+            buffers.PointsRow = row;
             buffers.TopPoints.Clear();
             buffers.BottomPoints.Clear();
         }
@@ -587,8 +582,11 @@ internal sealed class AdaptiveLattice
 
             public List<long> BottomPoints { get; set; } = [];
 
-            /// <summary>The row above's bottom-edge notes, sorted, while this thread renders the next row of the band.</summary>
+            /// <summary>The bottom-edge notes, sorted, of the row this thread rendered last (<see cref="PointsRow"/>).</summary>
             public List<long> AboveBottomPoints { get; set; } = [];
+
+            /// <summary>The row whose bottom-edge notes <see cref="AboveBottomPoints"/> holds (−1: none).</summary>
+            public int PointsRow { get; set; } = -1;
 
             public uint Stamp { get; set; }
 
@@ -604,11 +602,16 @@ internal sealed class AdaptiveLattice
             /// <summary>The block row <see cref="GuardBlocks"/> holds (−1: none).</summary>
             public int GuardBlockRow { get; set; } = -1;
 
-            /// <summary>The first row of the row loop's band this thread renders.</summary>
-            public int BandFirst { get; set; }
-
-            /// <summary>The row after the band's last.</summary>
-            public int BandEnd { get; set; }
+            /// <summary>Gives the last row's bottom-edge notes to <paramref name="edges"/> (the next row is not this thread's, or it is done).</summary>
+            public void FlushBottomPoints(BandEdges edges)
+            {
+                if (PointsRow >= 0)
+                {
+                    edges.Bottoms[PointsRow].AddRange(AboveBottomPoints);
+                    AboveBottomPoints.Clear();
+                    PointsRow = -1;
+                }
+            }
 
             /// <summary>
             /// Sizes the buffers for a render of <paramref name="width"/> pixels a row and <paramref name="size"/>
@@ -632,7 +635,7 @@ internal sealed class AdaptiveLattice
                 BottomPoints.Clear();
                 AboveBottomPoints.Clear();
                 Stamp = 0;
-                CornerLine = DenseRow = GuardBlockRow = -1;
+                CornerLine = DenseRow = GuardBlockRow = PointsRow = -1;
                 BottomLineRetraced = 0;
 
                 static T[] Sized<T>(T[] kept, int length) => kept.Length == length ? kept : new T[length];
@@ -641,38 +644,39 @@ internal sealed class AdaptiveLattice
     }
 
     /// <summary>
-    /// The notes of horizontal-line points at the top and bottom of each band of rows, for
-    /// <see cref="SharedEdgeDuplicates"/>: one list per band, each written by the one thread that renders the band.
+    /// The notes of horizontal-line points of the rows whose neighbour above or below another thread rendered (or the
+    /// same thread, not just before or after), for <see cref="SharedEdgeDuplicates"/>: two lists per row, each written
+    /// by the one thread that renders the row.
     /// </summary>
     internal sealed class BandEdges
     {
         private List<long>[] _tops = [], _bottoms = [];
 
-        /// <summary>Bands in the current render.</summary>
+        /// <summary>Rows in the current render.</summary>
         public int Count { get; private set; }
 
-        /// <summary>Each band's top row's top-edge points, sorted.</summary>
+        /// <summary>Each row's top-edge points, sorted, when the thread did not render the row above just before.</summary>
         public List<long>[] Tops => _tops;
 
-        /// <summary>Each band's bottom row's bottom-edge points, sorted.</summary>
+        /// <summary>Each row's bottom-edge points, sorted, when the thread did not render the row below just after.</summary>
         public List<long>[] Bottoms => _bottoms;
 
-        /// <summary>Empty lists for <paramref name="bands"/> bands, kept from the last render where there are enough.</summary>
-        public void Prepare(int bands)
+        /// <summary>Empty lists for <paramref name="rows"/> rows, kept from the last render where there are enough.</summary>
+        public void Prepare(int rows)
         {
-            if (_tops.Length < bands)
+            if (_tops.Length < rows)
             {
-                _tops = Grow(_tops, bands);
-                _bottoms = Grow(_bottoms, bands);
+                _tops = Grow(_tops, rows);
+                _bottoms = Grow(_bottoms, rows);
             }
 
-            for (int band = 0; band < bands; band++)
+            for (int row = 0; row < rows; row++)
             {
-                _tops[band].Clear();
-                _bottoms[band].Clear();
+                _tops[row].Clear();
+                _bottoms[row].Clear();
             }
 
-            Count = bands;
+            Count = rows;
 
             static List<long>[] Grow(List<long>[] kept, int length)
             {

@@ -4,8 +4,7 @@ using RayLab.Cameras;
 namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
-/// The lab's adaptive antialiasing (section 4.1.4) as a renderer: on the <see cref="RowLoop"/>, a band of rows per
-/// task, each row's pixel corners are traced as two lines (<see cref="AdaptiveLattice"/>), then each pixel is
+/// The lab's adaptive antialiasing (section 4.1.4) as a renderer: on the <see cref="RowLoop"/>, row by row, each row's pixel corners are traced as two lines (<see cref="AdaptiveLattice"/>), then each pixel is
 /// subdivided where its values disagree (<see cref="AdaptivePixel"/>), each thread with its own reusable buffers. It relies
 /// on the scene's flat shading: a point is kept as the index of what it hit, its value that index's
 /// <see cref="Scene.ColourOf"/>.
@@ -88,7 +87,7 @@ internal static class AdaptiveRenderer
         return loop.Finish(rays, lattice.Kernel, lattice.RetracedPoints);
     }
 
-    /// <summary>The adaptive rows: bands of <see cref="AdaptiveLattice.BandHeight"/> rows, each thread with its lattice <see cref="AdaptiveLattice.Source"/>.</summary>
+    /// <summary>The adaptive rows, each thread with its lattice <see cref="AdaptiveLattice.Source"/>.</summary>
     private sealed class Rows(AdaptiveLattice lattice, AdaptiveSampler sampler, IPixelRows image, float[]? raysPerPixel) : IRowRenderer<AdaptiveLattice.Source>
     {
         private readonly bool _flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
@@ -97,11 +96,7 @@ internal static class AdaptiveRenderer
         private readonly bool _dense = lattice.DenseDepth != 0 && lattice.Guard is null;
         private readonly bool _centres = lattice.CentreLine && lattice.Guard is null;
 
-        public int BandHeight => AdaptiveLattice.BandHeight;
-
         public AdaptiveLattice.Source Rent() => lattice.Rent();
-
-        public void BeginBand(int first, int end, ref AdaptiveLattice.Source source) => source.BeginBand(first, end);
 
         public void Return(AdaptiveLattice.Source source, ref RowTotals totals)
         {

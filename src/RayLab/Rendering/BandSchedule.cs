@@ -1,0 +1,110 @@
+using System.Runtime.InteropServices;
+
+namespace RayLab.Rendering;
+
+/// <summary>
+/// Which band a <see cref="RowLoop"/> thread renders next, by work stealing over ranges (as TBB's and Embree's
+/// schedulers split ranges): worker w starts with the w-th of equal ranges of consecutive bands and takes its bands
+/// from the front, one at a time; a worker whose range is empty steals the back half of the range with the most
+/// bands left. A thread thus renders long runs of consecutive bands (the adaptive renderer keeps its corner lines
+/// from one row to the next), and wherever the costly bands are, the threads finish together: the last pieces
+/// stolen are single bands. Each range has a cache line to itself.
+/// </summary>
+internal sealed class BandSchedule
+{
+    private readonly Range[] _ranges;
+    private readonly int _first;
+    private readonly bool _scattered;
+
+    /// <summary>A schedule of bands <paramref name="first"/> to <paramref name="end"/> − 1 for <paramref name="workers"/> threads.</summary>
+    /// <param name="first">The first band.</param>
+    /// <param name="end">One past the last band.</param>
+    /// <param name="workers">The threads that take bands, numbered 0 to <paramref name="workers"/> − 1.</param>
+    /// <param name="scattered">For one worker only: the even bands, then the odd ones, so no band follows the one above it (what a band costs on a thread that did not render the band above).</param>
+    public BandSchedule(int first, int end, int workers, bool scattered = false)
+    {
+        _first = first;
+        _scattered = scattered;
+        _ranges = new Range[workers];
+        int bands = end - first;
+        for (int w = 0; w < workers; w++)
+        {
+            _ranges[w].State = Pack((int)((long)bands * w / workers), (int)((long)bands * (w + 1) / workers));
+        }
+    }
+
+    /// <summary>The threads a loop of <paramref name="bands"/> bands uses at most <paramref name="maxDegreeOfParallelism"/> wide (−1: the processor count).</summary>
+    public static int Workers(int bands, int maxDegreeOfParallelism) =>
+        Math.Max(1, Math.Min(bands, maxDegreeOfParallelism == -1 ? Environment.ProcessorCount : maxDegreeOfParallelism));
+
+    /// <summary>The next band for worker <paramref name="worker"/>: the front of its range, else the back half of the fullest range stolen; false when every range is empty.</summary>
+    public bool TryTake(int worker, out int band)
+    {
+        ref long own = ref _ranges[worker].State;
+        while (true)
+        {
+            long state = Volatile.Read(ref own);
+            (int lo, int hi) = Unpack(state);
+            if (lo >= hi)
+            {
+                break;
+            }
+
+            if (Interlocked.CompareExchange(ref own, Pack(lo + 1, hi), state) == state)
+            {
+                band = _first + (_scattered ? Scatter(lo, hi) : lo);
+                return true;
+            }
+        }
+
+        while (true)
+        {
+            int victim = -1, most = 0;
+            long seen = 0;
+            for (int v = 0; v < _ranges.Length; v++)
+            {
+                long state = Volatile.Read(ref _ranges[v].State);
+                (int lo, int hi) = Unpack(state);
+                if (hi - lo > most)
+                {
+                    (victim, most, seen) = (v, hi - lo, state);
+                }
+            }
+
+            if (victim < 0)
+            {
+                band = 0;
+                return false;
+            }
+
+            (int vlo, int vhi) = Unpack(seen);
+            int mid = vlo + ((vhi - vlo) / 2);
+            if (Interlocked.CompareExchange(ref _ranges[victim].State, Pack(vlo, mid), seen) == seen)
+            {
+                // Only this worker writes its own empty range; thieves skip it until then.
+                Volatile.Write(ref own, Pack(mid + 1, vhi));
+                band = _first + mid;
+                return true;
+            }
+        }
+    }
+
+    /// <summary>The scattered order's band for the <paramref name="lo"/>-th take of <paramref name="hi"/>: even bands, then odd ones.</summary>
+    private static int Scatter(int lo, int hi)
+    {
+        int half = (hi + 1) / 2;
+        return lo < half ? 2 * lo : (2 * (lo - half)) + 1;
+    }
+
+    private static long Pack(int lo, int hi) => ((long)lo << 32) | (uint)hi;
+
+    private static (int Lo, int Hi) Unpack(long state) => ((int)(state >> 32), (int)state);
+
+    /// <summary>A worker's range [lo, hi) of bands not yet taken, packed in one word, alone on its cache line (128 bytes either side, for CPUs that fetch lines in pairs).</summary>
+    [StructLayout(LayoutKind.Explicit, Size = 256)]
+    private struct Range
+    {
+        [FieldOffset(128)]
+        public long State;
+    }
+}

@@ -1,0 +1,113 @@
+using RayLab.Rendering;
+
+namespace RayLab.Scaling;
+
+/// <summary>
+/// The render time on N threads predicted from a one-thread <see cref="Profile"/>: the serial set-up and the work
+/// after the rows as measured, the parallel part of the set-up divided by N, and the row loop simulated as
+/// <see cref="BandSchedule"/> runs it: each thread starts with an equal range of bands, and whenever a thread is free
+/// it takes the front of its range or, when that is empty, steals the back half of the fullest range; a band costs
+/// its in-order time when the same thread rendered the band above just before, else its scattered time. Thread start-up and memory bandwidth are not modelled.
+/// </summary>
+internal class Model(Profile profile)
+{
+    protected Profile Profile => profile;
+
+    public double Predict(int threads) =>
+        profile.PreparationMs - profile.ParallelPreparationMs + (profile.ParallelPreparationMs / threads) + Rows(threads) + profile.AfterMs;
+
+    /// <summary>The row loop's time on <paramref name="threads"/> threads.</summary>
+    protected virtual double Rows(int threads)
+    {
+        int bands = profile.BandMs.Length;
+        int workers = BandSchedule.Workers(bands, threads);
+        var free = new double[workers];
+        var last = new int[workers];
+        var lo = new int[workers];
+        var hi = new int[workers];
+        for (int w = 0; w < workers; w++)
+        {
+            last[w] = -2;
+            lo[w] = (int)((long)bands * w / workers);
+            hi[w] = (int)((long)bands * (w + 1) / workers);
+        }
+
+        var done = new bool[workers];
+        while (true)
+        {
+            // The worker free first takes its next band, or steals the back half of the fullest range.
+            int w = -1;
+            for (int i = 0; i < workers; i++)
+            {
+                if (!done[i] && (w < 0 || free[i] < free[w]))
+                {
+                    w = i;
+                }
+            }
+
+            if (w < 0)
+            {
+                break;
+            }
+
+            int band;
+            if (lo[w] < hi[w])
+            {
+                band = lo[w]++;
+            }
+            else
+            {
+                int victim = -1;
+                for (int v = 0; v < workers; v++)
+                {
+                    if (hi[v] - lo[v] > 0 && (victim < 0 || hi[v] - lo[v] > hi[victim] - lo[victim]))
+                    {
+                        victim = v;
+                    }
+                }
+
+                if (victim < 0)
+                {
+                    done[w] = true;
+                    continue;
+                }
+
+                int mid = lo[victim] + ((hi[victim] - lo[victim]) / 2);
+                (lo[w], hi[w]) = (mid + 1, hi[victim]);
+                hi[victim] = mid;
+                band = mid;
+            }
+
+            free[w] += band == last[w] + 1 ? profile.BandMs[band] : profile.ScatteredBandMs[band];
+            last[w] = band;
+        }
+
+        return free.Max();
+    }
+
+    /// <summary>
+    /// The loop before this schedule, as an optimistic model: Parallel.For handing the bands out one at a time, in
+    /// order, to whichever thread is free first, <paramref name="merge"/> of today's bands to one of its bands.
+    /// </summary>
+    public static Model Old(Profile profile, int merge) => new OldModel(profile, merge);
+
+    private sealed class OldModel(Profile profile, int merge) : Model(profile)
+    {
+        protected override double Rows(int threads)
+        {
+            int bands = Profile.BandMs.Length;
+            var free = new double[BandSchedule.Workers((bands + merge - 1) / merge, threads)];
+            for (int b = 0; b < bands; b += merge)
+            {
+                int w = Array.IndexOf(free, free.Min());
+                free[w] += Profile.ScatteredBandMs[b];
+                for (int k = b + 1; k < Math.Min(bands, b + merge); k++)
+                {
+                    free[w] += Profile.BandMs[k];
+                }
+            }
+
+            return free.Max();
+        }
+    }
+}

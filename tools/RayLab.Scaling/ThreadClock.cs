@@ -1,0 +1,27 @@
+using System.Runtime.InteropServices;
+
+namespace RayLab.Scaling;
+
+/// <summary>The calling thread's CPU time in nanoseconds (Linux <c>clock_gettime(CLOCK_THREAD_CPUTIME_ID)</c>): what a band costs, without the time other processes took the core.</summary>
+internal static partial class ThreadClock
+{
+    public const long Frequency = 1_000_000_000;
+
+    private const int ThreadCpuTime = 3;
+
+    public static long Now()
+    {
+        _ = GetTime(ThreadCpuTime, out TimeSpec t);
+        return (t.Seconds * Frequency) + t.Nanoseconds;
+    }
+
+    [LibraryImport("libc", EntryPoint = "clock_gettime")]
+    private static partial int GetTime(int clock, out TimeSpec time);
+
+    [StructLayout(LayoutKind.Sequential)]
+    private struct TimeSpec
+    {
+        public long Seconds;
+        public long Nanoseconds;
+    }
+}
