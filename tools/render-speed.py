@@ -22,7 +22,7 @@ parser.add_argument("--samples", default="16,256")
 parser.add_argument("--before")
 parser.add_argument("--before-all", action="store_true")
 parser.add_argument("--kernel")
-parser.add_argument("--points", default="jittered,regular,random,cmj,multijittered,nrooks,hammersley,sobol")
+parser.add_argument("--points", default="jittered,regular,random,cmj,multijittered,nrooks,hammersley,sobol,pmj02,pmj02bn,zsobol")
 args = parser.parse_args()
 subprocess.run(["dotnet", "build", os.path.join(root, "samples", "RayLab.Console"), "-c", "Release", "-v", "q", "-nologo"],
                check=True, stdout=subprocess.DEVNULL)

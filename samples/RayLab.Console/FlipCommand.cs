@@ -8,7 +8,8 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// <c>raylab flip REF TEST [-o MAP.png] [--ppd N]</c>: the error a viewer sees between two pictures of the same size
-/// (mean LDR-FLIP, <see cref="Flip"/>) and their RMSE in 8-bit levels (<see cref="ImageError"/>), and with
+/// (mean LDR-FLIP, <see cref="Flip"/>), their RMSE in 8-bit levels (<see cref="ImageError"/>), where the error sits
+/// (<see cref="ErrorLocation"/>: the low-pass RMSE and the low-frequency share), and with
 /// <c>-o</c> the FLIP map in the magma colours of NVIDIA's tool (<see cref="FlipMap.Render"/>). The pictures are read
 /// by SkiaSharp (<see cref="SkiaBitmaps"/>): PNG, JPEG, WebP, BMP or GIF.
 /// </summary>
@@ -23,7 +24,7 @@ public static class FlipCommand
         var test = new Argument<string>("test") { Description = "The picture judged, of the reference's size." };
         var output = new Option<string?>("--output", "-o") { Description = $"Also write the FLIP map in magma colours (black: no visible difference, pale yellow: 1), {string.Join(", ", ImageFormats.Extensions)}. Default: none.", HelpName = "MAP.png" };
         var ppd = new Option<double?>("--ppd") { Description = string.Create(CultureInfo.InvariantCulture, $"The observer's pixels per degree of visual angle, {FlipOptions.MinPixelsPerDegree:0} to {FlipOptions.MaxPixelsPerDegree:0}. Default: the FLIP paper's {FlipOptions.DefaultPixelsPerDegree:F2} (0.7 m from a 0.7 m wide display of 3840 pixels)."), HelpName = "N" };
-        var flip = new Command("flip", "Compare two pictures of the same size: print the mean FLIP (the difference a viewer sees flipping between them) and the RMSE in 8-bit levels, and write the FLIP map.")
+        var flip = new Command("flip", "Compare two pictures of the same size: print the mean FLIP (the difference a viewer sees flipping between them), the RMSE in 8-bit levels and where the error sits (low-pass RMSE, low-frequency share), and write the FLIP map.")
         {
             reference, test, output, ppd,
         };
@@ -83,6 +84,9 @@ public static class FlipCommand
         stdout.WriteLine(string.Create(inv, $"mean FLIP {flip.Mean:F6} (LDR-FLIP, {flip.PixelsPerDegree:F2} pixels per degree; 0 = no visible difference)"));
         stdout.WriteLine(string.Create(inv,
             $"RMSE {error.Rmse:F4} levels (8-bit; mean abs. {error.MeanAbsolute:F4}, max {error.Max}, {100 * error.FractionOverOneLevel:F3}% of pixels more than 1 level off)"));
+        ErrorSpectrum spectrum = ErrorLocation.Spectrum(test, reference);
+        stdout.WriteLine(string.Create(inv,
+            $"low-pass RMSE {ErrorLocation.LowPassRmse(test, reference, 1):F4} levels (Gaussian blur σ = 1 px), {ErrorLocation.LowPassRmse(test, reference, 2):F4} (σ = 2 px); low share {spectrum.LowFrequencyShare:F4} (of the error's power, at periods of 8 px or more; white noise 0.049)"));
         if (mapPath is not null)
         {
             stdout.WriteLine($"wrote {mapPath}: the FLIP map, {reference.Width}×{reference.Height}, magma colours (black = no visible difference, pale yellow = 1)");

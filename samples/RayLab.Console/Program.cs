@@ -122,13 +122,14 @@ public static class Program
         var patterns = PatternsCommand.Create(stdout, stderr, cancellation);
         var chart = ChartCommand.Create(stdout, stderr);
         var flip = FlipCommand.Create(stdout, stderr);
+        var grade = GradeCommand.Create(stdout, stderr, cancellation);
 
         var root = new RootCommand(
             "RayLab: the photorealistic-rendering lab's ray tracer. With no command, renders the two-sphere scene "
             + "with the orthographic and the perspective camera, adaptive antialiasing, into out/ (with heat maps). "
             + "'raylab render --help' lists the options of a render.")
         {
-            render, compare, flip, scenes, patterns, chart,
+            render, compare, flip, scenes, patterns, chart, grade,
         };
         root.HelpName = "raylab"; // not the host's name (dotnet, testhost) in the usage lines
         root.SetAction(_ => RenderJob.RunDefault(stdout, stderr, cancellation));

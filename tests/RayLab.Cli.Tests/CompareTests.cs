@@ -58,9 +58,18 @@ public sealed partial class CompareTests : IDisposable
             Assert.Equal(error.Max, row.Max);
             Assert.Equal(error.FractionOverOneLevel, row.OverOneLevel, 6);
             Assert.True(Load(Path.Combine(report, row.ErrorImage)).Width > 48, "the error image has a legend");
-            Assert.Equal(Flip.Compute(exact, Load(Path.Combine(report, row.Image))).Mean, row.MeanFlip, 8);
+            Assert.Equal(Flip.Compute(exact, Load(Path.Combine(report, row.Image))).Mean, row.MeanFlip, 1e-8);
             Assert.Equal($"flip/{Path.GetFileName(row.Image)}", row.FlipMap);
             Assert.True(Load(Path.Combine(report, row.FlipMap)).Width > 48, "the FLIP map has a legend");
+            Image image = Load(Path.Combine(report, row.Image));
+            Assert.Equal(ErrorLocation.LowPassRmse(image, exact, 1), row.LowPass1, 1e-8);
+            Assert.Equal(ErrorLocation.LowPassRmse(image, exact, 2), row.LowPass2, 1e-8);
+            Assert.Equal(ErrorLocation.Spectrum(image, exact).LowFrequencyShare, row.LowShare, 1e-8);
+        }
+
+        foreach (int spp in rows.Where(r => r.SamplesPerPixel > 0).Select(r => r.SamplesPerPixel).Distinct())
+        {
+            Assert.True(File.Exists(Path.Combine(report, CompareReport.SpectrumStem(spp) + ".svg")), $"spectrum at {spp} spp");
         }
 
         // The exact image is the exact renderer's, and jittered sampling gets closer to it with every budget.
@@ -75,7 +84,7 @@ public sealed partial class CompareTests : IDisposable
         string[] lines = stdout.TrimEnd('\n').Split('\n');
         Assert.StartsWith("| sampler | setting |", lines[0], StringComparison.Ordinal);
         Assert.Equal(rows.Length + 4, lines.Length);
-        Assert.All(lines[2..^2], l => Assert.Equal(10, l.Count(c => c == '|')));
+        Assert.All(lines[2..^2], l => Assert.Equal(13, l.Count(c => c == '|')));
         Assert.All(rows.Select((r, i) => (r, i)), p => Assert.StartsWith($"| {p.r.Series} | {p.r.Setting} |", lines[2 + p.i], StringComparison.Ordinal));
         Assert.Contains("index.html", lines[^2], StringComparison.Ordinal);
         Assert.Matches(@"^total time \d+\.\d s$", lines[^1]);
@@ -89,7 +98,8 @@ public sealed partial class CompareTests : IDisposable
         }
 
         string[] links = [.. Href().Matches(File.ReadAllText(Path.Combine(report, "index.html"))).Select(m => m.Groups[1].Value).Distinct()];
-        Assert.Equal((3 * rows.Length) + 7, links.Length);
+        // Per row its picture, error image and FLIP map; the results, the exact image, four charts and a spectrum chart per budget.
+        Assert.Equal((3 * rows.Length) + 7 + 3, links.Length);
         Assert.All(links, l => Assert.True(File.Exists(Path.Combine(report, l)), l));
         Assert.DoesNotContain(_dir.Entries(), e => e.EndsWith(".tmp", StringComparison.Ordinal));
 
@@ -97,6 +107,7 @@ public sealed partial class CompareTests : IDisposable
         Assert.Contains("## Convergence slopes", md, StringComparison.Ordinal);
         Assert.Contains("## Time to mean FLIP ≤", md, StringComparison.Ordinal);
         Assert.Contains("## RMSE and FLIP: the same ranking?", md, StringComparison.Ordinal);
+        Assert.Contains("## Where the error sits", md, StringComparison.Ordinal);
         Assert.Contains($"raylab compare {scene} --out {report} --budgets 1,4,16 --repeats 2", md, StringComparison.Ordinal);
     }
 
@@ -178,13 +189,20 @@ public sealed partial class CompareTests : IDisposable
 
     // ---- helpers --------------------------------------------------------------------------------------
 
-    private sealed record Row(string Series, string Sampler, string Setting, int SamplesPerPixel, double RaysPerPixel, double Rmse, int Max, double OverOneLevel, double MeanFlip, string Image, string ErrorImage, string FlipMap);
+    private sealed record Row(string Series, string Sampler, string Setting, int SamplesPerPixel, double RaysPerPixel, double Rmse, int Max, double OverOneLevel, double MeanFlip, string Image, string ErrorImage, string FlipMap)
+    {
+        public double LowPass1 { get; init; }
+
+        public double LowPass2 { get; init; }
+
+        public double LowShare { get; init; }
+    }
 
     private static Row[] ReadCsv(string path)
     {
         string[] lines = File.ReadAllLines(path);
         string[] header = lines[0].Split(',');
-        Assert.Equal(19, header.Length);
+        Assert.Equal(22, header.Length);
         int Col(string name) => Array.IndexOf(header, name) is >= 0 and int i ? i : throw new InvalidOperationException($"no column {name}");
         return [.. lines[1..].Select(line =>
         {
@@ -196,7 +214,12 @@ public sealed partial class CompareTests : IDisposable
             return new Row(f[Col("series")], f[Col("sampler")], f[Col("setting")],
                 f[Col("samples_per_pixel")] is { Length: > 0 } spp ? int.Parse(spp, CultureInfo.InvariantCulture) : 0,
                 D("rays_per_pixel"), D("rmse"), int.Parse(f[Col("max")], CultureInfo.InvariantCulture), D("over_one_level"), D("mean_flip"),
-                f[Col("image")], f[Col("error_image")], f[Col("flip_map")]);
+                f[Col("image")], f[Col("error_image")], f[Col("flip_map")])
+            {
+                LowPass1 = D("lowpass_1"),
+                LowPass2 = D("lowpass_2"),
+                LowShare = D("low_frequency_share"),
+            };
         })];
     }
 

@@ -48,7 +48,12 @@ public sealed partial class FlipCliTests : IDisposable
         Assert.Equal(flip.Mean, double.Parse(m.Groups["flip"].Value, CultureInfo.InvariantCulture), 6);
         Assert.Equal(error.Rmse, double.Parse(m.Groups["rmse"].Value, CultureInfo.InvariantCulture), 4);
         Assert.Equal(FlipMap.Render(flip).PixelBytes.ToArray(), Image.Load(map).PixelBytes.ToArray());
-        Assert.Equal(3, stdout.TrimEnd('\n').ReplaceLineEndings("\n").Split('\n').Length);
+        Match low = Regex.Match(stdout, @"low-pass RMSE (?<one>[0-9.]+) levels \(Gaussian blur σ = 1 px\), (?<two>[0-9.]+) \(σ = 2 px\); low share (?<share>[0-9.]+)");
+        Assert.True(low.Success, stdout);
+        Assert.Equal(ErrorLocation.LowPassRmse(b, a, 1), double.Parse(low.Groups["one"].Value, CultureInfo.InvariantCulture), 4);
+        Assert.Equal(ErrorLocation.LowPassRmse(b, a, 2), double.Parse(low.Groups["two"].Value, CultureInfo.InvariantCulture), 4);
+        Assert.Equal(ErrorLocation.Spectrum(b, a).LowFrequencyShare, double.Parse(low.Groups["share"].Value, CultureInfo.InvariantCulture), 4);
+        Assert.Equal(4, stdout.TrimEnd('\n').ReplaceLineEndings("\n").Split('\n').Length);
     }
 
     [Fact]
@@ -62,7 +67,7 @@ public sealed partial class FlipCliTests : IDisposable
 
         Assert.Equal((0, 0, ""), (code, nearCode, stderr));
         Assert.Equal(before, _dir.Entries());
-        Assert.Equal(2, stdout.TrimEnd('\n').ReplaceLineEndings("\n").Split('\n').Length);
+        Assert.Equal(3, stdout.TrimEnd('\n').ReplaceLineEndings("\n").Split('\n').Length);
         double paper = double.Parse(Numbers().Match(stdout).Groups["flip"].Value, CultureInfo.InvariantCulture);
         double closer = double.Parse(Numbers().Match(near).Groups["flip"].Value, CultureInfo.InvariantCulture);
         Assert.Equal(Flip.Compute(Image.Load(reference), Image.Load(test), new FlipOptions { PixelsPerDegree = 20 }).Mean, closer, 6);

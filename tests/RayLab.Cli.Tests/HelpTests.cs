@@ -56,7 +56,7 @@ public sealed class HelpTests
     [Theory]
     [InlineData("--output", "(REQUIRED)", ".png, .bmp, .jpg/.jpeg or .webp")]
     [InlineData("--camera", "Default: the scene's camera.type.", "perspective or orthographic")]
-    [InlineData("--sampler", "Default: the scene's sampler.type;", "regular, random, jittered, cmj, multijittered, nrooks, hammersley, sobol, adaptive or exact")]
+    [InlineData("--sampler", "Default: the scene's sampler.type;", "regular, random, jittered, cmj, multijittered, nrooks, hammersley, sobol, pmj02, pmj02bn, zsobol, adaptive or exact")]
     [InlineData("--samples", "Default: the scene's sampler.samples;", "1 to 65536; a perfect square (1, 4, 9, …) for regular, jittered and multijittered")]
     [InlineData("--seed", "Default: the scene's sampler.seed;", "0 to 4294967295")]
     [InlineData("--min-depth", "Default: the scene's sampler.minDepth;", "0 to the maximum depth")]

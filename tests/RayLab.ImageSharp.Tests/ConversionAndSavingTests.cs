@@ -85,6 +85,22 @@ public class ConversionAndSavingTests
         Assert.Equal(image.PixelBytes.ToArray(), BitmapRenderingTests.Bytes(decoded));
     }
 
+    [Fact]
+    public void Ppm_keeps_the_pixels_when_asked_for_binary_RGB()
+    {
+        Image image = Rendered();
+        using Bitmap bitmap = image.ToImageSharp();
+        using var ppm = new MemoryStream();
+        bitmap.SaveAsPbm(ppm, new SixLabors.ImageSharp.Formats.Pbm.PbmEncoder
+        {
+            ColorType = SixLabors.ImageSharp.Formats.Pbm.PbmColorType.Rgb,
+            Encoding = SixLabors.ImageSharp.Formats.Pbm.PbmEncoding.Binary,
+        });
+        ppm.Position = 0;
+        using Bitmap decoded = SixLabors.ImageSharp.Image.Load<SixLabors.ImageSharp.PixelFormats.Rgb24>(ppm);
+        Assert.Equal(image.PixelBytes.ToArray(), BitmapRenderingTests.Bytes(decoded));
+    }
+
     private static (double Mean, int Max) Difference(byte[] a, byte[] b)
     {
         Assert.Equal(a.Length, b.Length);

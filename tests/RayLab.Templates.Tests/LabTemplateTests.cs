@@ -11,7 +11,8 @@ namespace RayLab.Templates.Tests;
 /// <c>dotnet</c> processes in a temporary DOTNET_CLI_HOME and an empty NUGET_PACKAGES: install <c>RayLab.Templates</c>
 /// from a folder feed packed from this checkout (with <c>RayLab</c> and <c>RayLab.Reports</c>), create a lab with
 /// each <c>--method</c>, run its tests (green) and the app (both pictures and <c>obrazkoncowy.jpg</c>), then sabotage
-/// <c>MyMethod</c> and see its tests fail. The packing and the install are shared (<see cref="TemplateFeed"/>).
+/// <c>MyMethod</c> and see its tests fail; and the exercise lab (ExerciseLabTests.cs). The packing and the install are
+/// shared (<see cref="TemplateFeed"/>).
 /// </summary>
 [Trait("Category", "Templates")]
 public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<TemplateFeed>
@@ -69,7 +70,7 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
 
         // 1. dotnet new, with the feed the packages come from today.
         string lab = Path.Combine(work, name);
-        await feed.RunAsync(work, "dotnet", "new", "raylab-lab", "-o", lab, "--method", method, "--feed", feed.Feed);
+        await feed.RunAsync(work, "dotnet", "new", "raylab-lab", "-o", lab, "--kind", "method", "--method", method, "--feed", feed.Feed);
         string myMethod = Path.Combine(lab, "src", "Lab", "MyMethod.cs");
         Assert.True(File.Exists(myMethod), $"{myMethod} was not created");
         Assert.Empty(Directory.GetFiles(Path.Combine(lab, "src", "Lab"), "MyMethod.*.cs")); // the other kind's file is left out
@@ -157,7 +158,7 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
             }
         }
 
-        Assert.Equal(3, options); // --method, --feed, --skipRestore
+        Assert.Equal(7, options); // --kind, --lang, --solution, --method, --feed, --offline, --skipRestore
     }
 
     private static bool IsBuildOutput(string lab, string file)

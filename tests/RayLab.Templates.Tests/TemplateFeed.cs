@@ -4,8 +4,8 @@ namespace RayLab.Templates.Tests;
 /// <summary>
 /// Once for the test class: a temporary folder with its own DOTNET_CLI_HOME (so the template is installed nowhere
 /// else) and an empty NUGET_PACKAGES (so no cached RayLab package can stand in for the one packed here); RayLab,
-/// RayLab.Reports and RayLab.Templates packed from this checkout into a folder feed; the template package installed
-/// from that feed by its id and version, as a student would.
+/// RayLab.ImageSharp, RayLab.Reports and RayLab.Templates packed from this checkout into a folder feed; the template
+/// package installed from that feed by its id and version, as a student would.
 /// </summary>
 public sealed class TemplateFeed : IAsyncLifetime
 {
@@ -23,7 +23,7 @@ public sealed class TemplateFeed : IAsyncLifetime
     /// <summary>The children's DOTNET_CLI_HOME (where <c>dotnet new install</c> records templates).</summary>
     public string CliHome => Path.Combine(Root, "dotnet-home");
 
-    /// <summary>The version the three packages were packed with (MinVer: the same for all three).</summary>
+    /// <summary>The version the four packages were packed with (MinVer: the same for all four).</summary>
     public string Version { get; private set; } = "";
 
     public async ValueTask InitializeAsync()
@@ -31,7 +31,7 @@ public sealed class TemplateFeed : IAsyncLifetime
         string repo = RepoPaths.Root();
         string artifacts = Path.Combine(Root, "artifacts");
         Directory.CreateDirectory(CliHome);
-        foreach (string project in new[] { "src/RayLab/RayLab.csproj", "src/RayLab.Reports/RayLab.Reports.csproj", "templates/RayLab.Templates/RayLab.Templates.csproj" })
+        foreach (string project in new[] { "src/RayLab/RayLab.csproj", "src/RayLab.ImageSharp/RayLab.ImageSharp.csproj", "src/RayLab.Reports/RayLab.Reports.csproj", "templates/RayLab.Templates/RayLab.Templates.csproj" })
         {
             await RunAsync(Root, "dotnet", "pack", Path.Combine(repo, project), "-c", "Release", "-o", Feed, "--artifacts-path", artifacts);
         }
@@ -40,6 +40,7 @@ public sealed class TemplateFeed : IAsyncLifetime
         Version = Path.GetFileNameWithoutExtension(template)["RayLab.Templates.".Length..];
         Assert.True(File.Exists(Path.Combine(Feed, $"RayLab.{Version}.nupkg")), $"RayLab {Version} is not in the feed");
         Assert.True(File.Exists(Path.Combine(Feed, $"RayLab.Reports.{Version}.nupkg")), $"RayLab.Reports {Version} is not in the feed");
+        Assert.True(File.Exists(Path.Combine(Feed, $"RayLab.ImageSharp.{Version}.nupkg")), $"RayLab.ImageSharp {Version} is not in the feed");
 
         await RunAsync(Root, "dotnet", "new", "install", $"RayLab.Templates::{Version}", "--add-source", Feed);
     }

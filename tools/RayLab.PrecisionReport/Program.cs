@@ -14,9 +14,18 @@ public static class Program
     /// <summary>Entry point.</summary>
     /// <param name="args">Command-line arguments.</param>
     /// <returns>0 on success, 1 when the file cannot be written, 2 for a bad command line.</returns>
-    public static int Main(string[] args)
+    public static int Main(string[] args) => Run(args, Console.Out, Console.Error);
+
+    /// <summary>Runs the tool with its output and messages going to the writers given (the tests read them).</summary>
+    /// <param name="args">Command-line arguments.</param>
+    /// <param name="stdout">Where the markdown goes when there is no <c>--out</c>.</param>
+    /// <param name="stderr">Where errors and the "wrote" line go.</param>
+    /// <returns>0 on success, 1 when the file cannot be written, 2 for a bad command line.</returns>
+    public static int Run(string[] args, TextWriter stdout, TextWriter stderr)
     {
         ArgumentNullException.ThrowIfNull(args);
+        ArgumentNullException.ThrowIfNull(stdout);
+        ArgumentNullException.ThrowIfNull(stderr);
         int size = DefaultSize;
         string? output = null;
         for (int i = 0; i < args.Length; i++)
@@ -32,7 +41,7 @@ public static class Program
                     i++;
                     break;
                 default:
-                    Console.Error.WriteLine($"precision-report: error: unexpected '{args[i]}'; usage: [--size N (1 to 4096)] [--out FILE]");
+                    stderr.WriteLine($"precision-report: error: unexpected '{args[i]}'; usage: [--size N (1 to 4096)] [--out FILE]");
                     return 2;
             }
         }
@@ -40,7 +49,7 @@ public static class Program
         string markdown = PrecisionReport.ToMarkdown(PrecisionReport.Run(size), size);
         if (output is null)
         {
-            Console.Out.Write(markdown);
+            stdout.Write(markdown);
             return 0;
         }
 
@@ -48,7 +57,7 @@ public static class Program
         string folder = Path.GetDirectoryName(full)!;
         if (!Directory.Exists(folder))
         {
-            Console.Error.WriteLine($"precision-report: error: {output}: the folder '{folder}' does not exist");
+            stderr.WriteLine($"precision-report: error: {output}: the folder '{folder}' does not exist");
             return 1;
         }
 
@@ -65,11 +74,11 @@ public static class Program
                 File.Delete(temp);
             }
 
-            Console.Error.WriteLine($"precision-report: error: {output}: {e.Message}");
+            stderr.WriteLine($"precision-report: error: {output}: {e.Message}");
             return 1;
         }
 
-        Console.Error.WriteLine($"precision-report: wrote {output} ({size}×{size} rays per case)");
+        stderr.WriteLine($"precision-report: wrote {output} ({size}×{size} rays per case)");
         return 0;
     }
 }

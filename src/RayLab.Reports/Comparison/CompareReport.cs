@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Net;
 using System.Text;
+using RayLab.Metrics;
 
 namespace RayLab.Comparison;
 
@@ -23,7 +24,10 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         + "\"> 1 level\" = the fraction of pixels with some channel off by 2 or more. FLIP: the mean of the image's "
         + "LDR-FLIP map against the exact image (Andersson et al. 2020; 0 = indistinguishable, 1 = the largest "
         + "difference; 0.7 m from a 0.7 m wide display of 3840 pixels), the error a viewer sees. Time: median render time "
-        + "(the render loop only). Rays: primary rays traced per pixel.";
+        + "(the render loop only). Rays: primary rays traced per pixel. Where the error sits: low-pass σ=1 and σ=2 = the RMSE of "
+        + "the signed error after a Gaussian blur of 1 and 2 pixels (what a viewer a step back sees; fine-grained error cancels, "
+        + "patches survive); low share = the part of the error's power at frequencies up to 1/8 cycle per pixel (periods of 8 "
+        + "pixels or more; white noise: 0.049), from its radially averaged power spectrum.";
 
     /// <summary>The results, grouped into the chart's lines in the order they first appear.</summary>
     public IReadOnlyList<IGrouping<string, CompareResult>> Series { get; } = [.. results.GroupBy(r => r.Case.Series)];
@@ -41,6 +45,14 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         Chart(Path.Combine(folder, ChartStems[1]), "RMSE against rays", r => r.RaysPerPixel, "primary rays per pixel", Rmse);
         Chart(Path.Combine(folder, ChartStems[2]), "FLIP against time", r => r.Time.TotalMilliseconds, "median render time (ms)", MeanFlip);
         Chart(Path.Combine(folder, ChartStems[3]), "FLIP against rays", r => r.RaysPerPixel, "primary rays per pixel", MeanFlip);
+        foreach (IGrouping<int, CompareResult> g in SpectrumGroups())
+        {
+            LogLogChart.Save(
+                Path.Combine(folder, SpectrumStem(g.Key)), Invariant($"Error spectrum at {g.Key} spp"), "frequency (cycles per pixel)", "power (levels²)",
+                [.. g.Select(r => new LogLogChart.Series(r.Case.Series, [.. r.Placement!.Spectrum.RadialMean
+                    .Select((p, ring) => (X: ErrorSpectrum.Frequency(ring), Y: p))
+                    .Where(point => point.X > 0 && point.Y > 0 && !double.IsNaN(point.Y))]))]);
+        }
         File.WriteAllText(Path.Combine(folder, "index.html"), Html());
     }
 
@@ -54,13 +66,14 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     /// <summary>The results as CSV, one row per setting, numbers in invariant culture.</summary>
     public string Csv()
     {
-        var csv = new StringBuilder("series,sampler,setting,budget,samples_per_pixel,max_depth,contrast,rays,rays_per_pixel,median_ms,rmse,mean_abs,max,over_one_level,mean_flip,kernel,image,error_image,flip_map\n");
+        var csv = new StringBuilder("series,sampler,setting,budget,samples_per_pixel,max_depth,contrast,rays,rays_per_pixel,median_ms,rmse,mean_abs,max,over_one_level,mean_flip,kernel,image,error_image,flip_map,lowpass_1,lowpass_2,low_frequency_share\n");
         foreach (CompareResult r in results)
         {
             CompareCase c = r.Case;
             csv.Append(Invariant($"{c.Series},{c.Sampler},{c.Setting},{c.Budget},{c.SamplesPerPixel},{c.MaxDepth},{c.Contrast:G6},"))
                .Append(Invariant($"{r.Rays},{r.RaysPerPixel:G9},{r.Time.TotalMilliseconds:F3},{r.Error.Rmse:G9},{r.Error.MeanAbsolute:G9},{r.Error.Max},{r.Error.FractionOverOneLevel:G9},{r.MeanFlip:G9},{r.Kernel},"))
-               .Append($"images/{c.FileStem}.png,errors/{c.FileStem}.png,{(r.MeanFlip is null ? "" : $"flip/{c.FileStem}.png")}\n");
+               .Append($"images/{c.FileStem}.png,errors/{c.FileStem}.png,{(r.MeanFlip is null ? "" : $"flip/{c.FileStem}.png")},")
+               .Append(Invariant($"{r.Placement?.LowPass1:G9},{r.Placement?.LowPass2:G9},{r.Placement?.Spectrum.LowFrequencyShare:G9}\n"));
         }
 
         return csv.ToString();
@@ -69,10 +82,10 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     /// <summary>The table, as Markdown.</summary>
     public string Table()
     {
-        var md = new StringBuilder("| sampler | setting | rays/px | time (ms) | RMSE | mean FLIP | mean abs. | max | > 1 level |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+        var md = new StringBuilder("| sampler | setting | rays/px | time (ms) | RMSE | mean FLIP | low-pass σ=1 | low-pass σ=2 | low share | mean abs. | max | > 1 level |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         foreach (CompareResult r in results)
         {
-            md.Append(Invariant($"| {r.Case.Series} | {r.Case.Setting} | {r.RaysPerPixel:F2} | {r.Time.TotalMilliseconds:F1} | {r.Error.Rmse:F3} | {FlipText(r.MeanFlip)} | {r.Error.MeanAbsolute:F4} | {r.Error.Max} | {100 * r.Error.FractionOverOneLevel:F3}% |\n"));
+            md.Append(Invariant($"| {r.Case.Series} | {r.Case.Setting} | {r.RaysPerPixel:F2} | {r.Time.TotalMilliseconds:F1} | {r.Error.Rmse:F3} | {FlipText(r.MeanFlip)} | {PlacementText(r.Placement)} | {r.Error.MeanAbsolute:F4} | {r.Error.Max} | {100 * r.Error.FractionOverOneLevel:F3}% |\n"));
         }
 
         return md.ToString();
@@ -89,6 +102,7 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         TimeToOneLevel(md);
         TimesToReach(md);
         Rankings(md);
+        WhereTheErrorSits(md);
 
         if (command.Length > 0)
         {
@@ -403,6 +417,46 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         return text.ToString();
     }
 
+    /// <summary>The spectrum chart's file stem (written as .png and .svg) for <paramref name="samplesPerPixel"/>.</summary>
+    /// <param name="samplesPerPixel">The sample count the chart shows.</param>
+    public static string SpectrumStem(int samplesPerPixel) => Invariant($"error-spectrum-{samplesPerPixel}spp");
+
+    /// <summary>The point samplers' results with a spectrum, by sample count, where two or more series ran at it.</summary>
+    private List<IGrouping<int, CompareResult>> SpectrumGroups() =>
+        [.. results.Where(r => r.Case.SamplesPerPixel is not null && r.Placement is not null)
+            .GroupBy(r => r.Case.SamplesPerPixel!.Value).Where(g => g.Select(r => r.Case.Series).Distinct().Count() > 1).OrderBy(g => g.Key)];
+
+    private static string PlacementText(ErrorPlacement? p) =>
+        p is null ? "– | – | –" : Invariant($"{p.LowPass1:F3} | {p.LowPass2:F3} | {p.Spectrum.LowFrequencyShare:F3}");
+
+    /// <summary>
+    /// At each sample count two or more point samplers ran at: which sampler each measure puts first. RMSE counts all
+    /// error alike; the low-pass errors and the low share reward error pushed to fine grain.
+    /// </summary>
+    private void WhereTheErrorSits(StringBuilder md)
+    {
+        List<IGrouping<int, CompareResult>> groups = SpectrumGroups();
+        if (groups.Count == 0)
+        {
+            return;
+        }
+
+        md.Append("\n## Where the error sits\n\n")
+          .Append("At each sample count, the point sampler each measure puts first (lowest), and the spread of the low share. "
+                  + "RMSE counts every error alike; the low-pass errors keep only what survives a blur of 1 and 2 pixels, and the "
+                  + "low share says how much of the error's power is at periods of 8 pixels or more. The charts error-spectrum-*.png "
+                  + "show each sampler's spectrum.\n\n")
+          .Append("| spp | first by RMSE | first by mean FLIP | first by low-pass σ=1 | first by low-pass σ=2 | lowest low share | low share, range |\n|---:|---|---|---|---|---|---|\n");
+        foreach (IGrouping<int, CompareResult> g in groups)
+        {
+            CompareResult[] set = [.. g];
+            string First(Func<CompareResult, double> value) => string.Join(" = ", set.Where(r => value(r) == set.Min(value)).Select(r => r.Case.Series));
+            double lowest = set.Min(r => r.Placement!.Spectrum.LowFrequencyShare), highest = set.Max(r => r.Placement!.Spectrum.LowFrequencyShare);
+            md.Append(Invariant($"| {g.Key} | {First(r => r.Error.Rmse)} | {(set.All(r => r.MeanFlip is not null) ? First(r => r.MeanFlip!.Value) : "–")} | "))
+              .Append(Invariant($"{First(r => r.Placement!.LowPass1)} | {First(r => r.Placement!.LowPass2)} | {First(r => r.Placement!.Spectrum.LowFrequencyShare)} | {lowest:F3}–{highest:F3} |\n"));
+        }
+    }
+
     private void Chart(string stem, string title, Func<CompareResult, double> x, string xLabel, Measure measure) => LogLogChart.Save(
         stem, title, xLabel, measure.Axis,
         [.. Series.Select(s => new LogLogChart.Series(s.Key, [.. s.Where(r => measure.Of(r) is not null).Select(r => (x(r), measure.Of(r)!.Value))]))]);
@@ -419,13 +473,14 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
             .Append("<a href=\"flip-vs-time.svg\"><img src=\"flip-vs-time.png\" alt=\"mean FLIP against time, log-log\"></a></p>\n")
             .Append("<p><a href=\"error-vs-rays.svg\"><img src=\"error-vs-rays.png\" alt=\"RMSE against rays per pixel, log-log\"></a>")
             .Append("<a href=\"flip-vs-rays.svg\"><img src=\"flip-vs-rays.png\" alt=\"mean FLIP against rays per pixel, log-log\"></a></p>\n")
+            .Append(string.Concat(SpectrumGroups().Select(g => $"<a href=\"{SpectrumStem(g.Key)}.svg\"><img src=\"{SpectrumStem(g.Key)}.png\" alt=\"error spectrum at {g.Key} spp, log-log\"></a>")) is { Length: > 0 } spectra ? $"<p>{spectra}</p>\n" : "")
             .Append("<p>Each row: the picture, its error image (the largest channel error of each pixel, in levels: what the RMSE adds up) "
                     + "and its FLIP map (what a viewer sees flipping between it and the exact image, in NVIDIA's magma colours: black = no visible difference). Click one for its full size.</p>\n")
-            .Append("<table>\n<tr><th>sampler</th><th>setting</th><th>rays/px</th><th>time (ms)</th><th>RMSE</th><th>mean FLIP</th><th>max</th><th>&gt; 1 level</th><th>image</th><th>error</th><th>FLIP map</th></tr>\n");
+            .Append("<table>\n<tr><th>sampler</th><th>setting</th><th>rays/px</th><th>time (ms)</th><th>RMSE</th><th>mean FLIP</th><th>low-pass σ=1</th><th>low-pass σ=2</th><th>low share</th><th>max</th><th>&gt; 1 level</th><th>image</th><th>error</th><th>FLIP map</th></tr>\n");
         foreach (CompareResult r in results)
         {
             string stem = E(r.Case.FileStem);
-            html.Append(Invariant($"<tr><td>{E(r.Case.Series)}</td><td>{E(r.Case.Setting)}</td><td>{r.RaysPerPixel:F2}</td><td>{r.Time.TotalMilliseconds:F1}</td><td>{r.Error.Rmse:F3}</td><td>{FlipText(r.MeanFlip)}</td><td>{r.Error.Max}</td><td>{100 * r.Error.FractionOverOneLevel:F3}%</td>"))
+            html.Append(Invariant($"<tr><td>{E(r.Case.Series)}</td><td>{E(r.Case.Setting)}</td><td>{r.RaysPerPixel:F2}</td><td>{r.Time.TotalMilliseconds:F1}</td><td>{r.Error.Rmse:F3}</td><td>{FlipText(r.MeanFlip)}</td><td>{PlacementText(r.Placement).Replace(" | ", "</td><td>", StringComparison.Ordinal)}</td><td>{r.Error.Max}</td><td>{100 * r.Error.FractionOverOneLevel:F3}%</td>"))
                 .Append(Thumbnail($"images/{stem}.png", "image"))
                 .Append(Thumbnail($"errors/{stem}.png", "error image"))
                 .Append(r.MeanFlip is null ? "<td>not measured</td>" : Thumbnail($"flip/{stem}.png", "FLIP map"))

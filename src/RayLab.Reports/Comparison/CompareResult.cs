@@ -22,6 +22,12 @@ public sealed record CompareResult(CompareCase Case, long Rays, double RaysPerPi
     /// </summary>
     public double? MeanFlip { get; init; }
 
+    /// <summary>
+    /// Where the error sits (<see cref="RayLab.Metrics.ErrorLocation"/>): the RMSE after a Gaussian blur of σ = 1 and
+    /// σ = 2 pixels, and the error spectrum with its low-frequency share; null where it was not measured.
+    /// </summary>
+    public ErrorPlacement? Placement { get; init; }
+
     /// <summary>True when the setting's first render took <see cref="CompareRunner.LongRender"/> or more and was its only one (fewer than the repeats asked for).</summary>
     public bool TimedOnce { get; init; }
 }

@@ -60,7 +60,7 @@ public static class CompareRunner
 
     /// <summary>
     /// Renders the exact image and each setting, times each setting (the median of its renders), measures it against
-    /// the exact image (<see cref="ImageError"/> and <see cref="Flip"/>, once each), and saves <c>images/exact.png</c>,
+    /// the exact image (<see cref="ImageError"/>, <see cref="Flip"/> and <see cref="ErrorPlacement"/>, once each), and saves <c>images/exact.png</c>,
     /// <c>images/STEM.png</c>, the error heat map <c>errors/STEM.png</c> and the FLIP map <c>flip/STEM.png</c> into
     /// <paramref name="folder"/>; the tables and charts are <see cref="CompareReport.WriteTo"/>'s.
     /// </summary>
@@ -104,6 +104,7 @@ public static class CompareRunner
             results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median([.. times]), error, stats.Kernel)
             {
                 MeanFlip = flip.Mean,
+                Placement = ErrorPlacement.Measure(image, exact),
                 Renders = times.Count,
                 Retimed = times.Count > settings.Repeats,
                 TimedOnce = times.Count < settings.Repeats,

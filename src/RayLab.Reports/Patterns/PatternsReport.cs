@@ -86,8 +86,9 @@ public static class PatternsReport
             $"The points each sampler puts in pixel (0, 0), {n} of them, seed {r.Seed}; y grows downward as pixel rows do. "
             + "regular is the lab's Rys. 12 (an n×n grid of cell centres), random Rys. 13a, jittered Rys. 13b (one random point in each cell) "
             + "and, with its cells drawn, Rys. 13c. nrooks, cmj and multijittered draw the N rows and N columns: each holds exactly one point "
-            + "(the n-rooks property, so a vertical or horizontal edge is sampled at N different offsets). hammersley and sobol are "
-            + "low-discrepancy sets: no cells, yet no clumps and no large holes."));
+            + "(the n-rooks property, so a vertical or horizontal edge is sampled at N different offsets). hammersley, sobol, pmj02, "
+            + "pmj02bn and zsobol are low-discrepancy sets: no cells, yet no clumps and no large holes (the last four, at a power of two, "
+            + "one point in every elementary interval: 1 × N, 2 × N/2, …, N × 1 boxes)."));
 
         var blockFigures = new List<string>();
         foreach (PatternSampler s in samplers)
@@ -100,7 +101,8 @@ public static class PatternsReport
             "The same samplers over 16 neighbouring pixels. regular puts the same grid in every pixel: its points line up across the "
             + "whole image, which is the aliasing the lab warns about (a pattern finer than the grid turns into a false coarse one, and an "
             + "edge nearly parallel to the grid makes stair steps). The others draw new points in every pixel from a hash of (pixel, sample, "
-            + "seed), so their errors do not line up from pixel to pixel."));
+            + "seed), so their errors do not line up from pixel to pixel. zsobol's pixels share one Sobol' sequence in a scrambled Z order: "
+            + "each 2×2 group of pixels together holds a net of four times the points, so neighbours' points avoid each other."));
     }
 
     private static List<(string Name, PowerSpectrum Spectrum)> SpectrumFigures(PatternsRequest r, string dir, List<(string, string[], string)> html, CancellationToken cancel)

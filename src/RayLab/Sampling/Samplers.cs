@@ -4,7 +4,7 @@ namespace RayLab.Sampling;
 public static class Samplers
 {
     /// <summary>The sampler names, as scene files and the console spell them.</summary>
-    public static IReadOnlyList<string> Names { get; } = ["regular", "random", "jittered", "cmj", "multijittered", "nrooks", "hammersley", "sobol"];
+    public static IReadOnlyList<string> Names { get; } = ["regular", "random", "jittered", "cmj", "multijittered", "nrooks", "hammersley", "sobol", "pmj02", "pmj02bn", "zsobol"];
 
     /// <summary>Creates the sampler called <paramref name="name"/>.</summary>
     /// <param name="name">One of <see cref="Names"/> (case-insensitive).</param>
@@ -24,6 +24,9 @@ public static class Samplers
             "nrooks" => new NRooksSampler(samplesPerPixel, seed),
             "hammersley" => new HammersleySampler(samplesPerPixel, seed),
             "sobol" => new SobolSampler(samplesPerPixel, seed),
+            "pmj02" => new Pmj02Sampler(samplesPerPixel, seed),
+            "pmj02bn" => new Pmj02BNSampler(samplesPerPixel, seed),
+            "zsobol" => new ZSobolSampler(samplesPerPixel, seed),
             _ => throw new ArgumentException(
                 $"Unknown sampler '{name}'; expected one of: {string.Join(", ", Names)}.", nameof(name)),
         };

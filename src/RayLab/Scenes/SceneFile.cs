@@ -59,7 +59,7 @@ public static class SceneFile
         }
         catch (JsonException e)
         {
-            throw new SceneFileException(source, "", $"not valid JSON: {e.Message}", e);
+            throw new SceneFileException(source, "", $"not valid JSON: {Describe(e, json)}", e);
         }
 
         using (document)
@@ -69,6 +69,32 @@ public static class SceneFile
             description.Prepare(); // cross-field checks (position = target, near ≥ far, …) with field names
             return description;
         }
+    }
+
+    /// <summary>
+    /// The parser's message with its position one-based, as an editor shows it: "line 6, column 13" where
+    /// System.Text.Json says "LineNumber: 5 | BytePositionInLine: 12" (zero-based, and counted in UTF-8 bytes).
+    /// </summary>
+    private static string Describe(JsonException e, string json)
+    {
+        string message = e.Message;
+        int at = message.IndexOf(" Path: ", StringComparison.Ordinal);
+        at = at >= 0 ? at : message.IndexOf(" LineNumber: ", StringComparison.Ordinal);
+        message = (at >= 0 ? message[..at] : message).TrimEnd();
+        if (e.LineNumber is not { } line || e.BytePositionInLine is not { } position)
+        {
+            return message;
+        }
+
+        string[] lines = json.Split('\n');
+        long column = position;
+        if (line < lines.Length)
+        {
+            byte[] bytes = System.Text.Encoding.UTF8.GetBytes(lines[line].TrimEnd('\r'));
+            column = System.Text.Encoding.UTF8.GetCharCount(bytes, 0, (int)Math.Min(position, bytes.Length));
+        }
+
+        return string.Create(System.Globalization.CultureInfo.InvariantCulture, $"{message} (line {line + 1}, column {column + 1})");
     }
 
     /// <summary>Walks the JSON, keeping the path of the current field for messages.</summary>

@@ -68,7 +68,7 @@ internal struct SobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
 
     /// <summary>The middle of <see cref="LowDiscrepancy.NestedUniformScramble"/>, between its two reversals (the seed already added).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static TL LaineKarras(TL x)
+    internal static TL LaineKarras(TL x)
     {
         x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras1)));
         x = TL.Xor(x, TL.MultiplyBits(x, TL.BroadcastBits(LowDiscrepancy.LaineKarras2)));

@@ -95,13 +95,24 @@ public class PrecisionReportTests
         using var dir = new TempDirectory();
         string path = dir.File("precision.md");
 
-        Assert.Equal(0, RayLab.PrecisionReport.Program.Main(["--size", "4", "--out", path]));
+        // The tool's messages go to writers the test reads, not to dotnet test's output.
+        using var stdout = new StringWriter();
+        using var stderr = new StringWriter();
+        Assert.Equal(0, RayLab.PrecisionReport.Program.Run(["--size", "4", "--out", path], stdout, stderr));
         Assert.StartsWith("# Precision", File.ReadAllText(path), StringComparison.Ordinal);
         Assert.Equal(["precision.md"], dir.Entries());
+        Assert.Contains("wrote", stderr.ToString(), StringComparison.Ordinal);
 
-        Assert.Equal(2, RayLab.PrecisionReport.Program.Main(["--size", "0"]));
-        Assert.Equal(2, RayLab.PrecisionReport.Program.Main(["--bogus"]));
-        Assert.Equal(1, RayLab.PrecisionReport.Program.Main(["--size", "4", "--out", dir.File("missing/precision.md")]));
+        foreach (string[] bad in new[] { new[] { "--size", "0" }, ["--bogus"] })
+        {
+            using var error = new StringWriter();
+            Assert.Equal(2, RayLab.PrecisionReport.Program.Run(bad, TextWriter.Null, error));
+            Assert.Contains($"unexpected '{bad[0]}'", error.ToString(), StringComparison.Ordinal);
+        }
+
+        using var missing = new StringWriter();
+        Assert.Equal(1, RayLab.PrecisionReport.Program.Run(["--size", "4", "--out", dir.File("missing/precision.md")], TextWriter.Null, missing));
+        Assert.Contains("does not exist", missing.ToString(), StringComparison.Ordinal);
         Assert.Equal(["precision.md"], dir.Entries());
     }
 }

@@ -1,4 +1,5 @@
 using RayLab.Comparison;
+using RayLab.Metrics;
 using RayLab.Sampling;
 
 namespace RayLab.Reports.Tests.Comparison;
@@ -153,7 +154,42 @@ public class CompareReportTests
         Assert.Contains("| 1 | regular < jittered | jittered < regular | -1.00 | regular < jittered by RMSE, > by FLIP |", md, StringComparison.Ordinal);
         Assert.Contains("| 4 | regular < jittered | regular < jittered | 1.00 | none |", md, StringComparison.Ordinal);
         Assert.Contains("mean_flip", report.Csv().Split('\n')[0], StringComparison.Ordinal);
-        Assert.EndsWith(",0.05,Scalar,images/regular-1.png,errors/regular-1.png,flip/regular-1.png", report.Csv().Split('\n')[1], StringComparison.Ordinal);
+        Assert.EndsWith(",0.05,Scalar,images/regular-1.png,errors/regular-1.png,flip/regular-1.png,,,", report.Csv().Split('\n')[1], StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void TheReportSaysWhichSamplerEachMeasurePutsFirstAndChartsTheSpectra()
+    {
+        // regular: the lower RMSE, all of it in one smooth patch; jittered: more error, but as fine grain.
+        var random = new Random(3);
+        double[] grain = [.. Enumerable.Range(0, 64 * 48).Select(_ => random.NextDouble() < 0.5 ? -2.0 : 2.0)];
+        double[] patch = [.. Enumerable.Range(0, 64 * 48).Select(i => 1.5 * Math.Sin(Math.PI * (i % 64) / 64))];
+        static ErrorPlacement Of(double[] plane) => new(
+            ErrorLocation.LowPassRmse(plane, 64, 48, 1), ErrorLocation.LowPassRmse(plane, 64, 48, 2), ErrorLocation.Spectrum(plane, 64, 48));
+        CompareResult[] results =
+        [
+            Result("regular", 4, 1.06, 10, flip: 0.02) with { Placement = Of(patch) },
+            Result("jittered", 4, 2, 10, flip: 0.03) with { Placement = Of(grain) },
+        ];
+
+        CompareReport report = new("heading", "", results, []);
+        string md = report.Markdown();
+
+        Assert.Contains("| RMSE | mean FLIP | low-pass σ=1 | low-pass σ=2 | low share |", md, StringComparison.Ordinal);
+        Assert.Contains("## Where the error sits", md, StringComparison.Ordinal);
+        Assert.Contains("| 4 | regular | regular | jittered | jittered | jittered |", md, StringComparison.Ordinal);
+        Assert.Contains(FormattableString.Invariant($",{Of(grain).Spectrum.LowFrequencyShare:G9}"), report.Csv().Split('\n')[2], StringComparison.Ordinal);
+        string folder = Directory.CreateTempSubdirectory("raylab-spectrum").FullName;
+        try
+        {
+            report.WriteTo(folder);
+            Assert.True(File.Exists(Path.Combine(folder, CompareReport.SpectrumStem(4) + ".png")));
+            Assert.Contains("error-spectrum-4spp.png", File.ReadAllText(Path.Combine(folder, "index.html")), StringComparison.Ordinal);
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
     }
 
     private static CompareResult Result(string sampler, int spp, double rmse, double ms, int max = 9, double? flip = null) => new(

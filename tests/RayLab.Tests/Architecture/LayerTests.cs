@@ -62,6 +62,7 @@ public sealed class LayerTests
         ["RayLab.Window"] = "Cameras",
         ["RayLab.EightBit"] = "Imaging",
         ["RayLab.Image"] = "Imaging",
+        ["RayLab.IPixelRows"] = "Imaging",
         ["RayLab.ImageError"] = "Imaging",
         ["RayLab.ImageFormat"] = "Imaging",
         ["RayLab.ImageFormats"] = "Imaging",

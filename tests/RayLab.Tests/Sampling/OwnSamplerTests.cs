@@ -4,7 +4,7 @@ namespace RayLab.Tests.Sampling;
 
 public class OwnSamplerTests
 {
-    private static readonly string[] OwnNames = ["cmj", "multijittered", "nrooks", "hammersley", "sobol"];
+    private static readonly string[] OwnNames = ["cmj", "multijittered", "nrooks", "hammersley", "sobol", "pmj02", "pmj02bn", "zsobol"];
 
     private static readonly uint[] Seeds = [0, 1, 0xdeadbeefu, uint.MaxValue];
 

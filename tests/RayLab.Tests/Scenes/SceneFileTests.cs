@@ -385,6 +385,18 @@ public sealed class SceneFileTests : IDisposable
     }
 
     [Fact]
+    public void AJsonErrorNamesItsLineAndColumnFromOne()
+    {
+        // The mistake, a missing comma, is on line 6 as an editor counts lines; "camera" starts at its column 24.
+        string json = "{\n  \"image\": {\n    \"width\": 8,\n    \"height\": 6\n  },\n  \"ambient\": [1, 1, 1] \"camera\": {}\n}";
+
+        SceneFileException e = Assert.Throws<SceneFileException>(() => SceneFile.Parse(json, Source));
+
+        Assert.Contains("(line 6, column 24)", e.Message, StringComparison.Ordinal);
+        Assert.DoesNotContain("LineNumber", e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void AFileIsLoadedAndNamedByItsPath()
     {
         string path = Path.Combine(_dir, "scene.json");

@@ -4,7 +4,7 @@ using RayLab.Simd;
 namespace RayLab.Tests.Simd;
 
 /// <summary>
-/// The lane samplers of cmj, multijittered, nrooks, hammersley and sobol against the scalar samplers: every lane's
+/// The lane samplers of cmj, multijittered, nrooks, hammersley, sobol, pmj02, pmj02bn and zsobol against the scalar samplers: every lane's
 /// point must be the float of <see cref="IPixelSampler.GetSample"/>'s, bit for bit, for packets of 4, 8 and 16
 /// pixels (each width runs everywhere, emulated where the hardware lacks it).
 /// </summary>
@@ -40,6 +40,15 @@ public class LaneSamplerTests
 
     [Fact]
     public void SobolLanesAreTheScalarPoints() => ForEveryWidth(Counts, (n, seed) => new SobolSampler(n, seed), CheckSobol<Lanes128>, CheckSobol<Lanes256>, CheckSobol<Lanes512>);
+
+    [Fact]
+    public void Pmj02LanesAreTheScalarPoints() => ForEveryWidth(Counts, (n, seed) => new Pmj02Sampler(n, seed), CheckPmj02<Lanes128>, CheckPmj02<Lanes256>, CheckPmj02<Lanes512>);
+
+    [Fact]
+    public void Pmj02BNLanesAreTheScalarPoints() => ForEveryWidth(Counts, (n, seed) => new Pmj02BNSampler(n, seed), CheckPmj02BN<Lanes128>, CheckPmj02BN<Lanes256>, CheckPmj02BN<Lanes512>);
+
+    [Fact]
+    public void ZSobolLanesAreTheScalarPoints() => ForEveryWidth(Counts, (n, seed) => new ZSobolSampler(n, seed), CheckZSobol<Lanes128>, CheckZSobol<Lanes256>, CheckZSobol<Lanes512>);
 
     [Fact]
     public void LargeSampleCountsAreTheScalarPointsToo()
@@ -114,6 +123,12 @@ public class LaneSamplerTests
     private static void CheckHammersley<TL>(HammersleySampler s) where TL : struct, ILanes<TL> => Check<TL, HammersleyLanes<TL>>(new(s), s);
 
     private static void CheckSobol<TL>(SobolSampler s) where TL : struct, ILanes<TL> => Check<TL, SobolLanes<TL>>(new(s), s);
+
+    private static void CheckPmj02<TL>(Pmj02Sampler s) where TL : struct, ILanes<TL> => Check<TL, Pmj02Lanes<TL>>(new(s), s);
+
+    private static void CheckPmj02BN<TL>(Pmj02BNSampler s) where TL : struct, ILanes<TL> => Check<TL, Pmj02Lanes<TL>>(new(s), s);
+
+    private static void CheckZSobol<TL>(ZSobolSampler s) where TL : struct, ILanes<TL> => Check<TL, ZSobolLanes<TL>>(new(s), s);
 
     private static void Check<TL, TS>(TS lanes, IPixelSampler sampler)
         where TL : struct, ILanes<TL>

@@ -51,6 +51,9 @@ internal static class PointRenderer
             RandomSampler random => RenderPackets<TL, RandomLanes<TL>>(plane, frame, () => new(random), sampler.SamplesPerPixel, image, loop),
             RegularSampler regular => RenderPackets<TL, RegularLanes<TL>>(plane, frame, () => new(regular), sampler.SamplesPerPixel, image, loop),
             SobolSampler sobol => RenderPackets<TL, SobolLanes<TL>>(plane, frame, () => new(sobol), sampler.SamplesPerPixel, image, loop),
+            ZSobolSampler zsobol => RenderPackets<TL, ZSobolLanes<TL>>(plane, frame, () => new(zsobol), sampler.SamplesPerPixel, image, loop),
+            Pmj02Sampler pmj02 => RenderPackets<TL, Pmj02Lanes<TL>>(plane, frame, () => new(pmj02), sampler.SamplesPerPixel, image, loop),
+            Pmj02BNSampler pmj02bn => RenderPackets<TL, Pmj02Lanes<TL>>(plane, frame, () => new(pmj02bn), sampler.SamplesPerPixel, image, loop),
             HammersleySampler hammersley => RenderPackets<TL, HammersleyLanes<TL>>(plane, frame, () => new(hammersley), sampler.SamplesPerPixel, image, loop),
             CorrelatedMultiJitteredSampler cmj when cmj.SamplesPerPixel <= PatternLimits.MaxSamples =>
                 RenderPackets<TL, CorrelatedMultiJitteredLanes<TL>>(plane, frame, () => new(cmj), sampler.SamplesPerPixel, image, loop),

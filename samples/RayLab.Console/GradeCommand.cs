@@ -1,0 +1,64 @@
+using System.CommandLine;
+
+namespace RayLab.Cli;
+
+/// <summary>
+/// <c>raylab grade SUBMISSIONS --checks KIT/checks/KIND --out DIR [--feed KIT/feed] [--check-timeout S]
+/// [--run-timeout S] [--submission-timeout S] [--unsafe-no-sandbox]</c>: builds, checks and runs every submitted lab
+/// in a sandbox with the instructor's pinned checks and writes one class table (<see cref="GradeJob"/>).
+/// </summary>
+public static class GradeCommand
+{
+    /// <summary>Builds the command; its action runs <see cref="GradeJob.Run"/> with these writers.</summary>
+    /// <param name="stdout">Where one line per submission goes.</param>
+    /// <param name="stderr">Where errors go, one line each.</param>
+    /// <param name="cancellation">Cancels the run (Ctrl+C): the submission in progress is stopped and no report is written.</param>
+    public static Command Create(TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
+    {
+        var submissions = new Argument<string>("submissions") { Description = "The folder of submitted labs: one folder per student (the folder's name is the student's row), each a lab with src/Lab (or one folder holding it)." };
+        var checks = new Option<string>("--checks") { Description = "The instructor's pinned checks: a class kit's checks/exercise or checks/method (a lab whose tests/Lab.Tests, Directory.Build.props and grading.json replace the student's).", Required = true, HelpName = "DIR" };
+        var feed = new Option<string?>("--feed") { Description = "The folder feed every package comes from, the only package source. Default: the kit's feed/ (two folders above --checks).", HelpName = "DIR" };
+        var output = new Option<string>("--out") { Description = "The folder for the report: grades.csv, grades.json, index.html, each student's pictures, error maps and logs (created if missing).", Required = true, HelpName = "DIR" };
+        var checkTimeout = new Option<int>("--check-timeout") { Description = "Seconds one check may run before it is stopped and counted as timed out; the other checks go on.", DefaultValueFactory = _ => 60, HelpName = "S" };
+        var runTimeout = new Option<int>("--run-timeout") { Description = "Seconds the lab's program (dotnet run --project src/Lab, the pictures) may run.", DefaultValueFactory = _ => 180, HelpName = "S" };
+        var submissionTimeout = new Option<int>("--submission-timeout") { Description = "Seconds one submission may take in all (build, checks, program); what is left is stopped and the row says so.", DefaultValueFactory = _ => 600, HelpName = "S" };
+        var unsafeNoSandbox = new Option<bool>("--unsafe-no-sandbox") { Description = "Run the submissions' code without a sandbox, with this user's rights and network: only for labs you trust, or where bubblewrap cannot run (Windows, macOS)." };
+        var grade = new Command("grade", "Grade a folder of submitted labs against the instructor's pinned checks: each one built, tested and run in a sandbox (bubblewrap: read-only system, no network, its own folder writable), its pictures scored against the exact image; writes grades.csv, grades.json and index.html.")
+        {
+            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, unsafeNoSandbox,
+        };
+        grade.SetAction(result => GradeJob.Run(
+            new GradeRequest(
+                result.GetRequiredValue(submissions),
+                result.GetRequiredValue(checks),
+                result.GetValue(feed),
+                result.GetRequiredValue(output),
+                TimeSpan.FromSeconds(result.GetRequiredValue(checkTimeout)),
+                TimeSpan.FromSeconds(result.GetRequiredValue(runTimeout)),
+                TimeSpan.FromSeconds(result.GetRequiredValue(submissionTimeout)),
+                result.GetValue(unsafeNoSandbox)),
+            stdout,
+            stderr,
+            cancellation));
+        return grade;
+    }
+}
+
+/// <summary>What <c>raylab grade</c> was asked to do.</summary>
+/// <param name="Submissions">The folder of submitted labs.</param>
+/// <param name="Checks">The pinned checks' lab.</param>
+/// <param name="Feed">The package folder, or null for the kit's.</param>
+/// <param name="Output">The report folder.</param>
+/// <param name="CheckTimeout">The limit on one check.</param>
+/// <param name="RunTimeout">The limit on the lab's program.</param>
+/// <param name="SubmissionTimeout">The limit on one submission in all.</param>
+/// <param name="UnsafeNoSandbox">Run without bubblewrap.</param>
+public sealed record GradeRequest(
+    string Submissions,
+    string Checks,
+    string? Feed,
+    string Output,
+    TimeSpan CheckTimeout,
+    TimeSpan RunTimeout,
+    TimeSpan SubmissionTimeout,
+    bool UnsafeNoSandbox);

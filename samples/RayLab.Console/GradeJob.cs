@@ -1,0 +1,553 @@
+using System.Diagnostics;
+using System.Globalization;
+using System.Text;
+using System.Text.RegularExpressions;
+using System.Xml.Linq;
+using RayLab.Imaging;
+using RayLab.Metrics;
+using RayLab.Sampling;
+using RayLab.Scenes;
+
+namespace RayLab.Cli;
+
+/// <summary>
+/// <c>raylab grade</c>: for each submitted lab, a copy whose <c>tests/</c>, root build files and <c>nuget.config</c> are
+/// the instructor's (the pinned checks, and the kit's feed as the only package source); built, tested (one TRX per
+/// run, each check stopped after its limit by the test platform's hang detection and the rest run again without it)
+/// and run (<c>dotnet run --project src/Lab</c>, the pictures) in the sandbox (<see cref="GradeSandbox"/>); its two
+/// pictures scored against the exact image (RMSE in 8-bit levels, mean FLIP), its rays per pixel and time read from
+/// the program's lines beside the rays the lab's adaptive rule takes. One row per student in grades.csv,
+/// grades.json and index.html.
+/// </summary>
+public static partial class GradeJob
+{
+    /// <summary>The lab's cameras (the template's TwoSpheres.cs, section 5): eye (0, 0.5, 6), looking at the origin.</summary>
+    internal static readonly Camera[] LabCameras =
+    [
+        new OrthoCamera { Name = "orthographic", Position = new Double3(0, 0.5, 6), Target = Double3.Zero, Up = new Double3(0, 1, 0), ViewHeight = 4.2, NearPlane = 0.1, FarPlane = 100 },
+        new PerspectiveCamera { Name = "perspective", Position = new Double3(0, 0.5, 6), Target = Double3.Zero, Up = new Double3(0, 1, 0), Fov = 40, NearPlane = 0.1, FarPlane = 100 },
+    ];
+
+    /// <summary>The lab's adaptive rule (4.1.4): depth 0 to 3, contrast 0.05.</summary>
+    internal static readonly AdaptiveSampler LabAdaptive = new(minDepth: 0, maxDepth: 3, contrast: 0.05);
+
+    private static readonly string[] SkippedFolders = ["bin", "obj", "out", "TestResults", ".git", ".vs", ".idea", ".home", ".grade"];
+
+    /// <summary>Runs the grading.</summary>
+    /// <param name="request">What to grade.</param>
+    /// <param name="stdout">One line per submission, then the report's path.</param>
+    /// <param name="stderr">Errors, one line each.</param>
+    /// <param name="cancellation">Stops the submission in progress; no report is written.</param>
+    /// <returns>0 when the report is written (whatever the grades), 1 for bad input, 130 when cancelled.</returns>
+    public static int Run(GradeRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
+    {
+        ArgumentNullException.ThrowIfNull(request);
+        ArgumentNullException.ThrowIfNull(stdout);
+        ArgumentNullException.ThrowIfNull(stderr);
+        try
+        {
+            return RunChecked(request, stdout, cancellation);
+        }
+        catch (UsageException e)
+        {
+            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
+            return 1;
+        }
+        catch (SceneFileException e)
+        {
+            stderr.WriteLine($"raylab: error: --checks: {SceneFileException.OneLine(e.Message)}");
+            return 1;
+        }
+        catch (OperationCanceledException)
+        {
+            stderr.WriteLine("raylab: grading cancelled; no report written");
+            return Program.CancelledExitCode;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
+            return 1;
+        }
+    }
+
+    private static int RunChecked(GradeRequest request, TextWriter stdout, CancellationToken cancellation)
+    {
+        GradeSetup setup = GradeSetup.Check(request);
+        string work = Directory.CreateTempSubdirectory("raylab-grade-").FullName;
+        try
+        {
+            string packages = Path.Combine(work, "packages");
+            Directory.CreateDirectory(packages);
+            stdout.WriteLine($"restoring the checks' packages from {setup.Feed} (once, outside the sandbox)");
+            RestoreChecks(setup, work, packages, cancellation);
+            GradeSandbox sandbox = GradeSandbox.Create(request.UnsafeNoSandbox, [setup.Submissions, setup.Output, work], packages);
+            if (!sandbox.IsSandboxed)
+            {
+                stdout.WriteLine("warning: --unsafe-no-sandbox: the submissions' code runs as you, with your files and network");
+            }
+
+            GradeReference reference = GradeReference.Create(setup);
+            string staging = Path.Combine(work, "report");
+            Directory.CreateDirectory(staging);
+            reference.Save(staging);
+            var rows = new List<StudentRow>();
+            foreach (string submission in setup.Students)
+            {
+                cancellation.ThrowIfCancellationRequested();
+                StudentRow row = GradeOne(setup, sandbox, reference, submission, work, staging, cancellation);
+                cancellation.ThrowIfCancellationRequested();
+                rows.Add(row);
+                stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                    $"{row.Name}: {row.Status}; checks {row.Count("Passed")} passed, {row.Count("Failed")} failed, {row.Count("Timeout")} timed out ({row.Seconds:0} s)"));
+            }
+
+            GradeReport.Write(staging, setup, reference, rows, sandbox.IsSandboxed);
+            Directory.CreateDirectory(setup.Output);
+            ReportFolder.Publish(staging, setup.Output);
+            stdout.WriteLine($"wrote {Path.Combine(setup.Output, "index.html")}, grades.csv and grades.json: {rows.Count} submissions");
+            return 0;
+        }
+        finally
+        {
+            try
+            {
+                Directory.Delete(work, recursive: true);
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                // a child stopped on its limit may still hold a file; the temporary folder is not worth failing for
+            }
+        }
+    }
+
+    /// <summary>The pinned lab restored once, outside the sandbox (trusted: the instructor's own), into the package folder the sandboxes read.</summary>
+    private static void RestoreChecks(GradeSetup setup, string work, string packages, CancellationToken cancellation)
+    {
+        string lab = Path.Combine(work, "checks");
+        CopyLab(setup.Checks, lab);
+        WriteNuGetConfig(lab, setup.Feed);
+        GradeSandbox plain = GradeSandbox.Create(unsafeNoSandbox: true, [], packages);
+        ChildRun restore = plain.Run(lab, null, TimeSpan.FromMinutes(10), "dotnet", ["restore", Path.Combine("tests", "Lab.Tests")], cancellation);
+        cancellation.ThrowIfCancellationRequested();
+        if (restore.ExitCode != 0)
+        {
+            throw new UsageException($"--checks: the checks do not restore from the feed {setup.Feed}: {FirstErrors(restore.Output, lab)}");
+        }
+    }
+
+    private static StudentRow GradeOne(GradeSetup setup, GradeSandbox sandbox, GradeReference reference, string submission, string work, string staging, CancellationToken cancellation)
+    {
+        var clock = Stopwatch.StartNew();
+        string name = Path.GetFileName(submission);
+        var row = new StudentRow(name, SafeName(name));
+        string folder = Path.Combine(staging, "students", row.Folder);
+        Directory.CreateDirectory(folder);
+        string log = Path.Combine(folder, "log.txt");
+        TimeSpan Left() => setup.Request.SubmissionTimeout - clock.Elapsed;
+
+        string? root = FindLab(submission);
+        if (root is null)
+        {
+            row.Problems.Add("no lab");
+            row.Detail = "no src/Lab/*.csproj in the folder or in one folder below it";
+            row.Seconds = clock.Elapsed.TotalSeconds;
+            return row;
+        }
+
+        string lab = Path.Combine(work, "labs", row.Folder);
+        CopyLab(root, lab);
+        PinChecks(setup, lab);
+
+        // 1. Build (the restore comes from the prepared, read-only package folder; no network).
+        ChildRun build = sandbox.Run(lab, log, Min(Left(), TimeSpan.FromMinutes(10)), "dotnet",
+            ["build", Path.Combine("tests", "Lab.Tests"), "-nodeReuse:false", "-p:UseSharedCompilation=false"], cancellation);
+        cancellation.ThrowIfCancellationRequested();
+        if (build.TimedOut || build.ExitCode != 0)
+        {
+            row.Problems.Add(build.TimedOut ? "build time limit" : "does not build");
+            row.Detail = build.TimedOut ? "the build ran past the submission's limit" : FirstErrors(build.Output, lab);
+            row.Seconds = clock.Elapsed.TotalSeconds;
+            return row;
+        }
+
+        // 2. The checks: runs of dotnet test; a run the hang detection stops names the checks that were running, which
+        // count as timed out, and the next run leaves them out.
+        RunChecks(setup, sandbox, lab, log, row, Left, cancellation);
+
+        // 3. The program: the pictures, and its lines of rays and time.
+        if (Left() <= TimeSpan.Zero)
+        {
+            row.Problems.Add("submission time limit");
+        }
+        else
+        {
+            TimeSpan limit = Min(Left(), setup.Request.RunTimeout);
+            ChildRun run = sandbox.Run(lab, log, limit, "dotnet", ["run", "--project", Path.Combine("src", "Lab"), "--no-build"], cancellation);
+            cancellation.ThrowIfCancellationRequested();
+            if (run.TimedOut)
+            {
+                row.Problems.Add(limit < setup.Request.RunTimeout ? "submission time limit" : "program time limit");
+            }
+            else if (run.ExitCode != 0)
+            {
+                row.Problems.Add($"program failed (exit {run.ExitCode})");
+                row.Detail ??= FirstErrors(run.Output, lab);
+            }
+
+            ReadTimings(setup, run.Output, row);
+        }
+
+        ScorePictures(setup, reference, lab, folder, row);
+        row.Seconds = clock.Elapsed.TotalSeconds;
+        return row;
+    }
+
+    private static void RunChecks(GradeSetup setup, GradeSandbox sandbox, string lab, string log, StudentRow row, Func<TimeSpan> left, CancellationToken cancellation)
+    {
+        var excluded = new List<string>();
+        for (int attempt = 1; ; attempt++)
+        {
+            if (left() <= TimeSpan.Zero)
+            {
+                row.Problems.Add("submission time limit");
+                return;
+            }
+
+            string results = Path.Combine(lab, ".grade", $"results-{attempt}");
+            List<string> args = ["test", Path.Combine("tests", "Lab.Tests"), "--no-build", "--logger", "trx;LogFileName=checks.trx", "--results-directory", results,
+                "--blame-hang-timeout", string.Create(CultureInfo.InvariantCulture, $"{(int)Math.Ceiling(setup.Request.CheckTimeout.TotalSeconds)}s"), "--blame-hang-dump-type", "none"];
+            if (excluded.Count > 0)
+            {
+                args.AddRange(["--filter", string.Join('&', excluded.Select(n => $"FullyQualifiedName!={n}"))]);
+            }
+
+            ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation);
+            cancellation.ThrowIfCancellationRequested();
+            string trx = Path.Combine(results, "checks.trx");
+            if (File.Exists(trx))
+            {
+                foreach ((string display, string outcome) in TrxResults(trx))
+                {
+                    row.Checks[display] = outcome == "Passed" ? "Passed" : outcome == "NotExecuted" ? "Skipped" : "Failed";
+                }
+            }
+
+            bool hang = test.Output.Contains("inactivity time", StringComparison.Ordinal);
+            var stopped = Directory.Exists(results)
+                ? Directory.EnumerateFiles(results, "Sequence_*.xml", SearchOption.AllDirectories).SelectMany(UnfinishedTests).ToList()
+                : [];
+            foreach ((string fullName, string display) in stopped)
+            {
+                row.Checks[display] = hang ? "Timeout" : "Crashed";
+                if (!excluded.Contains(fullName))
+                {
+                    excluded.Add(fullName);
+                }
+            }
+
+            if (test.TimedOut)
+            {
+                row.Problems.Add("submission time limit");
+                return;
+            }
+
+            if (stopped.Count == 0 || attempt >= 50)
+            {
+                if (!File.Exists(trx))
+                {
+                    row.Problems.Add("checks did not run");
+                    row.Detail ??= FirstErrors(test.Output, lab);
+                }
+
+                return;
+            }
+
+            row.Problems.Add(hang ? "check time limit" : "checks crashed");
+        }
+    }
+
+    private static void ReadTimings(GradeSetup setup, string output, StudentRow row)
+    {
+        foreach (Match m in RenderLine().Matches(output))
+        {
+            if (m.Groups["method"].Value == setup.TimedMethod
+                && double.TryParse(m.Groups["rpp"].Value, NumberStyles.Float, CultureInfo.InvariantCulture, out double rpp)
+                && double.TryParse(m.Groups["ms"].Value, NumberStyles.Float, CultureInfo.InvariantCulture, out double ms))
+            {
+                row.Timings[m.Groups["camera"].Value] = (rpp, ms);
+            }
+        }
+    }
+
+    private static void ScorePictures(GradeSetup setup, GradeReference reference, string lab, string folder, StudentRow row)
+    {
+        bool missing = false;
+        foreach (Camera camera in LabCameras)
+        {
+            string path = Path.Combine(lab, setup.Pictures[camera.Name]);
+            if (!File.Exists(path))
+            {
+                missing = true;
+                continue;
+            }
+
+            Image exact = reference.Exact[camera.Name];
+            Image picture;
+            try
+            {
+                picture = Image.Load(path);
+            }
+            catch (Exception e) when (e is InvalidDataException or IOException or NotSupportedException)
+            {
+                row.Pictures[camera.Name] = new PictureScore(double.NaN, double.NaN, $"{setup.Pictures[camera.Name]} does not decode");
+                continue;
+            }
+
+            if (picture.Width != exact.Width || picture.Height != exact.Height)
+            {
+                row.Pictures[camera.Name] = new PictureScore(double.NaN, double.NaN,
+                    $"{setup.Pictures[camera.Name]} is {picture.Width}×{picture.Height}, the exact image {exact.Width}×{exact.Height}");
+                continue;
+            }
+
+            FlipResult flip = Flip.Compute(exact, picture);
+            ImageError error = ImageError.Measure(picture, exact);
+            picture.Save(Path.Combine(folder, $"{camera.Name}.png"));
+            FlipMap.Render(flip).Save(Path.Combine(folder, $"{camera.Name}-flip.png"));
+            row.Pictures[camera.Name] = new PictureScore(error.Rmse, flip.Mean, null);
+        }
+
+        if (missing)
+        {
+            row.Problems.Add("pictures missing");
+        }
+    }
+
+    /// <summary>The lab's root: the submission itself when it holds src/Lab, else its one subfolder that does (a zip's top folder).</summary>
+    private static string? FindLab(string submission)
+    {
+        static bool IsLab(string folder) =>
+            Directory.Exists(Path.Combine(folder, "src", "Lab")) && Directory.EnumerateFiles(Path.Combine(folder, "src", "Lab"), "*.csproj").Any();
+        if (IsLab(submission))
+        {
+            return submission;
+        }
+
+        string[] inner = [.. Directory.EnumerateDirectories(submission).Where(d => !Path.GetFileName(d).StartsWith('.') && IsLab(d))];
+        return inner.Length == 1 ? inner[0] : null;
+    }
+
+    /// <summary>Copies a lab without build output, version control or links (a link could point anywhere).</summary>
+    private static void CopyLab(string from, string to)
+    {
+        Directory.CreateDirectory(to);
+        foreach (FileSystemInfo entry in new DirectoryInfo(from).EnumerateFileSystemInfos())
+        {
+            if (entry.LinkTarget is not null)
+            {
+                continue;
+            }
+
+            string target = Path.Combine(to, entry.Name);
+            if (entry is DirectoryInfo)
+            {
+                if (!SkippedFolders.Contains(entry.Name, StringComparer.OrdinalIgnoreCase))
+                {
+                    CopyLab(entry.FullName, target);
+                }
+            }
+            else
+            {
+                File.Copy(entry.FullName, target, overwrite: true);
+            }
+        }
+    }
+
+    /// <summary>
+    /// The instructor's checks in place of the student's: the whole tests/ folder, the root Directory.Build.props, no
+    /// root file that could change how the checks build (Directory.Build.targets, Directory.Packages.props,
+    /// global.json, another nuget.config), the kit's feed as the only source, and the student's namespace in scope.
+    /// </summary>
+    private static void PinChecks(GradeSetup setup, string lab)
+    {
+        string tests = Path.Combine(lab, "tests");
+        if (Directory.Exists(tests))
+        {
+            Directory.Delete(tests, recursive: true);
+        }
+
+        CopyLab(Path.Combine(setup.Checks, "tests", "Lab.Tests"), Path.Combine(tests, "Lab.Tests"));
+        foreach (string file in Directory.EnumerateFiles(lab))
+        {
+            string fileName = Path.GetFileName(file);
+            if (new[] { "Directory.Build.props", "Directory.Build.targets", "Directory.Packages.props", "Directory.Build.rsp", "global.json", "nuget.config" }
+                .Contains(fileName, StringComparer.OrdinalIgnoreCase))
+            {
+                File.Delete(file);
+            }
+        }
+
+        File.Copy(Path.Combine(setup.Checks, "Directory.Build.props"), Path.Combine(lab, "Directory.Build.props"));
+        WriteNuGetConfig(lab, setup.Feed);
+        string? project = Directory.EnumerateFiles(Path.Combine(lab, "src", "Lab"), "*.csproj").Order(StringComparer.Ordinal).FirstOrDefault();
+        string? space = project is null ? null : RootNamespace().Match(File.ReadAllText(project)) is { Success: true } m ? m.Groups[1].Value.Trim() : null;
+        if (space is not null && space != setup.ChecksNamespace && Identifier().IsMatch(space))
+        {
+            File.WriteAllText(Path.Combine(tests, "Lab.Tests", "GradedLabNamespace.cs"), $"global using {space};\n");
+        }
+    }
+
+    private static void WriteNuGetConfig(string lab, string feed) =>
+        File.WriteAllText(Path.Combine(lab, "nuget.config"), $"""
+            <?xml version="1.0" encoding="utf-8"?>
+            <configuration>
+              <packageSources>
+                <clear />
+                <add key="class-kit" value="{System.Security.SecurityElement.Escape(feed)}" />
+              </packageSources>
+            </configuration>
+            """);
+
+    /// <summary>Each result of a TRX file: the check's display name and its outcome.</summary>
+    internal static IEnumerable<(string Display, string Outcome)> TrxResults(string trx)
+    {
+        XDocument document;
+        try
+        {
+            document = XDocument.Load(trx);
+        }
+        catch (System.Xml.XmlException)
+        {
+            yield break;
+        }
+
+        foreach (XElement result in document.Descendants().Where(e => e.Name.LocalName == "UnitTestResult"))
+        {
+            if (result.Attribute("testName")?.Value is { } display)
+            {
+                yield return (display, result.Attribute("outcome")?.Value ?? "Failed");
+            }
+        }
+    }
+
+    /// <summary>The checks a blame sequence file lists as started and not finished: full name (for a filter) and display name.</summary>
+    private static IEnumerable<(string FullName, string Display)> UnfinishedTests(string sequence)
+    {
+        XDocument document;
+        try
+        {
+            document = XDocument.Load(sequence);
+        }
+        catch (System.Xml.XmlException)
+        {
+            yield break;
+        }
+
+        foreach (XElement test in document.Descendants("Test"))
+        {
+            if (test.Attribute("Completed")?.Value == "False" && test.Attribute("Name")?.Value is { } name)
+            {
+                yield return (name, test.Attribute("DisplayName")?.Value ?? name);
+            }
+        }
+    }
+
+    /// <summary>
+    /// A check's lab section: the display name's first word where it is a section number or <c>own</c>
+    /// ("3.2 Kamera perspektywiczna: …" → 3.2), else its class ("MyLab.Tests.CameraTests.Frame" → CameraTests).
+    /// </summary>
+    /// <param name="display">The check's display name.</param>
+    /// <returns>The section.</returns>
+    public static string SectionOf(string display)
+    {
+        ArgumentNullException.ThrowIfNull(display);
+        Match m = SectionPrefix().Match(display);
+        if (m.Success)
+        {
+            return m.Groups[1].Value;
+        }
+
+        string name = display.Split('(')[0];
+        string[] parts = name.Split('.');
+        return parts.Length >= 2 ? parts[^2] : name;
+    }
+
+    /// <summary>The first few error lines of a child's output, with the lab's path left out.</summary>
+    private static string FirstErrors(string output, string lab)
+    {
+        string[] lines = output.Split('\n', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries);
+        string[] errors = [.. lines.Where(l => l.Contains("error", StringComparison.OrdinalIgnoreCase) || l.Contains("exception", StringComparison.OrdinalIgnoreCase))
+            .Select(l => l.Replace(lab + Path.DirectorySeparatorChar, "", StringComparison.Ordinal).Replace(lab, ".", StringComparison.Ordinal))
+            .Distinct().Take(3)];
+        return errors.Length > 0 ? string.Join(" | ", errors) : string.Join(" | ", lines.TakeLast(3));
+    }
+
+    private static string SafeName(string name)
+    {
+        var safe = new StringBuilder();
+        foreach (char c in name)
+        {
+            safe.Append(char.IsAsciiLetterOrDigit(c) || c is '-' or '_' or '.' ? c : '_');
+        }
+
+        return safe.Length == 0 || safe[0] == '.' ? "_" + safe : safe.ToString();
+    }
+
+    private static TimeSpan Min(TimeSpan a, TimeSpan b) => a < b ? a : b;
+
+    [GeneratedRegex(@"^((?:\d+(?:\.\d+)*)|own)\s")]
+    private static partial Regex SectionPrefix();
+
+    [GeneratedRegex(@"<RootNamespace>\s*([^<]+?)\s*</RootNamespace>")]
+    private static partial Regex RootNamespace();
+
+    [GeneratedRegex(@"^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)*$")]
+    private static partial Regex Identifier();
+
+    /// <summary>The lab's line per render: "&lt;camera&gt; &lt;method&gt; N rays (X per pixel) T ms …".</summary>
+    [GeneratedRegex(@"(?m)^(?<camera>\S+)\s+(?<method>\S+)\s+[\d,. ]+\s+rays\s+\(\s*(?<rpp>[\d.]+)\s+per pixel\)\s+(?<ms>[\d.]+)\s+ms")]
+    private static partial Regex RenderLine();
+}
+
+/// <summary>One student's row of the class table.</summary>
+/// <param name="Name">The submission folder's name.</param>
+/// <param name="Folder">That name made safe for a file path (the report's folder of the student's pictures and log).</param>
+internal sealed record StudentRow(string Name, string Folder)
+{
+    /// <summary>What went wrong (build, limits, program), in order; empty when everything ran.</summary>
+    public List<string> Problems { get; } = [];
+
+    /// <summary>The first errors of the failing step, or null.</summary>
+    public string? Detail { get; set; }
+
+    /// <summary>Each check's display name and outcome: Passed, Failed, Skipped, Timeout or Crashed.</summary>
+    public SortedDictionary<string, string> Checks { get; } = new(StringComparer.Ordinal);
+
+    /// <summary>Each camera's picture score.</summary>
+    public Dictionary<string, PictureScore> Pictures { get; } = [];
+
+    /// <summary>Each camera's rays per pixel and milliseconds of the timed method, from the program's lines.</summary>
+    public Dictionary<string, (double RaysPerPixel, double Milliseconds)> Timings { get; } = [];
+
+    /// <summary>The submission's wall time in the grader.</summary>
+    public double Seconds { get; set; }
+
+    /// <summary>A short status: "ok", or the problems joined.</summary>
+    public string Status => Problems.Count == 0 ? "ok" : string.Join("; ", Problems.Distinct());
+
+    /// <summary>How many checks ended with <paramref name="outcome"/>.</summary>
+    public int Count(string outcome) => Checks.Values.Count(v => v == outcome);
+
+    /// <summary>A section's result: pass, fail, timeout, or "" when none of its checks ran.</summary>
+    public string Section(string section)
+    {
+        string[] outcomes = [.. Checks.Where(c => GradeJob.SectionOf(c.Key) == section).Select(c => c.Value)];
+        return outcomes.Length == 0 ? ""
+            : outcomes.Contains("Timeout") ? "timeout"
+            : outcomes.Contains("Crashed") ? "crashed"
+            : outcomes.All(o => o is "Passed" or "Skipped") ? "pass" : "fail";
+    }
+}
+
+/// <summary>A picture against the exact image: RMSE in 8-bit levels and mean FLIP, or why it has none.</summary>
+internal sealed record PictureScore(double Rmse, double Flip, string? Problem);

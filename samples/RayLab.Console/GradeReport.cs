@@ -1,0 +1,341 @@
+using System.Globalization;
+using System.Net;
+using System.Text;
+using System.Text.Json;
+using RayLab.Rendering.Exact;
+using RayLab.Scenes;
+
+namespace RayLab.Cli;
+
+/// <summary>
+/// What every submission is measured against, computed once by RayLab: each camera's exact image of the lab's scene
+/// and the rays per pixel the lab's adaptive rule (<see cref="GradeJob.LabAdaptive"/>) takes on it.
+/// </summary>
+internal sealed class GradeReference
+{
+    public Dictionary<string, Image> Exact { get; } = new(StringComparer.Ordinal);
+
+    public Dictionary<string, double> AdaptiveRaysPerPixel { get; } = new(StringComparer.Ordinal);
+
+    public static GradeReference Create(GradeSetup setup)
+    {
+        var reference = new GradeReference();
+        SceneDescription d = setup.Scene;
+        var renderer = new Renderer();
+        foreach (Camera camera in GradeJob.LabCameras)
+        {
+            var exact = new Image(d.Width, d.Height);
+            new ExactRenderer().Render(d.Scene, camera, exact);
+            reference.Exact[camera.Name] = exact;
+            var adaptive = new Image(d.Width, d.Height);
+            RenderStatistics stats = renderer.Render(d.Scene, camera, RenderMethod.Adaptive(GradeJob.LabAdaptive), adaptive);
+            reference.AdaptiveRaysPerPixel[camera.Name] = (double)stats.PrimaryRays / (d.Width * d.Height);
+        }
+
+        return reference;
+    }
+
+    public void Save(string staging)
+    {
+        Directory.CreateDirectory(Path.Combine(staging, "exact"));
+        foreach ((string camera, Image image) in Exact)
+        {
+            image.Save(Path.Combine(staging, "exact", $"{camera}.png"));
+        }
+    }
+}
+
+/// <summary>The class table: grades.csv, grades.json (for a gradebook) and index.html (with the pictures).</summary>
+internal static class GradeReport
+{
+    private static readonly CultureInfo Inv = CultureInfo.InvariantCulture;
+
+    public static void Write(string staging, GradeSetup setup, GradeReference reference, IReadOnlyList<StudentRow> rows, bool sandboxed)
+    {
+        string[] sections = [.. rows.SelectMany(r => r.Checks.Keys).Select(GradeJob.SectionOf).Distinct().Order(SectionOrder.Instance)];
+        string[] cameras = [.. GradeJob.LabCameras.Select(c => c.Name)];
+        File.WriteAllText(Path.Combine(staging, "grades.csv"), Csv(rows, sections, cameras, reference));
+        File.WriteAllText(Path.Combine(staging, "grades.json"), Json(setup, rows, sections, cameras, reference, sandboxed));
+        File.WriteAllText(Path.Combine(staging, "index.html"), Html(setup, rows, sections, cameras, reference, sandboxed));
+    }
+
+    private static string Csv(IReadOnlyList<StudentRow> rows, string[] sections, string[] cameras, GradeReference reference)
+    {
+        var csv = new StringBuilder();
+        var header = new List<string> { "student", "status" };
+        header.AddRange(sections);
+        header.AddRange(["checks passed", "checks failed", "checks timed out"]);
+        foreach (string c in cameras)
+        {
+            header.AddRange([$"{c} rmse", $"{c} flip", $"{c} rays per pixel", $"{c} lab adaptive rays per pixel", $"{c} ms"]);
+        }
+
+        header.AddRange(["seconds", "detail"]);
+        csv.AppendLine(string.Join(',', header.Select(Quote)));
+        foreach (StudentRow row in rows)
+        {
+            var cells = new List<string> { row.Name, row.Status };
+            cells.AddRange(sections.Select(row.Section));
+            cells.AddRange([row.Count("Passed").ToString(Inv), row.Count("Failed").ToString(Inv), row.Count("Timeout").ToString(Inv)]);
+            foreach (string c in cameras)
+            {
+                PictureScore? p = row.Pictures.GetValueOrDefault(c);
+                bool timed = row.Timings.TryGetValue(c, out (double RaysPerPixel, double Milliseconds) t);
+                cells.AddRange([Number(p?.Rmse, "F4"), Number(p?.Flip, "F6"), timed ? t.RaysPerPixel.ToString("F2", Inv) : "",
+                    reference.AdaptiveRaysPerPixel[c].ToString("F2", Inv), timed ? t.Milliseconds.ToString("F1", Inv) : ""]);
+            }
+
+            cells.AddRange([row.Seconds.ToString("F0", Inv), row.Detail ?? ""]);
+            csv.AppendLine(string.Join(',', cells.Select(Quote)));
+        }
+
+        return csv.ToString();
+    }
+
+    private static string Json(GradeSetup setup, IReadOnlyList<StudentRow> rows, string[] sections, string[] cameras, GradeReference reference, bool sandboxed)
+    {
+        using var stream = new MemoryStream();
+        using (var json = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping }))
+        {
+            json.WriteStartObject();
+            json.WriteString("kind", setup.Kind);
+            json.WriteString("raylabVersion", setup.Version);
+            json.WriteString("checks", setup.Checks);
+            json.WriteBoolean("sandboxed", sandboxed);
+            json.WriteStartArray("sections");
+            foreach (string s in sections)
+            {
+                json.WriteStringValue(s);
+            }
+
+            json.WriteEndArray();
+            json.WriteStartObject("reference");
+            foreach (string c in cameras)
+            {
+                json.WriteStartObject(c);
+                json.WriteString("exact", $"exact/{c}.png");
+                json.WriteNumber("labAdaptiveRaysPerPixel", Math.Round(reference.AdaptiveRaysPerPixel[c], 4));
+                json.WriteEndObject();
+            }
+
+            json.WriteEndObject();
+            json.WriteStartArray("students");
+            foreach (StudentRow row in rows)
+            {
+                json.WriteStartObject();
+                json.WriteString("name", row.Name);
+                json.WriteString("status", row.Status);
+                json.WriteStartArray("problems");
+                foreach (string p in row.Problems.Distinct())
+                {
+                    json.WriteStringValue(p);
+                }
+
+                json.WriteEndArray();
+                if (row.Detail is not null)
+                {
+                    json.WriteString("detail", row.Detail);
+                }
+
+                json.WriteStartObject("sections");
+                foreach (string s in sections)
+                {
+                    string result = row.Section(s);
+                    if (result.Length == 0)
+                    {
+                        json.WriteNull(s);
+                    }
+                    else
+                    {
+                        json.WriteString(s, result);
+                    }
+                }
+
+                json.WriteEndObject();
+                json.WriteStartArray("checks");
+                foreach ((string display, string outcome) in row.Checks)
+                {
+                    json.WriteStartObject();
+                    json.WriteString("name", display);
+                    json.WriteString("section", GradeJob.SectionOf(display));
+                    json.WriteString("outcome", outcome);
+                    json.WriteEndObject();
+                }
+
+                json.WriteEndArray();
+                json.WriteStartObject("pictures");
+                foreach (string c in cameras)
+                {
+                    json.WritePropertyName(c);
+                    if (!row.Pictures.TryGetValue(c, out PictureScore? p))
+                    {
+                        json.WriteNullValue();
+                        continue;
+                    }
+
+                    json.WriteStartObject();
+                    if (p.Problem is null)
+                    {
+                        json.WriteNumber("rmse", Math.Round(p.Rmse, 4));
+                        json.WriteNumber("flip", Math.Round(p.Flip, 6));
+                        json.WriteString("picture", $"students/{row.Folder}/{c}.png");
+                        json.WriteString("flipMap", $"students/{row.Folder}/{c}-flip.png");
+                    }
+                    else
+                    {
+                        json.WriteString("problem", p.Problem);
+                    }
+
+                    json.WriteEndObject();
+                }
+
+                json.WriteEndObject();
+                json.WriteStartObject("timing");
+                json.WriteString("method", setup.TimedMethod);
+                foreach ((string c, (double rpp, double ms)) in row.Timings.OrderBy(t => t.Key, StringComparer.Ordinal))
+                {
+                    json.WriteStartObject(c);
+                    json.WriteNumber("raysPerPixel", rpp);
+                    json.WriteNumber("ms", ms);
+                    json.WriteEndObject();
+                }
+
+                json.WriteEndObject();
+                json.WriteNumber("seconds", Math.Round(row.Seconds, 1));
+                json.WriteString("log", $"students/{row.Folder}/log.txt");
+                json.WriteEndObject();
+            }
+
+            json.WriteEndArray();
+            json.WriteEndObject();
+        }
+
+        return Encoding.UTF8.GetString(stream.ToArray()) + "\n";
+    }
+
+    private static string Html(GradeSetup setup, IReadOnlyList<StudentRow> rows, string[] sections, string[] cameras, GradeReference reference, bool sandboxed)
+    {
+        static string E(string text) => WebUtility.HtmlEncode(text);
+        var html = new StringBuilder();
+        html.AppendLine("<!DOCTYPE html>");
+        html.AppendLine("<html lang=\"en\"><head><meta charset=\"utf-8\"><title>RayLab grades</title><style>");
+        html.AppendLine("body{font-family:sans-serif;margin:1.5em}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:.25em .5em;text-align:center}"
+            + "td.pass{background:#d8f5d0}td.fail{background:#f8d0d0}td.timeout,td.crashed{background:#f8e8b0}td.l{text-align:left}"
+            + "figure{display:inline-block;margin:.3em}figure img{width:320px;image-rendering:pixelated}figcaption{font-size:.85em}");
+        html.AppendLine("</style></head><body>");
+        html.AppendLine($"<h1>RayLab grades: the {E(setup.Kind)} lab</h1>");
+        html.AppendLine($"<p>{rows.Count} submissions, checks from <code>{E(setup.Checks)}</code> (RayLab {E(setup.Version)}), "
+            + (sandboxed ? "each run in bubblewrap (no network, read-only system)." : "<strong>run without a sandbox (--unsafe-no-sandbox)</strong>.")
+            + $" Pictures: RMSE in 8-bit levels and mean FLIP against the exact image; rays per pixel and time of <code>{E(setup.TimedMethod)}</code> from the program's lines, beside the rays of the lab's adaptive rule.</p>");
+        html.AppendLine("<table><tr><th>student</th><th>status</th>");
+        foreach (string s in sections)
+        {
+            html.Append(CultureInfo.InvariantCulture, $"<th>{E(s)}</th>");
+        }
+
+        foreach (string c in cameras)
+        {
+            html.Append(CultureInfo.InvariantCulture, $"<th>{E(c)}<br>RMSE / FLIP</th><th>{E(c)}<br>rays/px (lab {reference.AdaptiveRaysPerPixel[c].ToString("F2", Inv)}), ms</th>");
+        }
+
+        html.AppendLine("<th>s</th></tr>");
+        foreach (StudentRow row in rows)
+        {
+            html.Append(CultureInfo.InvariantCulture, $"<tr><td class=\"l\"><a href=\"#{E(row.Folder)}\">{E(row.Name)}</a></td><td class=\"l\">{E(row.Status)}</td>");
+            foreach (string s in sections)
+            {
+                string r = row.Section(s);
+                html.Append(CultureInfo.InvariantCulture, $"<td class=\"{r}\">{(r.Length == 0 ? "—" : r)}</td>");
+            }
+
+            foreach (string c in cameras)
+            {
+                PictureScore? p = row.Pictures.GetValueOrDefault(c);
+                string score = p is null ? "—" : p.Problem is null ? $"{p.Rmse.ToString("F3", Inv)} / {p.Flip.ToString("F4", Inv)}" : E(p.Problem);
+                string timing = row.Timings.TryGetValue(c, out (double RaysPerPixel, double Milliseconds) t)
+                    ? $"{t.RaysPerPixel.ToString("F2", Inv)}, {t.Milliseconds.ToString("F0", Inv)}" : "—";
+                html.Append(CultureInfo.InvariantCulture, $"<td>{score}</td><td>{timing}</td>");
+            }
+
+            html.AppendLine(CultureInfo.InvariantCulture, $"<td>{row.Seconds.ToString("F0", Inv)}</td></tr>");
+        }
+
+        html.AppendLine("</table>");
+        foreach (StudentRow row in rows)
+        {
+            html.AppendLine(CultureInfo.InvariantCulture, $"<h2 id=\"{E(row.Folder)}\">{E(row.Name)}: {E(row.Status)}</h2>");
+            if (row.Detail is not null)
+            {
+                html.AppendLine(CultureInfo.InvariantCulture, $"<pre>{E(row.Detail)}</pre>");
+            }
+
+            string notPassed = string.Join(", ", row.Checks.Where(c => c.Value != "Passed").Select(c => $"{E(c.Key)}: {E(c.Value)}").DefaultIfEmpty(row.Checks.Count == 0 ? "none ran" : "all passed"));
+            html.AppendLine(CultureInfo.InvariantCulture, $"<p><a href=\"students/{E(row.Folder)}/log.txt\">log</a> (build, checks, program). Checks: {notPassed}</p>");
+            foreach (string c in cameras)
+            {
+                if (row.Pictures.TryGetValue(c, out PictureScore? p) && p.Problem is null)
+                {
+                    html.AppendLine(CultureInfo.InvariantCulture, $"<figure><img src=\"students/{E(row.Folder)}/{c}.png\" alt=\"{E(row.Name)}, {c}\"><figcaption>{E(row.Name)}, {c}</figcaption></figure>");
+                    html.AppendLine(CultureInfo.InvariantCulture, $"<figure><img src=\"students/{E(row.Folder)}/{c}-flip.png\" alt=\"FLIP map\"><figcaption>FLIP map (black: no visible difference), mean {p.Flip.ToString("F4", Inv)}</figcaption></figure>");
+                    html.AppendLine(CultureInfo.InvariantCulture, $"<figure><img src=\"exact/{c}.png\" alt=\"exact, {c}\"><figcaption>exact, {c}</figcaption></figure><br>");
+                }
+            }
+        }
+
+        html.AppendLine("</body></html>");
+        return html.ToString();
+    }
+
+    private static string Number(double? value, string format) =>
+        value is { } v && double.IsFinite(v) ? v.ToString(format, Inv) : "";
+
+    private static string Quote(string cell) =>
+        cell.IndexOfAny([',', '"', '\n', '\r']) >= 0 ? $"\"{cell.Replace("\"", "\"\"", StringComparison.Ordinal)}\"" : cell;
+
+    /// <summary>Section numbers in numeric order (2.1, 2.2, 3, 3.1, …, 4.1.4, 5), then own, then class names.</summary>
+    private sealed class SectionOrder : IComparer<string>
+    {
+        public static readonly SectionOrder Instance = new();
+
+        public int Compare(string? x, string? y)
+        {
+            int[]? a = Numbers(x), b = Numbers(y);
+            if (a is not null && b is not null)
+            {
+                for (int i = 0; i < Math.Min(a.Length, b.Length); i++)
+                {
+                    if (a[i] != b[i])
+                    {
+                        return a[i].CompareTo(b[i]);
+                    }
+                }
+
+                return a.Length.CompareTo(b.Length);
+            }
+
+            if (a is not null || b is not null)
+            {
+                return a is not null ? -1 : 1;
+            }
+
+            return (x == "own" ? 0 : 1).CompareTo(y == "own" ? 0 : 1) is var own and not 0 ? own : string.CompareOrdinal(x, y);
+        }
+
+        private static int[]? Numbers(string? s)
+        {
+            string[] parts = (s ?? "").Split('.');
+            var numbers = new int[parts.Length];
+            for (int i = 0; i < parts.Length; i++)
+            {
+                if (!int.TryParse(parts[i], NumberStyles.None, CultureInfo.InvariantCulture, out int n))
+                {
+                    return null;
+                }
+
+                numbers[i] = n;
+            }
+
+            return numbers;
+        }
+    }
+}

@@ -1,0 +1,255 @@
+using System.Diagnostics;
+using System.Runtime.InteropServices;
+using System.Text;
+using RayLab.Scenes;
+
+namespace RayLab.Cli;
+
+/// <summary>How a child process of <c>raylab grade</c> ended.</summary>
+/// <param name="ExitCode">Its exit code; -1 when it was stopped.</param>
+/// <param name="TimedOut">Whether it ran past its limit and was stopped (with every process it started).</param>
+/// <param name="Output">Its stdout and stderr, interleaved as they came.</param>
+/// <param name="Elapsed">Its wall time.</param>
+public sealed record ChildRun(int ExitCode, bool TimedOut, string Output, TimeSpan Elapsed);
+
+/// <summary>
+/// Runs a submission's commands (<c>dotnet build</c>, <c>dotnet test</c>, <c>dotnet run</c>) inside Debian's
+/// bubblewrap: the whole file system read-only, the lab's own folder writable, the folders of the other submissions,
+/// of the report and of the grader's work hidden (empty), the package folder read-only, no network (only a loopback
+/// of its own), its own process and IPC namespaces, and every process killed when the limit passes or the grader
+/// dies. With <c>--unsafe-no-sandbox</c> the same commands run as plain children.
+/// </summary>
+public sealed class GradeSandbox
+{
+    private readonly string? _bwrap;
+    private readonly IReadOnlyList<string> _hidden;
+    private readonly string _packages;
+
+    private GradeSandbox(string? bwrap, IReadOnlyList<string> hidden, string packages)
+    {
+        _bwrap = bwrap;
+        _hidden = hidden;
+        _packages = packages;
+    }
+
+    /// <summary>Whether the commands run inside bubblewrap.</summary>
+    public bool IsSandboxed => _bwrap is not null;
+
+    /// <summary>
+    /// The sandbox for this machine: bubblewrap where it runs, else a <see cref="UsageException"/> that says what to
+    /// do, unless <paramref name="unsafeNoSandbox"/>.
+    /// </summary>
+    /// <param name="unsafeNoSandbox">Run unsandboxed.</param>
+    /// <param name="hidden">Folders the submission must not see (others' labs, the report, the grader's work).</param>
+    /// <param name="packages">The NuGet package folder, bound read-only.</param>
+    /// <returns>The sandbox.</returns>
+    public static GradeSandbox Create(bool unsafeNoSandbox, IReadOnlyList<string> hidden, string packages)
+    {
+        ArgumentNullException.ThrowIfNull(hidden);
+        ArgumentException.ThrowIfNullOrEmpty(packages);
+        if (unsafeNoSandbox)
+        {
+            return new GradeSandbox(null, hidden, packages);
+        }
+
+        if (!OperatingSystem.IsLinux())
+        {
+            throw new UsageException(
+                $"grade: no sandbox on {RuntimeInformation.OSDescription}: raylab grade sandboxes with Linux's bubblewrap. Grade in a Linux machine "
+                + "(WSL 2 on Windows, a Linux VM on macOS) with bubblewrap installed, or pass --unsafe-no-sandbox to run the submissions' code as yourself, with network (only for labs you trust)");
+        }
+
+        string? bwrap = FindOnPath("bwrap");
+        if (bwrap is null)
+        {
+            throw new UsageException(
+                "grade: bubblewrap (bwrap) is not installed, and it is the sandbox that keeps a submission off the network and out of your files: "
+                + "install it (Debian/Ubuntu: sudo apt-get install bubblewrap), or pass --unsafe-no-sandbox (only for labs you trust)");
+        }
+
+        var sandbox = new GradeSandbox(bwrap, hidden, packages);
+        ChildRun probe = sandbox.Run(Path.GetTempPath(), null, TimeSpan.FromSeconds(30), "true", [], CancellationToken.None);
+        if (probe.ExitCode != 0)
+        {
+            throw new UsageException(
+                $"grade: bubblewrap does not run here ({SceneFileException.OneLine(probe.Output.Trim())}): it needs unprivileged user namespaces or root; "
+                + "or pass --unsafe-no-sandbox (only for labs you trust)");
+        }
+
+        return sandbox;
+    }
+
+    /// <summary>
+    /// Runs <paramref name="command"/> with <paramref name="args"/> in <paramref name="lab"/> (writable inside the
+    /// sandbox), stopping it and every process it started after <paramref name="limit"/>.
+    /// </summary>
+    /// <param name="lab">The working folder, the one writable folder (with /tmp, empty).</param>
+    /// <param name="log">A file to append the command line and its output to, or null.</param>
+    /// <param name="limit">The wall-time limit.</param>
+    /// <param name="command">The program.</param>
+    /// <param name="args">Its arguments.</param>
+    /// <param name="cancellation">Stops the child as the limit would.</param>
+    /// <returns>How it ended.</returns>
+    public ChildRun Run(string lab, string? log, TimeSpan limit, string command, IReadOnlyList<string> args, CancellationToken cancellation)
+    {
+        ArgumentException.ThrowIfNullOrEmpty(lab);
+        ArgumentException.ThrowIfNullOrEmpty(command);
+        ArgumentNullException.ThrowIfNull(args);
+        var start = new ProcessStartInfo
+        {
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            RedirectStandardInput = true,
+            UseShellExecute = false,
+            WorkingDirectory = lab,
+        };
+        string home = Path.Combine(lab, ".home");
+        Directory.CreateDirectory(home);
+        // The same environment with and without the sandbox: a home inside the lab, the prepared package folder,
+        // no MSBuild or compiler server outliving the step, no telemetry, no first-run work.
+        var environment = new Dictionary<string, string>
+        {
+            ["HOME"] = home,
+            ["DOTNET_CLI_HOME"] = home,
+            ["NUGET_PACKAGES"] = _packages,
+            ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1",
+            ["DOTNET_NOLOGO"] = "1",
+            ["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1",
+            ["DOTNET_GENERATE_ASPNET_CERTIFICATE"] = "false",
+            ["MSBUILDDISABLENODEREUSE"] = "1",
+            ["DOTNET_CLI_USE_MSBUILD_SERVER"] = "0",
+            ["UseSharedCompilation"] = "false",
+            ["TMPDIR"] = "/tmp", // the sandbox's own, empty /tmp
+        };
+        if (_bwrap is null)
+        {
+            start.FileName = command;
+            foreach (string a in args)
+            {
+                start.ArgumentList.Add(a);
+            }
+
+            // MSBuild's variables of a build this grader may run under (dotnet test) would steer the children's builds.
+            foreach (string key in start.Environment.Keys.Where(k => k.StartsWith("MSBuild", StringComparison.OrdinalIgnoreCase)).ToList())
+            {
+                start.Environment.Remove(key);
+            }
+
+            foreach ((string key, string value) in environment)
+            {
+                start.Environment[key] = value;
+            }
+        }
+        else
+        {
+            start.FileName = _bwrap;
+            List<string> a = ["--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc", "--tmpfs", "/tmp"];
+            foreach (string folder in _hidden.Where(Directory.Exists).Select(Path.GetFullPath).Distinct().OrderBy(f => f.Length))
+            {
+                a.AddRange(["--tmpfs", folder]);
+            }
+
+            a.AddRange(["--ro-bind", _packages, _packages, "--bind", lab, lab, "--chdir", lab]);
+            a.AddRange(["--unshare-net", "--unshare-pid", "--unshare-ipc", "--unshare-uts", "--die-with-parent", "--new-session", "--clearenv"]);
+            a.AddRange(["--setenv", "PATH", Environment.GetEnvironmentVariable("PATH") ?? "/usr/bin:/bin"]);
+            foreach (string name in new[] { "DOTNET_ROOT", "LANG" })
+            {
+                if (Environment.GetEnvironmentVariable(name) is { Length: > 0 } value)
+                {
+                    a.AddRange(["--setenv", name, value]);
+                }
+            }
+
+            foreach ((string key, string value) in environment)
+            {
+                a.AddRange(["--setenv", key, value]);
+            }
+
+            a.Add("--");
+            a.Add(command);
+            a.AddRange(args);
+            foreach (string arg in a)
+            {
+                start.ArgumentList.Add(arg);
+            }
+        }
+
+        var output = new StringBuilder();
+        var clock = Stopwatch.StartNew();
+        using var process = new Process { StartInfo = start };
+        process.OutputDataReceived += (_, e) => Append(output, e.Data);
+        process.ErrorDataReceived += (_, e) => Append(output, e.Data);
+        process.Start();
+        process.StandardInput.Close();
+        process.BeginOutputReadLine();
+        process.BeginErrorReadLine();
+        bool timedOut = false;
+        using (cancellation.Register(() => Kill(process)))
+        {
+            if (!process.WaitForExit(limit))
+            {
+                timedOut = true;
+                Kill(process);
+            }
+
+            process.WaitForExit(); // the readers drain
+        }
+
+        clock.Stop();
+        string text;
+        lock (output)
+        {
+            text = output.ToString();
+        }
+
+        var run = new ChildRun(timedOut || cancellation.IsCancellationRequested ? -1 : process.ExitCode, timedOut, text, clock.Elapsed);
+        if (log is not null)
+        {
+            File.AppendAllText(log, $"$ {command} {string.Join(' ', args)}\n{text}\n[{(timedOut ? $"stopped after the limit of {limit.TotalSeconds:0} s" : $"exit {run.ExitCode}")}, {clock.Elapsed.TotalSeconds:0.0} s]\n\n");
+        }
+
+        return run;
+    }
+
+    private static void Append(StringBuilder output, string? line)
+    {
+        if (line is null)
+        {
+            return;
+        }
+
+        lock (output)
+        {
+            if (output.Length < 4_000_000)
+            {
+                output.AppendLine(line);
+            }
+        }
+    }
+
+    private static void Kill(Process process)
+    {
+        try
+        {
+            process.Kill(entireProcessTree: true);
+        }
+        catch (InvalidOperationException)
+        {
+            // it has already exited
+        }
+    }
+
+    private static string? FindOnPath(string name)
+    {
+        foreach (string folder in (Environment.GetEnvironmentVariable("PATH") ?? "").Split(Path.PathSeparator, StringSplitOptions.RemoveEmptyEntries))
+        {
+            string candidate = Path.Combine(folder, name);
+            if (File.Exists(candidate))
+            {
+                return candidate;
+            }
+        }
+
+        return null;
+    }
+}

@@ -1,0 +1,66 @@
+using SixLabors.ImageSharp;
+using SixLabors.ImageSharp.PixelFormats;
+
+namespace MyLab;
+
+#if (en)
+/// <summary>
+/// 2.2 Image: an X×Y array of colours over an ImageSharp bitmap, <see cref="Bitmap"/>, which saves itself
+/// (<c>image.Bitmap.SaveAsJpeg("obrazkoncowy.jpg")</c>). An intensity I becomes an 8-bit level by the lab's rule
+/// i = int(256·I): cut, not rounded; 0 and below give 0 (black), 1 and above 255 (white) — int(256·1) = 256
+/// does not fit in a byte.
+/// </summary>
+#else
+/// <summary>
+/// 2.2 Obraz: tablica X×Y kolorów na bitmapie ImageSharp, <see cref="Bitmap"/>, która sama zapisuje się do pliku
+/// (<c>obraz.Bitmap.SaveAsJpeg("obrazkoncowy.jpg")</c>). Natężenie I zamienia się na 8-bitowy poziom regułą
+/// instrukcji i = int(256·I): obcięcie, nie zaokrąglenie; 0 i mniej daje 0 (czarny), 1 i więcej 255 (biały) —
+/// int(256·1) = 256 nie mieści się w bajcie.
+/// </summary>
+#endif
+public sealed class LabImage
+{
+    public LabImage(int width, int height)
+    {
+#if (solution)
+        ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
+        ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
+        Bitmap = new Image<Rgb24>(width, height);
+#else
+        throw ToWrite.Section("2.2", "LabImage(width, height)");
+#endif
+    }
+
+    /// <summary>X.</summary>
+    public int Width => Bitmap.Width;
+
+    /// <summary>Y.</summary>
+    public int Height => Bitmap.Height;
+
+    /// <summary>ImageSharp: <c>Bitmap.SaveAsJpeg(path)</c>, <c>Bitmap.SaveAsPng(path)</c>.</summary>
+    public Image<Rgb24> Bitmap { get; } = null!;
+
+#if (solution)
+    /// <summary>i = int(256·I), 0 … 255.</summary>
+    public static byte ToByte(double intensity)
+    {
+        double scaled = 256 * intensity;
+        if (!(scaled > 0))
+        {
+            return 0; // ujemne i NaN
+        }
+
+        return scaled >= 255 ? (byte)255 : (byte)(int)scaled; // int() obcina
+    }
+
+    /// <summary>Piksel (x, y), wiersz 0 na górze.</summary>
+    public void SetPixel(int x, int y, LightIntensity pixel) =>
+        Bitmap[x, y] = new Rgb24(ToByte(pixel.R), ToByte(pixel.G), ToByte(pixel.B));
+#else
+    /// <summary>i = int(256·I), 0 … 255.</summary>
+    public static byte ToByte(double intensity) => throw ToWrite.Section("2.2", "ToByte(I)");
+
+    /// <summary>(x, y), row 0 at the top.</summary>
+    public void SetPixel(int x, int y, LightIntensity pixel) => throw ToWrite.Section("2.2", "SetPixel(x, y, pixel)");
+#endif
+}

@@ -1,0 +1,106 @@
+using System.Diagnostics;
+using System.Globalization;
+using RayLab;
+using RayLab.Scenes;
+using SixLabors.ImageSharp;
+
+namespace MyLab;
+
+#if (en)
+/// <summary>
+/// Lab II, section 5: renders the two spheres with your orthographic and your perspective camera and your adaptive
+/// sampling into out/two-spheres-orthographic.png, out/two-spheres-perspective.png and out/obrazkoncowy.jpg.
+/// <c>dotnet run --project src/Lab -- check</c> only lists which parts are written.
+/// </summary>
+#else
+/// <summary>
+/// Laboratorium II, sekcja 5: renderuje dwie kule Twoją kamerą ortogonalną i perspektywiczną z Twoim próbkowaniem
+/// adaptacyjnym do out/two-spheres-orthographic.png, out/two-spheres-perspective.png i out/obrazkoncowy.jpg.
+/// <c>dotnet run --project src/Lab -- check</c> tylko wypisuje, które części są napisane.
+/// </summary>
+#endif
+internal static class Program
+{
+    private static int Main(string[] args)
+    {
+#if (en)
+        Console.WriteLine("Lab II: camera, sampling, image, intensity");
+#else
+        Console.WriteLine("Laboratorium II: kamera, próbkowanie, obraz, natężenie");
+#endif
+        int missing = Progress.Report(Console.Out);
+        if (missing > 0 || args.Contains("check"))
+        {
+#if (en)
+            Console.WriteLine(missing > 0
+                ? $"{missing} of {Sections.All.Length} parts still to write; the checks: dotnet test"
+                : "Every part is written; the checks: dotnet test; the pictures: dotnet run --project src/Lab");
+#else
+            Console.WriteLine(missing > 0
+                ? $"Do napisania zostało {missing} z {Sections.All.Length} części; sprawdzenie: dotnet test"
+                : "Wszystkie części są napisane; sprawdzenie: dotnet test; obrazy: dotnet run --project src/Lab");
+#endif
+            return missing > 0 ? 1 : 0;
+        }
+
+        try
+        {
+            Render();
+            return 0;
+        }
+        catch (SceneFileException e)
+        {
+            Console.Error.WriteLine(e.Message);
+            return 2;
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+#if (en)
+            Console.Error.WriteLine($"The render stopped: {e.GetType().Name}: {e.Message}");
+#else
+            Console.Error.WriteLine($"Renderowanie przerwane: {e.GetType().Name}: {e.Message}");
+#endif
+            return 1;
+        }
+    }
+
+    private static void Render()
+    {
+        SceneDescription file = TwoSpheres.Load();
+        Scene scene = file.Scene;
+        int nx = file.Width, ny = file.Height;
+        var adaptive = new LabAdaptiveSampler(maxDepth: 3, contrast: 0.05);
+        Directory.CreateDirectory("out");
+
+        // The first render of a run pays for the JIT: a small one first, timed apart and named.
+        var warmUp = Stopwatch.StartNew();
+        LabRenderer.Render(scene, TwoSpheres.Orthographic(), adaptive, new LabImage(80, 60));
+        LabRenderer.Render(scene, TwoSpheres.Perspective(), adaptive, new LabImage(80, 60));
+#if (en)
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"warm-up (80×60, both cameras, not counted) {warmUp.Elapsed.TotalMilliseconds:F1} ms"));
+#else
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"rozgrzewka (80×60, obie kamery, nie liczona) {warmUp.Elapsed.TotalMilliseconds:F1} ms"));
+#endif
+
+        foreach ((string name, LabCamera camera) in new (string, LabCamera)[] { ("orthographic", TwoSpheres.Orthographic()), ("perspective", TwoSpheres.Perspective()) })
+        {
+            var image = new LabImage(nx, ny);
+            var clock = Stopwatch.StartNew();
+            long rays = LabRenderer.Render(scene, camera, adaptive, image);
+            double ms = clock.Elapsed.TotalMilliseconds;
+            string path = Path.Combine("out", $"two-spheres-{name}.png");
+            image.Bitmap.SaveAsPng(path);
+            Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{name,-12} adaptive {rays,10:N0} rays ({(double)rays / (nx * ny),5:F2} per pixel) {ms,8:F1} ms   {path}"));
+            if (name == "perspective")
+            {
+                image.Bitmap.SaveAsJpeg(Path.Combine("out", "obrazkoncowy.jpg")); // 2.2: the lab's own file name
+            }
+        }
+
+#if (en)
+        Console.WriteLine("wrote out/obrazkoncowy.jpg");
+#else
+        Console.WriteLine("zapisano out/obrazkoncowy.jpg");
+#endif
+    }
+}

@@ -1,0 +1,87 @@
+using RayLab;
+
+namespace MyLab;
+
+#if (en)
+/// <summary>Which parts of the lab are written: tries each class on a tiny input and lists the sections that still throw NotImplementedException.</summary>
+#else
+/// <summary>Które części laboratorium są napisane: wywołuje każdą klasę na małym przykładzie i wypisuje sekcje, które wciąż rzucają NotImplementedException.</summary>
+#endif
+internal static class Progress
+{
+    /// <summary>Prints one line per section; returns how many are still to write.</summary>
+    public static int Report(TextWriter output)
+    {
+        var scene = new Scene([new Sphere(new Double3(0, 0, 0), 1, new Intensity(1, 0, 0))], new Intensity(0, 0, 1), Intensity.White);
+        var probes = new (string Id, Action Try)[]
+        {
+            ("2.1", () => { var a = new LightIntensity(0.5, -1, 0.25); _ = ((a + a - a) * 2 * 0.5 / 2).ToString(); }),
+            ("2.2", () => { _ = LabImage.ToByte(0.5); new LabImage(2, 1).SetPixel(1, 0, new LightIntensity(1)); }),
+            ("3", () => { _ = new LabPerspectiveCamera().Frame(); _ = LabCamera.Alpha(0, 0.5, 2) + LabCamera.Beta(0, 0.5, 2); }),
+            ("3.1", () => _ = new LabOrthoCamera().GetRay(0, 0, 4, 3)),
+            ("3.2", () => _ = new LabPerspectiveCamera().GetRay(0, 0, 4, 3)),
+            ("4.1.1", () => _ = new LabRegularSampler(4).GetSamples(new Random(1))),
+            ("4.1.2", () => _ = new LabRandomSampler(4).GetSamples(new Random(1))),
+            ("4.1.3", () => _ = new LabJitteredSampler(4).GetSamples(new Random(1))),
+            ("4.1.4", () => _ = new LabAdaptiveSampler().Pixel((x, y) => new LightIntensity(x, y, 0))),
+            ("5", () => _ = LabRenderer.Render(scene, new ProbeCamera(), new ProbeSampler(), new LabImage(4, 3))),
+        };
+
+        int missing = 0;
+        foreach ((string id, Action probe) in probes)
+        {
+            (string _, string title, string classes) = Sections.All.First(s => s.Id == id);
+            string? problem = null;
+            try
+            {
+                probe();
+            }
+            catch (NotImplementedException e)
+            {
+                problem = e.Message;
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                problem = $"{e.GetType().Name}: {e.Message}";
+            }
+
+            if (problem is null)
+            {
+#if (en)
+                output.WriteLine($"  done          {id,-6} {title} ({classes})");
+#else
+                output.WriteLine($"  gotowe        {id,-6} {title} ({classes})");
+#endif
+            }
+            else
+            {
+                missing++;
+                string own = ToWrite.Section(id, "").Message;
+                string detail = problem.StartsWith(own, StringComparison.Ordinal) ? problem[own.Length..] : problem;
+#if (en)
+                output.WriteLine($"  still to do   {id,-6} {title} ({classes}): {detail}");
+#else
+                output.WriteLine($"  do napisania  {id,-6} {title} ({classes}): {detail}");
+#endif
+            }
+        }
+
+        return missing;
+    }
+
+    // Section 5 on its own: a camera and a sampler that need none of the other sections.
+    private sealed class ProbeCamera : LabCamera
+    {
+        public override Window GetWindow(int nx, int ny) => new(-1, -1, 1, 1);
+
+        public override Ray GetRay(int x, int y, int nx, int ny, double sx = 0.5, double sy = 0.5) =>
+            new(new Double3(-1 + (2 * (x + sx) / nx), 1 - (2 * (y + sy) / ny), 5), new Double3(0, 0, -1));
+    }
+
+    private sealed class ProbeSampler : ILabSampler
+    {
+        public int SamplesPerPixel => 1;
+
+        public (double X, double Y)[] GetSamples(Random random) => [(0.5, 0.5)];
+    }
+}

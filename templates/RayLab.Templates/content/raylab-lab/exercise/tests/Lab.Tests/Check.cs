@@ -1,0 +1,113 @@
+using System.Diagnostics;
+using System.Globalization;
+using RayLab;
+using RayLab.Scenes;
+
+namespace MyLab.Tests;
+
+/// <summary>
+/// What every check shares: the language of its messages, a time limit that names the pixel a hanging method was
+/// working on, a NotImplementedException turned into "still to write", and the figures written where dotnet test
+/// shows them (the test's output, and the failure message).
+/// </summary>
+internal static class Check
+{
+#if (en)
+    public const bool English = true;
+#else
+    public const bool English = false;
+#endif
+
+    /// <summary>How long one check may take; a method that runs longer is taken as hanging.</summary>
+    public static readonly TimeSpan Limit = TimeSpan.FromSeconds(60);
+
+    public static string T(string pl, string en) => English ? en : pl;
+
+    public static string F(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
+
+    /// <summary>
+    /// Runs <paramref name="work"/> with the time limit; <paramref name="where"/> says where it was when the limit
+    /// passed (e.g. the pixel). Returns the elapsed time.
+    /// </summary>
+    public static TimeSpan Run(ITestOutputHelper output, Func<string> where, Action work)
+    {
+        var clock = Stopwatch.StartNew();
+        var task = Task.Factory.StartNew(work, CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+        bool finished;
+        try
+        {
+            finished = task.Wait(Limit, TestContext.Current.CancellationToken);
+        }
+        catch (AggregateException)
+        {
+            finished = true; // the exception is reported below
+        }
+
+        if (!finished)
+        {
+            Assert.Fail(T(
+                $"Przekroczony limit czasu {Limit.TotalSeconds:F0} s: metoda się nie skończyła (zapętlenie?). Ostatnio: {where()}.",
+                $"Time limit of {Limit.TotalSeconds:F0} s passed: the method did not finish (an endless loop?). Last: {where()}."));
+        }
+
+        if (task.Exception?.InnerException is { } e)
+        {
+            if (e is Xunit.Sdk.IAssertionException)
+            {
+                System.Runtime.ExceptionServices.ExceptionDispatchInfo.Throw(e); // a check's own failure, as it is
+            }
+
+            if (e is NotImplementedException)
+            {
+                // The skeletons' message already names the section and what is to write.
+                Assert.Fail(char.IsAsciiDigit(e.Message[0]) ? e.Message : T($"Jeszcze nie napisane: {e.Message}", $"Not written yet: {e.Message}"));
+            }
+
+            Assert.Fail(T($"Twój kod rzucił {e.GetType().Name}: {e.Message} ({where()})", $"Your code threw {e.GetType().Name}: {e.Message} ({where()})"));
+        }
+
+        output.WriteLine(F($"{T("czas", "time")}: {clock.Elapsed.TotalMilliseconds:F1} ms"));
+        return clock.Elapsed;
+    }
+
+    /// <summary>Runs <paramref name="work"/> with the time limit, with no position to report.</summary>
+    public static TimeSpan Run(ITestOutputHelper output, Action work) => Run(output, () => "—", work);
+
+    /// <summary>The two spheres as the checks pin them (their own copy of scenes/two-spheres.json).</summary>
+    public static SceneDescription TwoSpheresFile { get; } = SceneFile.Load(Path.Combine(AppContext.BaseDirectory, "two-spheres.json"));
+
+    /// <summary>The lab's perspective camera (3.2), pinned: e = (0, 0.5, 6), target 0, Fov 40.</summary>
+    public static LabPerspectiveCamera Perspective() => new()
+    {
+        Position = new Double3(0, 0.5, 6), Target = new Double3(0, 0, 0), Up = new Double3(0, 1, 0), Fov = 40, NearPlane = 0.1, FarPlane = 100,
+    };
+
+    /// <summary>The lab's orthographic camera (3.1), pinned: the same eye, a window 4.2 high.</summary>
+    public static LabOrthoCamera Orthographic() => new()
+    {
+        Position = new Double3(0, 0.5, 6), Target = new Double3(0, 0, 0), Up = new Double3(0, 1, 0), ViewHeight = 4.2, NearPlane = 0.1, FarPlane = 100,
+    };
+
+    /// <summary>RayLab's camera with the same settings as yours: the oracle.</summary>
+    public static Camera Oracle(LabCamera camera) => camera switch
+    {
+        LabOrthoCamera o => new OrthoCamera
+        {
+            Position = o.Position, Target = o.Target, Up = o.Up, NearPlane = o.NearPlane, FarPlane = o.FarPlane, Fov = o.Fov, ViewHeight = o.ViewHeight, Window = o.Window,
+        },
+        LabPerspectiveCamera p => new PerspectiveCamera
+        {
+            Position = p.Position, Target = p.Target, Up = p.Up, NearPlane = p.NearPlane, FarPlane = p.FarPlane, Fov = p.Fov, Distance = p.S, Window = p.Window,
+        },
+        _ => throw new ArgumentException($"No RayLab camera for {camera.GetType().Name}.", nameof(camera)),
+    };
+
+    /// <summary>A vector with 6 decimals, for messages.</summary>
+    public static string V(Double3 v) => F($"({v.X:F6}, {v.Y:F6}, {v.Z:F6})");
+
+    /// <summary>An intensity with 6 decimals, for messages.</summary>
+    public static string I(LightIntensity i) => F($"({i.R:F6}, {i.G:F6}, {i.B:F6})");
+
+    /// <summary>An intensity with 6 decimals, for messages.</summary>
+    public static string I(Intensity i) => F($"({i.R:F6}, {i.G:F6}, {i.B:F6})");
+}

@@ -1,0 +1,88 @@
+namespace RayLab.Cli.Tests;
+
+/// <summary>
+/// <c>raylab grade</c>'s input checks (one line naming the option and what is wrong, exit 1, no report) and its
+/// reading of sections from check names. Grading real labs in bubblewrap is ClassKitTests' (tests/RayLab.Templates.Tests).
+/// </summary>
+public sealed class GradeCliTests : IDisposable
+{
+    private readonly TempDirectory _dir = new();
+
+    public void Dispose() => _dir.Dispose();
+
+    [Theory]
+    [InlineData("3.2 Kamera perspektywiczna: promień przez środek piksela", "3.2")]
+    [InlineData("4.1.4 Adaptacyjne: podział, gdy kontrast > 0,05", "4.1.4")]
+    [InlineData("5 Zadanie: dwie kule", "5")]
+    [InlineData("own Moja metoda: RMSE ≤ 2,5", "own")]
+    [InlineData("MyLab.Tests.CameraTests.ACameraLookingDownMinusZHasTheWorldAxesAsItsFrame", "CameraTests")]
+    [InlineData("Lab_1.Tests.MyMethodTests.MyMethodIsCloseToTheExactImageAtAStatedCost(cameraName: \"perspective\")", "MyMethodTests")]
+    [InlineData("ownership is not a section", "ownership is not a section")]
+    public void ASectionIsTheDisplayNamesSectionNumberOrElseTheChecksClass(string display, string section) =>
+        Assert.Equal(section, GradeJob.SectionOf(display));
+
+    [Fact]
+    public void MissingSubmissionsNameTheArgument()
+    {
+        string checks = Checks();
+        (int code, string stdout, string stderr) = ConsoleRunner.Run("grade", _dir.File("nowhere"), "--checks", checks, "--out", _dir.File("report"));
+        Assert.Equal(1, code);
+        Assert.Equal("", stdout);
+        Assert.Equal($"raylab: error: submissions: no such folder '{_dir.File("nowhere")}'", stderr.TrimEnd());
+        Assert.False(Directory.Exists(_dir.File("report")));
+    }
+
+    [Fact]
+    public void ChecksWithoutTheirTestsNameWhatIsMissing()
+    {
+        string checks = Checks();
+        Directory.Delete(Path.Combine(checks, "tests"), recursive: true);
+        Directory.CreateDirectory(_dir.File("subs/anna"));
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", _dir.File("report"));
+        Assert.Equal(1, code);
+        Assert.Equal($"raylab: error: --checks: {checks} has no tests/Lab.Tests; give a kit's checks/exercise or checks/method", stderr.TrimEnd());
+        Assert.False(Directory.Exists(_dir.File("report")));
+    }
+
+    [Fact]
+    public void AKitWithoutAFeedSaysWhereItLooked()
+    {
+        string checks = Checks();
+        Directory.CreateDirectory(_dir.File("subs/anna"));
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", _dir.File("report"));
+        Assert.Equal(1, code);
+        Assert.Equal($"raylab: error: --feed: no packages in {_dir.File("kit/feed")} (the kit's feed/ beside checks/); give the feed with --feed", stderr.TrimEnd());
+    }
+
+    [Fact]
+    public void AReportInsideTheSubmissionsIsRefused()
+    {
+        string checks = Checks();
+        File.WriteAllText(_dir.File("kit/feed/x.1.0.0.nupkg"), "");
+        Directory.CreateDirectory(_dir.File("subs/anna"));
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", _dir.File("subs/report"));
+        Assert.Equal(1, code);
+        Assert.Equal($"raylab: error: --out: '{_dir.File("subs/report")}' is inside the submissions folder; write the report elsewhere", stderr.TrimEnd());
+    }
+
+    [Fact]
+    public void AZeroLimitIsRefused()
+    {
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.Path, "--checks", _dir.Path, "--out", _dir.File("r"), "--check-timeout", "0");
+        Assert.Equal(1, code);
+        Assert.Equal("raylab: error: --check-timeout: expected a number of seconds ≥ 1, got 0", stderr.TrimEnd());
+    }
+
+    /// <summary>A kit's checks folder with what the grader looks for first (the lab's folders and scene), and an empty feed beside it.</summary>
+    private string Checks()
+    {
+        string checks = _dir.File("kit/checks/method");
+        Directory.CreateDirectory(Path.Combine(checks, "tests", "Lab.Tests"));
+        Directory.CreateDirectory(Path.Combine(checks, "src", "Lab"));
+        Directory.CreateDirectory(Path.Combine(checks, "scenes"));
+        Directory.CreateDirectory(_dir.File("kit/feed"));
+        File.WriteAllText(Path.Combine(checks, "Directory.Build.props"), "<Project />");
+        File.Copy(Path.Combine(AppContext.BaseDirectory, "scenes", "two-spheres.json"), Path.Combine(checks, "scenes", "two-spheres.json"));
+        return checks;
+    }
+}

@@ -1,0 +1,253 @@
+using System.Text.Json;
+using RayLab.Cli;
+
+namespace RayLab.Templates.Tests;
+
+/// <summary>
+/// Once for the test class: <c>tools/class-kit.sh --feed-only</c> makes a kit (the feed with every package a lab
+/// restores, and the pinned checks), which is then moved to another path (the folder it was made in is deleted); the
+/// template is installed from the moved kit's feed in a temporary DOTNET_CLI_HOME, with an empty NUGET_PACKAGES and a
+/// nuget.config above the work folders that clears every package source.
+/// </summary>
+public sealed class ClassKit : IAsyncLifetime
+{
+    private static readonly TimeSpan ChildTimeout = TimeSpan.FromMinutes(10);
+
+    /// <summary>The temporary folder everything happens in.</summary>
+    public string Root { get; } = Directory.CreateTempSubdirectory("raylab-kit-").FullName;
+
+    /// <summary>The kit, at the path it was moved to.</summary>
+    public string Kit => Path.Combine(Root, "elsewhere", "kit");
+
+    /// <summary>Where the kit was made (deleted once it is moved).</summary>
+    public string MadeAt => Path.Combine(Root, "made", "kit");
+
+    /// <summary>The folder the labs are made in: its nuget.config clears every source.</summary>
+    public string Work => Path.Combine(Root, "pc");
+
+    /// <summary>The children's NUGET_PACKAGES, empty at the start.</summary>
+    public string Packages => Path.Combine(Root, "nuget-packages");
+
+    /// <summary>The version the kit's packages carry.</summary>
+    public string Version { get; private set; } = "";
+
+    public async ValueTask InitializeAsync()
+    {
+        await ChildProcess.RunCheckedAsync(RepoPaths.Root(), new Dictionary<string, string?>(), ChildTimeout,
+            "bash", Path.Combine(RepoPaths.Root(), "tools", "class-kit.sh"), MadeAt, "--feed-only");
+        Directory.CreateDirectory(Path.GetDirectoryName(Kit)!);
+        Directory.Move(MadeAt, Kit);
+        string template = Assert.Single(Directory.GetFiles(Path.Combine(Kit, "feed"), "RayLab.Templates.*.nupkg"));
+        Version = Path.GetFileNameWithoutExtension(template)["RayLab.Templates.".Length..];
+        Directory.CreateDirectory(Work);
+        Directory.CreateDirectory(Path.Combine(Root, "dotnet-home"));
+        File.WriteAllText(Path.Combine(Work, "nuget.config"), """
+            <?xml version="1.0" encoding="utf-8"?>
+            <configuration>
+              <packageSources>
+                <clear />
+              </packageSources>
+            </configuration>
+            """);
+        await RunAsync(Work, "dotnet", "new", "install", $"RayLab.Templates::{Version}", "--add-source", Path.Combine(Kit, "feed"));
+    }
+
+    public ValueTask DisposeAsync()
+    {
+        try
+        {
+            Directory.Delete(Root, recursive: true);
+        }
+        catch (IOException)
+        {
+            // a child killed on timeout may still hold a file
+        }
+
+        return ValueTask.CompletedTask;
+    }
+
+    /// <summary>Runs a child in the kit's environment; fails with its command line and output unless it exits 0.</summary>
+    /// <returns>What it wrote to stdout.</returns>
+    public Task<string> RunAsync(string workingDirectory, string fileName, params string[] args) =>
+        ChildProcess.RunCheckedAsync(workingDirectory, Environment(), ChildTimeout, fileName, args);
+
+    /// <summary>A method lab from the installed template, made with the moved kit's feed as its only source.</summary>
+    /// <returns>The lab's folder.</returns>
+    public async Task<string> NewLabAsync(string folder, string name, bool restore)
+    {
+        string lab = Path.Combine(folder, name);
+        // The method lab: these submissions change MyMethod.cs (the exercise lab is the template's default).
+        List<string> args = ["new", "raylab-lab", "-o", lab, "--kind", "method", "--feed", Path.Combine(Kit, "feed"), "--offline"];
+        if (!restore)
+        {
+            args.Add("--skipRestore");
+        }
+
+        await RunAsync(folder, "dotnet", [.. args]);
+        return lab;
+    }
+
+    private Dictionary<string, string?> Environment() => new()
+    {
+        ["DOTNET_CLI_HOME"] = Path.Combine(Root, "dotnet-home"),
+        ["NUGET_PACKAGES"] = Packages,
+        ["DOTNET_GENERATE_ASPNET_CERTIFICATE"] = "false",
+    };
+}
+
+/// <summary>
+/// The class kit and <c>raylab grade</c>, end to end: a lab made from a kit that was moved after it was made restores,
+/// builds and passes its tests with the kit's feed as its only source; and a class of five labs (a better method, one
+/// that breaks the method's section and edits its own test thresholds, the template as created, one that does not
+/// compile, one whose method never returns) graded in bubblewrap against the kit's pinned checks gets one right row each,
+/// within the limits given.
+/// </summary>
+[Trait("Category", "Templates")]
+public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
+{
+    private const int SubmissionLimitSeconds = 100;
+
+    /// <summary>How long stopping a child and its process tree may take beyond a limit.</summary>
+    private const int StopSlackSeconds = 30;
+
+    private const string OnePoint = "private static readonly SamplePoint[] Points = [new(0.5, 0.5)];";
+
+    [Fact]
+    public async Task ALabFromTheMovedKitRestoresBuildsAndPassesItsTestsWithTheKitsFeedAsItsOnlySource()
+    {
+        Assert.False(Directory.Exists(kit.MadeAt), "the kit is still where it was made");
+        string lab = await kit.NewLabAsync(kit.Work, "Jan_Kowalski", restore: true);
+        string config = File.ReadAllText(Path.Combine(lab, "nuget.config"));
+        Assert.Contains("<clear />", config, StringComparison.Ordinal);
+        Assert.Contains(Path.Combine(kit.Kit, "feed"), config, StringComparison.Ordinal);
+
+        await kit.RunAsync(lab, "dotnet", "build");
+        string output = await kit.RunAsync(lab, "dotnet", "test", "--no-build");
+        Assert.Matches(@"Failed: +0, Passed: +\d+", output);
+        // Everything the lab restored came from the kit: xUnit and the test SDK too.
+        string[] feed = [.. Directory.GetFiles(Path.Combine(kit.Kit, "feed"), "*.nupkg").Select(f => Path.GetFileName(f).ToLowerInvariant())];
+        foreach (string package in new[] { "xunit.v3.mtp-off", "microsoft.net.test.sdk", "raylab" })
+        {
+            Assert.True(Directory.Exists(Path.Combine(kit.Packages, package)), $"{package} was not restored");
+        }
+
+        foreach (string id in Directory.GetDirectories(kit.Packages))
+        {
+            foreach (string version in Directory.GetDirectories(id))
+            {
+                string nupkg = $"{Path.GetFileName(id)}.{Path.GetFileName(version)}.nupkg";
+                Assert.Contains(nupkg, feed);
+            }
+        }
+    }
+
+    [Fact]
+    public async Task GradingAClassGivesEachLabItsRowWithinTheLimits()
+    {
+        string submissions = Directory.CreateDirectory(Path.Combine(kit.Root, "submissions")).FullName;
+        // A better method: 16 points on a 4×4 grid (16 rays per pixel, the checks' limit), and a test file of its own
+        // that always fails, which the grader replaces.
+        string correct = await kit.NewLabAsync(submissions, "correct", restore: false);
+        Edit(correct, "src/Lab/MyMethod.cs", OnePoint, Grid(4));
+        File.WriteAllText(Path.Combine(correct, "tests", "Lab.Tests", "MyOwnCheck.cs"),
+            "namespace correct.Tests;\npublic class MyOwnCheck\n{\n    [Fact]\n    public void Fails() => Assert.Fail(\"the student's own failing test\");\n}\n");
+        // Sabotaged: 25 points, more rays than the checks allow; its own copy of the checks allows 100, so its own
+        // dotnet test would pass.
+        string sabotaged = await kit.NewLabAsync(submissions, "sabotaged", restore: false);
+        Edit(sabotaged, "src/Lab/MyMethod.cs", OnePoint, Grid(5));
+        Edit(sabotaged, "tests/Lab.Tests/MyMethodTests.cs", "MaxRaysPerPixel = 16;", "MaxRaysPerPixel = 100;");
+        // The template as created: one ray through each pixel's centre.
+        await kit.NewLabAsync(submissions, "template", restore: false);
+        string broken = await kit.NewLabAsync(submissions, "broken", restore: false);
+        Edit(broken, "src/Lab/MyMethod.cs", "return sum / Points.Length;", "return sum / Points.Length");
+        string hangs = await kit.NewLabAsync(submissions, "hangs", restore: false);
+        Edit(hangs, "src/Lab/MyMethod.cs", "Intensity sum = Intensity.Black;", "while (pixel.X >= 0) { Thread.SpinWait(1); }\n        Intensity sum = Intensity.Black;");
+
+        string report = Path.Combine(kit.Root, "report");
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        int exit = Program.Run(
+            ["grade", submissions, "--checks", Path.Combine(kit.Kit, "checks", "method"), "--out", report,
+             "--check-timeout", "10", "--run-timeout", "40", "--submission-timeout", SubmissionLimitSeconds.ToString(System.Globalization.CultureInfo.InvariantCulture)],
+            stdout, stderr, TestContext.Current.CancellationToken);
+        Assert.True(exit == 0, $"raylab grade exited {exit}:\n{stdout}\n{stderr}");
+
+        using JsonDocument grades = JsonDocument.Parse(File.ReadAllText(Path.Combine(report, "grades.json")));
+        Assert.True(grades.RootElement.GetProperty("sandboxed").GetBoolean());
+        Dictionary<string, JsonElement> rows = grades.RootElement.GetProperty("students").EnumerateArray().ToDictionary(r => r.GetProperty("name").GetString()!);
+        Assert.Equal(["broken", "correct", "hangs", "sabotaged", "template"], rows.Keys.Order(StringComparer.Ordinal));
+        string method = MethodSection(rows["template"]);
+        string[] sections = [.. grades.RootElement.GetProperty("sections").EnumerateArray().Select(s => s.GetString()!)];
+        Assert.True(sections.Length >= 4, $"sections: {string.Join(", ", sections)}");
+        foreach (JsonElement row in rows.Values)
+        {
+            Assert.InRange(row.GetProperty("seconds").GetDouble(), 0, SubmissionLimitSeconds + StopSlackSeconds);
+        }
+
+        // The better method and the template pass every section (the student's own failing test is not run); the
+        // better method's pictures are closer to the exact image.
+        foreach (string name in new[] { "correct", "template" })
+        {
+            Assert.Equal("ok", rows[name].GetProperty("status").GetString());
+            Assert.All(sections, s => Assert.Equal("pass", Section(rows[name], s)));
+            Assert.DoesNotContain(Checks(rows[name]), c => c.Contains("MyOwnCheck", StringComparison.Ordinal));
+        }
+
+        Assert.True(Rmse(rows["correct"]) < Rmse(rows["template"]) / 4, $"RMSE {Rmse(rows["correct"])} against the template's {Rmse(rows["template"])}");
+        Assert.Equal(16, rows["correct"].GetProperty("timing").GetProperty("perspective").GetProperty("raysPerPixel").GetDouble(), 3);
+
+        // Sabotaged: the method's section fails under the instructor's threshold, whatever the student's copy says; the others pass.
+        Assert.Equal("ok", rows["sabotaged"].GetProperty("status").GetString());
+        Assert.Equal("fail", Section(rows["sabotaged"], method));
+        Assert.All(sections.Where(s => s != method), s => Assert.Equal("pass", Section(rows["sabotaged"], s)));
+
+        // Does not compile: the row says so, with the compiler's error, and no check ran.
+        Assert.Equal("does not build", rows["broken"].GetProperty("status").GetString());
+        Assert.Contains("CS1002", rows["broken"].GetProperty("detail").GetString(), StringComparison.Ordinal);
+        Assert.Empty(Checks(rows["broken"]));
+
+        // Never returns: the checks that render with the method time out, the others pass, the program is stopped.
+        string hangsStatus = rows["hangs"].GetProperty("status").GetString()!;
+        Assert.Contains("time limit", hangsStatus, StringComparison.Ordinal);
+        Assert.Equal("timeout", Section(rows["hangs"], method));
+
+        // The page shows each student's pictures and error maps beside the exact ones.
+        string html = File.ReadAllText(Path.Combine(report, "index.html"));
+        foreach (string file in new[] { "exact/perspective.png", "students/correct/perspective.png", "students/correct/perspective-flip.png" })
+        {
+            Assert.Contains($"src=\"{file}\"", html, StringComparison.Ordinal);
+            Assert.True(File.Exists(Path.Combine(report, file)), $"{file} is missing");
+        }
+
+        string[] csv = File.ReadAllLines(Path.Combine(report, "grades.csv"));
+        Assert.Equal(6, csv.Length);
+        Assert.StartsWith("broken,does not build,", csv[1], StringComparison.Ordinal);
+    }
+
+    private static string Grid(int n) =>
+        $"private static readonly SamplePoint[] Points = [.. Enumerable.Range(0, {n * n}).Select(i => new SamplePoint(((i % {n}) + 0.5) / {n}, ((i / {n}) + 0.5) / {n}))];";
+
+    private static void Edit(string lab, string file, string find, string replace)
+    {
+        string path = Path.Combine(lab, file);
+        string text = File.ReadAllText(path);
+        Assert.Contains(find, text, StringComparison.Ordinal);
+        File.WriteAllText(path, text.Replace(find, replace, StringComparison.Ordinal));
+    }
+
+    /// <summary>The section of the checks that measure the student's method against the exact image.</summary>
+    private static string MethodSection(JsonElement row) =>
+        row.GetProperty("checks").EnumerateArray()
+            .First(c => c.GetProperty("name").GetString()!.Contains("MyMethodIsCloseToTheExactImage", StringComparison.Ordinal))
+            .GetProperty("section").GetString()!;
+
+    private static string? Section(JsonElement row, string section) =>
+        row.GetProperty("sections").GetProperty(section).GetString();
+
+    private static string[] Checks(JsonElement row, string? section = null) =>
+        [.. row.GetProperty("checks").EnumerateArray()
+            .Where(c => section is null || c.GetProperty("section").GetString() == section)
+            .Select(c => c.GetProperty("name").GetString()!)];
+
+    private static double Rmse(JsonElement row) => row.GetProperty("pictures").GetProperty("perspective").GetProperty("rmse").GetDouble();
+}

@@ -1,0 +1,198 @@
+using System.Diagnostics;
+using System.Text.RegularExpressions;
+using SkiaSharp;
+
+namespace RayLab.Templates.Tests;
+
+/// <summary>
+/// The exercise lab (<c>dotnet new raylab-lab</c>, <c>--kind exercise</c> by default): the skeletons build, every section's
+/// checks fail in the lab's words and <c>dotnet run</c> names the classes still to write, in each language; the
+/// reference solution (<c>--solution</c>) passes every check and writes the pictures; and five sabotages of the
+/// solution each fail their own section. One restored solution lab serves all the sabotages
+/// (edit, <c>dotnet test --no-restore</c>, put the file back).
+/// </summary>
+public sealed partial class LabTemplateTests
+{
+    /// <summary>The sections every check's display name starts with.</summary>
+    private static readonly string[] Sections = ["2.1", "2.2", "3", "3.1", "3.2", "4.1.1", "4.1.2", "4.1.3", "4.1.4", "5"];
+
+    /// <summary>The words each language's lab uses: a few display names, the skeletons' message, the progress line.</summary>
+    private static readonly (string Lang, string[] Names, string ToWrite, string ToDo, string Readme)[] Languages =
+    [
+        ("pl", ["2.1 Natężenie:", "2.2 Obraz:", "3.1 Kamera ortogonalna:", "3.2 Kamera perspektywiczna:", "4.1.4 Próbkowanie adaptacyjne:", "5 Zadanie:"], "jeszcze do napisania", "do napisania", "Zadanie (sekcja 5 instrukcji)"),
+        ("en", ["2.1 Intensity:", "2.2 Image:", "3.1 Orthographic camera:", "3.2 Perspective camera:", "4.1.4 Adaptive sampling:", "5 Task:"], "still to write", "still to do", "The lab's task (section 5)"),
+    ];
+
+    /// <summary>
+    /// The five sabotages: the section that must fail, the file, the line of the solution and what replaces it.
+    /// </summary>
+    private static readonly (string Section, string File, string Line, string Sabotage)[] Sabotages =
+    [
+        ("3.2", "src/Lab/LabPerspectiveCamera.cs", "c = (u0 * u) + (v0 * v) - (S * w)", "c = (u0 * u) + (v0 * v) + (S * w)"),     // w with the wrong sign
+        ("2.2", "src/Lab/LabImage.cs", "(byte)(int)scaled", "(byte)Math.Round(scaled)"),                                           // rounded, not cut
+        ("3", "src/Lab/LabCamera.cs", "=> (x + sx) / nx;", "=> (double)x / nx;"),                                                  // the centre at x/nx
+        ("4.1.3", "src/Lab/LabJitteredSampler.cs", "((i + random.NextDouble()) / K", "(((i & ~1) + random.NextDouble()) / K"),     // two samples in one stratum
+        ("4.1.4", "src/Lab/LabAdaptiveSampler.cs", ": (tl + centre) / 2;", ": ((3 * tl) + centre) / 4;"),                          // the weights changed
+    ];
+
+    [Fact]
+    public async Task TheExerciseLabInEachLanguageBuildsItsChecksFailSectionBySectionAndRunNamesTheClassesToWrite()
+    {
+        // One folder for both languages (the second made over the first with --force): one restore, as the files differ
+        // only in their text.
+        string lab = Path.Combine(TrappedFolder("exercise"), "Lab2");
+        foreach ((string lang, string[] names, string toWrite, string toDo, string readme) in Languages)
+        {
+            await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "-o", lab, "--lang", lang, "--feed", feed.Feed, "--force", "--skipRestore");
+            AssertNoTemplateLeftovers(lab);
+            Assert.Contains(readme, File.ReadAllText(Path.Combine(lab, "README.md")), StringComparison.Ordinal);
+
+            await feed.RunAsync(lab, "dotnet", "build");
+
+            // dotnet run: every section listed as still to write, by class; no stack trace; a non-zero exit.
+            (int runExit, string run) = await feed.RunUncheckedAsync(lab, "dotnet", "run", "--no-build", "--project", Path.Combine("src", "Lab"));
+            Assert.True(runExit == 1, $"dotnet run with the skeletons ({lang}) exited {runExit}:\n{run}");
+            foreach (string section in Sections)
+            {
+                Assert.Matches($@"(?m)^\s+{toDo}\s+{Regex.Escape(section)}\s", run);
+            }
+
+            foreach (string type in new[] { "LightIntensity", "LabImage", "LabCamera", "LabOrthoCamera", "LabPerspectiveCamera", "LabJitteredSampler", "LabAdaptiveSampler", "LabRenderer" })
+            {
+                Assert.Contains(type, run, StringComparison.Ordinal);
+            }
+
+            Assert.DoesNotMatch(@"(?m)^\s+at \S+\(", run);
+
+            // dotnet test: it builds, and every section's checks fail, named as the lab names them, in the lab's words.
+            (int testExit, string test) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-build");
+            Assert.NotEqual(0, testExit);
+            (int passed, int failed) = DetailedCounts(test);
+            Assert.True(passed == 0 && failed >= 30, $"the skeletons ({lang}): {passed} passed, {failed} failed:\n{test}");
+            Assert.Equal(Sections.Order(), FailedSections(test).Order());
+            foreach (string name in names)
+            {
+                Assert.Contains("Failed " + name, test, StringComparison.Ordinal);
+            }
+
+            Assert.Contains(toWrite, test, StringComparison.Ordinal);
+        }
+    }
+
+    [Fact]
+    public async Task TheSolutionPassesEveryCheckRendersThePicturesAndEachSabotageFailsItsOwnSection()
+    {
+        string lab = Path.Combine(TrappedFolder("solution"), "Lab2");
+        await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "-o", lab, "--solution", "--feed", feed.Feed);
+        AssertNoTemplateLeftovers(lab);
+
+        // Every check passes.
+        (int testExit, string test) = await feed.RunUncheckedAsync(lab, "dotnet", "test");
+        Assert.True(testExit == 0, $"dotnet test failed in the solution lab:\n{test}");
+        (int passed, int failed) = DetailedCounts(test);
+        Assert.True(failed == 0 && passed >= 35, $"the solution: {passed} passed, {failed} failed:\n{test}");
+        Assert.Equal(Sections.Order(), PassedSections(test).Order());
+        Assert.Matches(@"RMSE [\d.,]+ poziomu, max \d+, FLIP [\d.,]+", test); // the figures are in dotnet test's output
+
+        // dotnet run: both pictures and obrazkoncowy.jpg, one line per render.
+        string output = await feed.RunAsync(lab, "dotnet", "run", "--no-build", "--project", Path.Combine("src", "Lab"));
+        foreach (string camera in new[] { "orthographic", "perspective" })
+        {
+            Assert.Matches($@"(?m)^{camera} +adaptive +[\d,]+ rays \( *[\d.]+ per pixel\) +[\d.]+ ms", output);
+            AssertPicture(Path.Combine(lab, "out", $"two-spheres-{camera}.png"), SKEncodedImageFormat.Png);
+        }
+
+        Assert.Matches(@"(?m)^rozgrzewka .* ms", output);
+        double difference = MeanDifference(AssertPicture(Path.Combine(lab, "out", "obrazkoncowy.jpg"), SKEncodedImageFormat.Jpeg),
+            AssertPicture(Path.Combine(lab, "out", "two-spheres-perspective.png"), SKEncodedImageFormat.Png));
+        Assert.True(difference < 2, $"obrazkoncowy.jpg differs from the perspective picture by {difference:F2} levels on average");
+
+        // The sabotages, one at a time in the same lab.
+        var clock = Stopwatch.StartNew();
+        foreach ((string section, string file, string line, string sabotage) in Sabotages)
+        {
+            string path = Path.Combine(lab, file);
+            string source = File.ReadAllText(path);
+            Assert.Contains(line, source, StringComparison.Ordinal);
+            File.WriteAllText(path, source.Replace(line, sabotage, StringComparison.Ordinal));
+            // The sabotaged section's checks and 2.1's (which must still pass), by their Section trait.
+            (int exit, string result) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-restore", "--filter", $"Section={section}|Section=2.1");
+            File.WriteAllText(path, source);
+
+            Assert.True(exit != 0, $"the sabotage of {section} ({sabotage}) passed every check:\n{result}");
+            string[] failing = FailedSections(result);
+            Assert.True(failing.Contains(section), $"the sabotage of {section} ({sabotage}) failed sections {string.Join(", ", failing)}, not {section}:\n{result}");
+            Assert.DoesNotContain("2.1", failing); // the intensity is not sabotaged: its checks still pass
+            Assert.Contains("2.1", PassedSections(result));
+        }
+
+        TestContext.Current.TestOutputHelper?.WriteLine($"five sabotages: {clock.Elapsed.TotalSeconds:F0} s");
+    }
+
+    /// <summary>
+    /// The passed and failed counts of dotnet test's summary at the exercise lab's detailed verbosity ("Total tests: 37",
+    /// "Passed: 37", "Failed: 0" on lines of their own).
+    /// </summary>
+    private static (int Passed, int Failed) DetailedCounts(string output)
+    {
+        Assert.True(DetailedTotal().IsMatch(output), $"dotnet test printed no summary (did the lab build?):\n{output}");
+        Match passed = DetailedPassed().Match(output), failed = DetailedFailed().Match(output);
+        return (passed.Success ? int.Parse(passed.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture) : 0,
+            failed.Success ? int.Parse(failed.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture) : 0);
+    }
+
+    [GeneratedRegex(@"(?m)^\s*Total tests: +\d+")]
+    private static partial Regex DetailedTotal();
+
+    [GeneratedRegex(@"(?m)^\s+Passed: +(\d+)\s*$")]
+    private static partial Regex DetailedPassed();
+
+    [GeneratedRegex(@"(?m)^\s+Failed: +(\d+)\s*$")]
+    private static partial Regex DetailedFailed();
+
+    /// <summary>The sections with a failed check in dotnet test's output.</summary>
+    private static string[] FailedSections(string output) =>
+        [.. SectionLine().Matches(output).Where(m => m.Groups["result"].Value == "Failed").Select(m => m.Groups["section"].Value).Distinct()];
+
+    /// <summary>The sections with a passed check in dotnet test's output.</summary>
+    private static string[] PassedSections(string output) =>
+        [.. SectionLine().Matches(output).Where(m => m.Groups["result"].Value == "Passed").Select(m => m.Groups["section"].Value).Distinct()];
+
+    [GeneratedRegex(@"(?m)^\s+(?<result>Passed|Failed) (?<section>\d+(\.\d+)*) ")]
+    private static partial Regex SectionLine();
+
+    /// <summary>A new folder under the feed's root whose Directory.Build.props and Directory.Packages.props break any project that inherits them.</summary>
+    private string TrappedFolder(string name)
+    {
+        string work = Directory.CreateDirectory(Path.Combine(feed.Root, "work-" + name)).FullName;
+        File.WriteAllText(Path.Combine(work, "Directory.Build.props"), """
+            <Project>
+              <Target Name="NotTheLabs" BeforeTargets="Restore;CollectPackageReferences;Build">
+                <Error Text="The lab inherited a Directory.Build.props from a folder above it." />
+              </Target>
+            </Project>
+            """);
+        File.WriteAllText(Path.Combine(work, "Directory.Packages.props"), """
+            <Project>
+              <PropertyGroup><ManagePackageVersionsCentrally>true</ManagePackageVersionsCentrally></PropertyGroup>
+            </Project>
+            """);
+        return work;
+    }
+
+    /// <summary>No template symbol, conditional or unstamped version is left in the lab's files.</summary>
+    private void AssertNoTemplateLeftovers(string lab)
+    {
+        Assert.Contains($"<RayLabVersion>{feed.Version}</RayLabVersion>", File.ReadAllText(Path.Combine(lab, "Directory.Build.props")), StringComparison.Ordinal);
+        Assert.True(File.Exists(Path.Combine(lab, "tests", "Lab.Tests", "two-spheres.json")), "the checks' own scene is missing");
+        Assert.False(Directory.Exists(Path.Combine(lab, "exercise")), "the template's exercise folder was copied as it is");
+        foreach (string file in Directory.GetFiles(lab, "*", SearchOption.AllDirectories).Where(f => !IsBuildOutput(lab, f)))
+        {
+            string text = File.ReadAllText(file);
+            Assert.DoesNotContain("0.0.0-raylab-version", text, StringComparison.Ordinal);
+            Assert.DoesNotContain("RAYLAB_", text, StringComparison.Ordinal);
+            Assert.DoesNotContain("#if (", text, StringComparison.Ordinal);
+            Assert.DoesNotContain("MyMethod", text, StringComparison.Ordinal);
+        }
+    }
+}

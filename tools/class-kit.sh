@@ -1,0 +1,114 @@
+#!/usr/bin/env bash
+# The class kit: one folder that hands out the lab with no network and grades it (docs/teaching.md).
+#   DIR/feed/              every package a new lab restores: RayLab, RayLab.Reports, RayLab.ImageSharp (when the
+#                          repository has it), RayLab.Templates, the RayLab.Tool packages, and xUnit, the test SDK,
+#                          SixLabors.ImageSharp, … with their dependencies, copied from a fresh NuGet cache after
+#                          restoring a lab of every kind
+#   DIR/checks/KIND/       the instructor's pinned checks: a lab of that kind as the template makes it (the exercise
+#                          lab with its reference solution); `raylab grade` replaces each submission's tests/Lab.Tests
+#                          and root build files with these
+#   DIR/raylab-linux-x64/  the native raylab (tools/publish-native.sh), which also grades
+#   DIR/playground/        the published playground site (samples/RayLab.Web), for any static host
+#   DIR/README.md          the instructor's page, Polish and English (docs/teaching.md is the long form)
+# Usage: tools/class-kit.sh DIR [--feed-only]
+#   --feed-only  the feed (without the tool packages) and the checks alone: what a lab needs (the CI test uses it)
+# Needs the .NET SDK and network access to a NuGet source for xUnit & co. (the machine's own sources), and for the
+# native build a C toolchain (clang or gcc).
+set -euo pipefail
+if [ $# -lt 1 ] || [ "${1:0:1}" = "-" ]; then
+  echo "usage: tools/class-kit.sh DIR [--feed-only]" >&2
+  exit 2
+fi
+repo=$(cd "$(dirname "$0")/.." && pwd)
+mkdir -p "$1"
+kit=$(cd "$1" && pwd)
+full=1
+case "${2:-}" in
+  "") ;;
+  --feed-only) full=0 ;;
+  *) echo "tools/class-kit.sh: unknown option '$2' (expected --feed-only)" >&2; exit 2 ;;
+esac
+if [ -n "$(ls -A "$kit")" ]; then
+  echo "tools/class-kit.sh: $kit is not empty; give an empty or new folder" >&2
+  exit 1
+fi
+export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1 DOTNET_SKIP_FIRST_TIME_EXPERIENCE=1 DOTNET_GENERATE_ASPNET_CERTIFICATE=false
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+feed="$kit/feed"
+mkdir -p "$feed"
+
+echo "== packages of this checkout -> $feed"
+projects=(src/RayLab src/RayLab.Reports templates/RayLab.Templates)
+[ -d "$repo/src/RayLab.ImageSharp" ] && projects+=(src/RayLab.ImageSharp)
+for p in "${projects[@]}"; do
+  dotnet pack "$repo/$p" -c Release -o "$feed" --artifacts-path "$work/artifacts" -v q -nologo
+done
+if [ $full = 1 ]; then
+  # The tool: the pointer package, the framework-dependent build every OS runs, and the native linux-x64 build.
+  dotnet pack "$repo/samples/RayLab.Console" -c Release -o "$feed" -v q -nologo
+  dotnet pack "$repo/samples/RayLab.Console" -c Release -r any -o "$feed" -v q -nologo
+  dotnet pack "$repo/samples/RayLab.Console" -c Release -r linux-x64 -o "$feed" -v q -nologo
+fi
+template=$(ls "$feed"/RayLab.Templates.*.nupkg)
+version=$(basename "$template" .nupkg); version=${version#RayLab.Templates.}
+
+echo "== a lab of every kind, restored into an empty NuGet cache: its packages go into the feed"
+export DOTNET_CLI_HOME="$work/home" NUGET_PACKAGES="$work/packages"
+mkdir -p "$DOTNET_CLI_HOME" "$NUGET_PACKAGES"
+dotnet new install "RayLab.Templates::$version" --add-source "$feed" >/dev/null
+# The kinds this template offers: the exercise lab (with its reference solution: the checks' oracle) where the
+# template has --kind, else the method lab alone.
+if dotnet new raylab-lab --help 2>/dev/null | grep -q -- '--kind'; then
+  kinds=(exercise method)
+else
+  kinds=(method)
+fi
+labs="$work/labs"
+for kind in "${kinds[@]}"; do
+  args=(-o "$labs/$kind" -n MyLab --feed "$feed" --skipRestore)
+  [ ${#kinds[@]} -gt 1 ] && args+=(--kind "$kind")
+  [ "$kind" = exercise ] && args+=(--solution)
+  dotnet new raylab-lab "${args[@]}" >/dev/null
+  # Restoring the checks restores the whole lab (they reference src/Lab); the method option's two kinds of
+  # MyMethod.cs use the same packages.
+  dotnet restore "$labs/$kind/tests/Lab.Tests" -v q -nologo
+  # The pinned checks: the template's lab of this kind, without its nuget.config (the grader writes its own).
+  mkdir -p "$kit/checks"
+  cp -r "$labs/$kind" "$kit/checks/$kind"
+  rm -rf "$kit/checks/$kind/nuget.config" "$kit/checks/$kind"/*/*/bin "$kit/checks/$kind"/*/*/obj
+  if [ "$kind" = method ]; then
+    pictures='"orthographic": "out/two-spheres-orthographic-mymethod.png", "perspective": "out/two-spheres-perspective-mymethod.png"'
+    timed=mymethod
+  else
+    pictures='"orthographic": "out/two-spheres-orthographic.png", "perspective": "out/two-spheres-perspective.png"'
+    timed=adaptive
+  fi
+  cat > "$kit/checks/$kind/grading.json" <<EOF
+{
+  "kind": "$kind",
+  "raylabVersion": "$version",
+  "pictures": { $pictures },
+  "timedMethod": "$timed"
+}
+EOF
+done
+# (the cache names files in lower case; NuGet's ids are case-insensitive, so a package already packed here is skipped)
+have=$(ls "$feed" | tr '[:upper:]' '[:lower:]')
+for nupkg in "$NUGET_PACKAGES"/*/*/*.nupkg; do
+  grep -qxF "$(basename "$nupkg")" <<<"$have" || cp "$nupkg" "$feed/"
+done
+rm -f "$feed"/*.snupkg
+dotnet new uninstall RayLab.Templates >/dev/null
+
+if [ $full = 1 ]; then
+  echo "== the native raylab (linux-x64) -> $kit/raylab-linux-x64"
+  "$repo/tools/publish-native.sh" "$kit/raylab-linux-x64"
+  echo "== the playground -> $kit/playground"
+  dotnet publish "$repo/samples/RayLab.Web" -c Release -o "$work/web" -v q -nologo
+  cp -r "$work/web/wwwroot" "$kit/playground"
+fi
+
+cp "$repo/tools/class-kit/README.md" "$kit/README.md"
+sed -i "s/RAYLAB_KIT_VERSION/$version/g" "$kit/README.md"
+echo "$kit: RayLab $version, $(ls "$feed" | wc -l) packages in feed/, checks: ${kinds[*]}$([ $full = 1 ] && echo ', raylab-linux-x64/, playground/')"
