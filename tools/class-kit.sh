@@ -7,13 +7,13 @@
 #   DIR/checks/KIND/       the instructor's pinned checks: a lab of that kind as the template makes it (the exercise
 #                          lab with its reference solution); `raylab grade` replaces each submission's tests/Lab.Tests
 #                          and root build files with these
-#   DIR/raylab-linux-x64/  the native raylab (tools/publish-native.sh), which also grades
+#   DIR/raylab-linux-x64/  the native raylab (as tools/publish-native.sh makes it), which also grades
 #   DIR/playground/        the published playground site (samples/RayLab.Web), for any static host
 #   DIR/README.md          the instructor's page, Polish and English (docs/teaching.md is the long form)
 # Usage: tools/class-kit.sh DIR [--feed-only]
 #   --feed-only  the feed (without the tool packages) and the checks alone: what a lab needs (the CI test uses it)
 # Needs the .NET SDK and network access to a NuGet source for xUnit & co. (the machine's own sources), and for the
-# native build a C toolchain (clang or gcc).
+# native build a C toolchain (clang or gcc) and unzip (or python3).
 set -euo pipefail
 if [ $# -lt 1 ] || [ "${1:0:1}" = "-" ]; then
   echo "usage: tools/class-kit.sh DIR [--feed-only]" >&2
@@ -52,6 +52,14 @@ if [ $full = 1 ]; then
 fi
 template=$(ls "$feed"/RayLab.Templates.*.nupkg)
 version=$(basename "$template" .nupkg); version=${version#RayLab.Templates.}
+# One version for all (MinVer: the commit's); a commit made while packing would split them.
+for p in "${projects[@]}"; do
+  id=$(basename "$p")
+  if [ ! -e "$feed/$id.$version.nupkg" ]; then
+    echo "tools/class-kit.sh: $id was not packed at the templates' version $version (a commit during the run?); make the kit again" >&2
+    exit 1
+  fi
+done
 
 echo "== a lab of every kind, restored into an empty NuGet cache: its packages go into the feed"
 export DOTNET_CLI_HOME="$work/home" NUGET_PACKAGES="$work/packages"
@@ -93,6 +101,20 @@ for kind in "${kinds[@]}"; do
 }
 EOF
 done
+# RayLab.ImageSharp and what it needs (SixLabors.ImageSharp), for a lab that adds the package itself.
+if ls "$feed"/RayLab.ImageSharp.*.nupkg >/dev/null 2>&1; then
+  mkdir -p "$work/imagesharp"
+  cat > "$work/imagesharp/nuget.config" <<EOF
+<configuration><packageSources><add key="kit" value="$feed" /></packageSources></configuration>
+EOF
+  cat > "$work/imagesharp/ImageSharpLab.csproj" <<EOF
+<Project Sdk="Microsoft.NET.Sdk">
+  <PropertyGroup><TargetFramework>net10.0</TargetFramework></PropertyGroup>
+  <ItemGroup><PackageReference Include="RayLab.ImageSharp" Version="$version" /></ItemGroup>
+</Project>
+EOF
+  dotnet restore "$work/imagesharp" -v q -nologo
+fi
 # (the cache names files in lower case; NuGet's ids are case-insensitive, so a package already packed here is skipped)
 have=$(ls "$feed" | tr '[:upper:]' '[:lower:]')
 for nupkg in "$NUGET_PACKAGES"/*/*/*.nupkg; do
@@ -102,8 +124,18 @@ rm -f "$feed"/*.snupkg
 dotnet new uninstall RayLab.Templates >/dev/null
 
 if [ $full = 1 ]; then
-  echo "== the native raylab (linux-x64) -> $kit/raylab-linux-x64"
-  "$repo/tools/publish-native.sh" "$kit/raylab-linux-x64"
+  # The native tool package holds what tools/publish-native.sh makes (raylab for x86-64-v2, its -v3 and -v4 siblings,
+  # scenes/): unpacked from it rather than compiled three times more.
+  echo "== the native raylab (linux-x64, from RayLab.Tool.linux-x64) -> $kit/raylab-linux-x64"
+  mkdir -p "$work/native"
+  if command -v unzip >/dev/null; then
+    unzip -q "$feed/RayLab.Tool.linux-x64.$version.nupkg" -d "$work/native"
+  else
+    python3 -m zipfile -e "$feed/RayLab.Tool.linux-x64.$version.nupkg" "$work/native"
+  fi
+  entry=$(find "$work/native" -type f -name raylab | head -n 1)
+  cp -r "$(dirname "$entry")" "$kit/raylab-linux-x64"
+  chmod +x "$kit/raylab-linux-x64"/raylab*
   echo "== the playground -> $kit/playground"
   dotnet publish "$repo/samples/RayLab.Web" -c Release -o "$work/web" -v q -nologo
   cp -r "$work/web/wwwroot" "$kit/playground"

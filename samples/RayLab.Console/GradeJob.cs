@@ -5,7 +5,6 @@ using System.Text.RegularExpressions;
 using System.Xml.Linq;
 using RayLab.Imaging;
 using RayLab.Metrics;
-using RayLab.Sampling;
 using RayLab.Scenes;
 
 namespace RayLab.Cli;
@@ -21,16 +20,6 @@ namespace RayLab.Cli;
 /// </summary>
 public static partial class GradeJob
 {
-    /// <summary>The lab's cameras (the template's TwoSpheres.cs, section 5): eye (0, 0.5, 6), looking at the origin.</summary>
-    internal static readonly Camera[] LabCameras =
-    [
-        new OrthoCamera { Name = "orthographic", Position = new Double3(0, 0.5, 6), Target = Double3.Zero, Up = new Double3(0, 1, 0), ViewHeight = 4.2, NearPlane = 0.1, FarPlane = 100 },
-        new PerspectiveCamera { Name = "perspective", Position = new Double3(0, 0.5, 6), Target = Double3.Zero, Up = new Double3(0, 1, 0), Fov = 40, NearPlane = 0.1, FarPlane = 100 },
-    ];
-
-    /// <summary>The lab's adaptive rule (4.1.4): depth 0 to 3, contrast 0.05.</summary>
-    internal static readonly AdaptiveSampler LabAdaptive = new(minDepth: 0, maxDepth: 3, contrast: 0.05);
-
     private static readonly string[] SkippedFolders = ["bin", "obj", "out", "TestResults", ".git", ".vs", ".idea", ".home", ".grade"];
 
     /// <summary>Runs the grading.</summary>
@@ -282,16 +271,16 @@ public static partial class GradeJob
     private static void ScorePictures(GradeSetup setup, GradeReference reference, string lab, string folder, StudentRow row)
     {
         bool missing = false;
-        foreach (Camera camera in LabCameras)
+        foreach ((string camera, string file) in setup.Pictures)
         {
-            string path = Path.Combine(lab, setup.Pictures[camera.Name]);
+            string path = Path.Combine(lab, file);
             if (!File.Exists(path))
             {
                 missing = true;
                 continue;
             }
 
-            Image exact = reference.Exact[camera.Name];
+            Image exact = reference.Exact[camera];
             Image picture;
             try
             {
@@ -299,22 +288,22 @@ public static partial class GradeJob
             }
             catch (Exception e) when (e is InvalidDataException or IOException or NotSupportedException)
             {
-                row.Pictures[camera.Name] = new PictureScore(double.NaN, double.NaN, $"{setup.Pictures[camera.Name]} does not decode");
+                row.Pictures[camera] = new PictureScore(double.NaN, double.NaN, $"{file} does not decode");
                 continue;
             }
 
             if (picture.Width != exact.Width || picture.Height != exact.Height)
             {
-                row.Pictures[camera.Name] = new PictureScore(double.NaN, double.NaN,
-                    $"{setup.Pictures[camera.Name]} is {picture.Width}×{picture.Height}, the exact image {exact.Width}×{exact.Height}");
+                row.Pictures[camera] = new PictureScore(double.NaN, double.NaN,
+                    $"{file} is {picture.Width}×{picture.Height}, the exact image {exact.Width}×{exact.Height}");
                 continue;
             }
 
             FlipResult flip = Flip.Compute(exact, picture);
             ImageError error = ImageError.Measure(picture, exact);
-            picture.Save(Path.Combine(folder, $"{camera.Name}.png"));
-            FlipMap.Render(flip).Save(Path.Combine(folder, $"{camera.Name}-flip.png"));
-            row.Pictures[camera.Name] = new PictureScore(error.Rmse, flip.Mean, null);
+            picture.Save(Path.Combine(folder, $"{camera}.png"));
+            FlipMap.Render(flip).Save(Path.Combine(folder, $"{camera}-flip.png"));
+            row.Pictures[camera] = new PictureScore(error.Rmse, flip.Mean, null);
         }
 
         if (missing)

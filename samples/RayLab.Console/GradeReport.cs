@@ -8,8 +8,9 @@ using RayLab.Scenes;
 namespace RayLab.Cli;
 
 /// <summary>
-/// What every submission is measured against, computed once by RayLab: each camera's exact image of the lab's scene
-/// and the rays per pixel the lab's adaptive rule (<see cref="GradeJob.LabAdaptive"/>) takes on it.
+/// What every submission is measured against, computed once by RayLab from the checks' scene file (the lab's
+/// scenes/two-spheres.json, which holds both cameras' settings and the lab's adaptive rule, depth 0–3, contrast 0.05):
+/// each camera's exact image and the rays per pixel the scene's adaptive sampler takes on it.
 /// </summary>
 internal sealed class GradeReference
 {
@@ -22,14 +23,15 @@ internal sealed class GradeReference
         var reference = new GradeReference();
         SceneDescription d = setup.Scene;
         var renderer = new Renderer();
-        foreach (Camera camera in GradeJob.LabCameras)
+        foreach (string camera in setup.Pictures.Keys)
         {
+            PreparedScene prepared = (d with { Camera = d.Camera with { Type = camera } }).Prepare();
             var exact = new Image(d.Width, d.Height);
-            new ExactRenderer().Render(d.Scene, camera, exact);
-            reference.Exact[camera.Name] = exact;
+            new ExactRenderer().Render(d.Scene, prepared.Camera, exact);
+            reference.Exact[camera] = exact;
             var adaptive = new Image(d.Width, d.Height);
-            RenderStatistics stats = renderer.Render(d.Scene, camera, RenderMethod.Adaptive(GradeJob.LabAdaptive), adaptive);
-            reference.AdaptiveRaysPerPixel[camera.Name] = (double)stats.PrimaryRays / (d.Width * d.Height);
+            RenderStatistics stats = renderer.Render(d.Scene, prepared.Camera, prepared.Method, adaptive);
+            reference.AdaptiveRaysPerPixel[camera] = (double)stats.PrimaryRays / (d.Width * d.Height);
         }
 
         return reference;
@@ -53,7 +55,7 @@ internal static class GradeReport
     public static void Write(string staging, GradeSetup setup, GradeReference reference, IReadOnlyList<StudentRow> rows, bool sandboxed)
     {
         string[] sections = [.. rows.SelectMany(r => r.Checks.Keys).Select(GradeJob.SectionOf).Distinct().Order(SectionOrder.Instance)];
-        string[] cameras = [.. GradeJob.LabCameras.Select(c => c.Name)];
+        string[] cameras = [.. setup.Pictures.Keys];
         File.WriteAllText(Path.Combine(staging, "grades.csv"), Csv(rows, sections, cameras, reference));
         File.WriteAllText(Path.Combine(staging, "grades.json"), Json(setup, rows, sections, cameras, reference, sandboxed));
         File.WriteAllText(Path.Combine(staging, "index.html"), Html(setup, rows, sections, cameras, reference, sandboxed));

@@ -37,6 +37,7 @@ public sealed class GradeCliTests : IDisposable
     {
         string checks = Checks();
         Directory.Delete(Path.Combine(checks, "tests"), recursive: true);
+        File.WriteAllText(_dir.File("kit/feed/x.1.0.0.nupkg"), "");
         Directory.CreateDirectory(_dir.File("subs/anna"));
         (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", _dir.File("report"));
         Assert.Equal(1, code);

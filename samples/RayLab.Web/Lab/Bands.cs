@@ -3,7 +3,7 @@ using RayLab.Scenes;
 namespace RayLab.Web.Lab;
 
 /// <summary>
-/// Renders an image a band of rows at a time (<see cref="Renderer.RenderRows"/>) on the page's one thread, yielding to
+/// Renders an image a band of rows at a time (<see cref="Renderer.RenderRows(Scene, Camera, RenderMethod, Image, int, int, float[])"/>) on the page's one thread, yielding to
 /// the browser between bands so that input and painting go on. The band height follows the measured speed, aiming at
 /// <see cref="Milliseconds"/> a band, and is remembered per method for its next render.
 /// </summary>

@@ -92,9 +92,10 @@ internal readonly struct RowLoop
         {
             // One iteration per worker, its number its range in the schedule; a worker renders bands until the
             // schedule has none left. A worker that starts late finds its range stolen: nobody waits for a thread.
-            Parallel.For(0, workers, parallel, renderer.Rent, (worker, _, scratch) =>
+            Parallel.For(0, workers, parallel, renderer.Rent, (worker, state, scratch) =>
             {
-                while (!token.IsCancellationRequested && schedule.TryTake(worker, out int b))
+                // A worker stops taking bands once another has thrown (ShouldExitCurrentIteration) or the token is cancelled.
+                while (!token.IsCancellationRequested && !state.ShouldExitCurrentIteration && schedule.TryTake(worker, out int b))
                 {
                     long began = trace?.Clock() ?? 0;
                     int first = Math.Max(start, b * band), end = Math.Min(stop, (b + 1) * band);

@@ -31,7 +31,7 @@ internal sealed class AdaptiveLattice
     private readonly Intensity[] _palette;
     private readonly Rgb24[] _levels;
     private readonly RenderOptions _options;
-    private readonly BandEdges _edges;
+    private readonly List<Source.Buffers> _returned = [];
 
     /// <summary>The most entries a thread's band of minimum-depth points may take (16 MB); deeper bands go point by point.</summary>
     private const long MaxDenseEntries = 1 << 22;
@@ -52,8 +52,6 @@ internal sealed class AdaptiveLattice
         _palette = [.. Enumerable.Range(-1, scene.Spheres.Count + 1).Select(scene.ColourOf)];
         _levels = [.. _palette.Select(Rgb24.FromIntensity)];
         _options = options;
-        _edges = options.Rent<BandEdges>();
-        _edges.Prepare(plane.Height);
         Kernel = KernelChoice.Choose(options.Kernel, scene, plane, out PacketFrame? frame, out _);
         _hits = Kernel == RenderKernel.Scalar ? null : LatticeHits.TryCreate(scene, plane, _size, frame);
         if (minDepth > 0)
@@ -143,18 +141,38 @@ internal sealed class AdaptiveLattice
 
     /// <summary>
     /// Points on the horizontal pixel lines (other than corners) that both rows beside the line traced, where the two
-    /// rows were not rendered one after the other by one thread: a row's sorted list of its top-edge points against the
-    /// row above's list of its bottom-edge points. The lists' storage goes back to the pool.
+    /// rows were not rendered one after the other by one thread: each thread's notes of a row's top-edge points
+    /// against the notes of the row above's bottom-edge points, matched by line. The threads' buffers then go back to
+    /// the pool.
     /// </summary>
     public long SharedEdgeDuplicates()
     {
-        long duplicates = 0;
-        for (int row = 1; row < _edges.Count; row++)
+        var notes = new List<(int Line, bool Top, Source.Buffers Owner, int Note)>();
+        foreach (Source.Buffers buffers in _returned)
         {
-            duplicates += Common(CollectionsMarshal.AsSpan(_edges.Bottoms[row - 1]), CollectionsMarshal.AsSpan(_edges.Tops[row]));
+            for (int n = 0; n < buffers.EdgeNotes.Count; n++)
+            {
+                (int row, bool top, _, _) = buffers.EdgeNotes[n];
+                notes.Add((top ? row : row + 1, top, buffers, n));
+            }
         }
 
-        _options.Return(_edges);
+        notes.Sort((a, b) => a.Line != b.Line ? a.Line.CompareTo(b.Line) : a.Top.CompareTo(b.Top));
+        long duplicates = 0;
+        for (int k = 1; k < notes.Count; k++)
+        {
+            if (notes[k].Line == notes[k - 1].Line && notes[k].Top && !notes[k - 1].Top)
+            {
+                duplicates += Common(notes[k - 1].Owner.EdgeNote(notes[k - 1].Note), notes[k].Owner.EdgeNote(notes[k].Note));
+            }
+        }
+
+        foreach (Source.Buffers buffers in _returned)
+        {
+            _options.Return(buffers);
+        }
+
+        _returned.Clear();
         return duplicates;
     }
 
@@ -191,11 +209,11 @@ internal sealed class AdaptiveLattice
         return new Source(this, buffers);
     }
 
-    /// <summary>Gives a thread's buffers back for the next thread or render, with its last row's bottom-edge notes for <see cref="SharedEdgeDuplicates"/>.</summary>
+    /// <summary>A thread is done (called under the row loop's lock): its last row's bottom-edge notes are kept, and its buffers go back to the pool after <see cref="SharedEdgeDuplicates"/>.</summary>
     public void Return(Source source)
     {
-        source.Storage.FlushBottomPoints(_edges);
-        _options.Return(source.Storage);
+        source.Storage.FlushBottomPoints();
+        _returned.Add(source.Storage);
     }
 
     private int Trace(long lx, long ly) => LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lx, ly);
@@ -433,10 +451,10 @@ internal sealed class AdaptiveLattice
             }
             else
             {
-                buffers.FlushBottomPoints(_lattice._edges);
+                buffers.FlushBottomPoints();
                 if (row > 0)
                 {
-                    _lattice._edges.Tops[row].AddRange(buffers.TopPoints);
+                    buffers.Note(row, top: true, buffers.TopPoints);
                 }
             }
 
@@ -602,12 +620,31 @@ internal sealed class AdaptiveLattice
             /// <summary>The block row <see cref="GuardBlocks"/> holds (−1: none).</summary>
             public int GuardBlockRow { get; set; } = -1;
 
-            /// <summary>Gives the last row's bottom-edge notes to <paramref name="edges"/> (the next row is not this thread's, or it is done).</summary>
-            public void FlushBottomPoints(BandEdges edges)
+            /// <summary>The rows whose top or bottom-edge points this thread noted for <see cref="SharedEdgeDuplicates"/>, each a slice of <see cref="EdgePoints"/>.</summary>
+            public List<(int Row, bool Top, int Start, int Count)> EdgeNotes { get; } = [];
+
+            /// <summary>The noted points, sorted within each note.</summary>
+            public List<long> EdgePoints { get; } = [];
+
+            /// <summary>Notes row <paramref name="row"/>'s top or bottom-edge points (nothing when there are none).</summary>
+            public void Note(int row, bool top, List<long> points)
+            {
+                if (points.Count != 0)
+                {
+                    EdgeNotes.Add((row, top, EdgePoints.Count, points.Count));
+                    EdgePoints.AddRange(points);
+                }
+            }
+
+            /// <summary>The points of note <paramref name="note"/>.</summary>
+            public ReadOnlySpan<long> EdgeNote(int note) => CollectionsMarshal.AsSpan(EdgePoints).Slice(EdgeNotes[note].Start, EdgeNotes[note].Count);
+
+            /// <summary>Notes the last row's bottom-edge points (the next row is not this thread's, or it is done).</summary>
+            public void FlushBottomPoints()
             {
                 if (PointsRow >= 0)
                 {
-                    edges.Bottoms[PointsRow].AddRange(AboveBottomPoints);
+                    Note(PointsRow, top: false, AboveBottomPoints);
                     AboveBottomPoints.Clear();
                     PointsRow = -1;
                 }
@@ -634,60 +671,13 @@ internal sealed class AdaptiveLattice
                 TopPoints.Clear();
                 BottomPoints.Clear();
                 AboveBottomPoints.Clear();
+                EdgeNotes.Clear();
+                EdgePoints.Clear();
                 Stamp = 0;
                 CornerLine = DenseRow = GuardBlockRow = PointsRow = -1;
                 BottomLineRetraced = 0;
 
                 static T[] Sized<T>(T[] kept, int length) => kept.Length == length ? kept : new T[length];
-            }
-        }
-    }
-
-    /// <summary>
-    /// The notes of horizontal-line points of the rows whose neighbour above or below another thread rendered (or the
-    /// same thread, not just before or after), for <see cref="SharedEdgeDuplicates"/>: two lists per row, each written
-    /// by the one thread that renders the row.
-    /// </summary>
-    internal sealed class BandEdges
-    {
-        private List<long>[] _tops = [], _bottoms = [];
-
-        /// <summary>Rows in the current render.</summary>
-        public int Count { get; private set; }
-
-        /// <summary>Each row's top-edge points, sorted, when the thread did not render the row above just before.</summary>
-        public List<long>[] Tops => _tops;
-
-        /// <summary>Each row's bottom-edge points, sorted, when the thread did not render the row below just after.</summary>
-        public List<long>[] Bottoms => _bottoms;
-
-        /// <summary>Empty lists for <paramref name="rows"/> rows, kept from the last render where there are enough.</summary>
-        public void Prepare(int rows)
-        {
-            if (_tops.Length < rows)
-            {
-                _tops = Grow(_tops, rows);
-                _bottoms = Grow(_bottoms, rows);
-            }
-
-            for (int row = 0; row < rows; row++)
-            {
-                _tops[row].Clear();
-                _bottoms[row].Clear();
-            }
-
-            Count = rows;
-
-            static List<long>[] Grow(List<long>[] kept, int length)
-            {
-                var grown = new List<long>[length];
-                kept.CopyTo(grown, 0);
-                for (int i = kept.Length; i < length; i++)
-                {
-                    grown[i] = [];
-                }
-
-                return grown;
             }
         }
     }

@@ -195,11 +195,12 @@ internal sealed class OutlineSet
 
     private static Crossing[] FindCrossings(Outline[] outlines, int height, ParallelOptions? parallel)
     {
-        var ys = new List<Crossing>();
+        var lists = new List<List<Crossing>>();
 
         // Only pairs whose heights overlap can cross: outlines by their top, each paired with those starting
         // above its bottom (a sweep down the image; every pair the all-pairs loop would find, as i < j). The pairs
-        // are solved in parallel and the crossings sorted (by height, then the pair), so the order is always the same.
+        // are solved in parallel, each thread sorts its crossings (by height, then the pair) and the sorted lists are
+        // merged, so the order is always the same.
         int[] byTop = [.. Enumerable.Range(0, outlines.Length).OrderBy(k => outlines[k].Top)];
         parallel ??= new ParallelOptions();
         if (outlines.Length < 64)
@@ -240,14 +241,36 @@ internal sealed class OutlineSet
             return found;
         }, found =>
         {
-            lock (ys)
+            found.Sort();
+            lock (lists)
             {
-                ys.AddRange(found);
+                lists.Add(found);
             }
         });
 
-        ys.Sort();
-        return [.. ys];
+        return Merge(lists);
+    }
+
+    /// <summary>The sorted lists merged into one sorted array (a few lists: each step takes the least head).</summary>
+    private static Crossing[] Merge(List<List<Crossing>> lists)
+    {
+        var merged = new Crossing[lists.Sum(l => l.Count)];
+        var next = new int[lists.Count];
+        for (int k = 0; k < merged.Length; k++)
+        {
+            int least = -1;
+            for (int l = 0; l < lists.Count; l++)
+            {
+                if (next[l] < lists[l].Count && (least < 0 || lists[l][next[l]].CompareTo(lists[least][next[least]]) < 0))
+                {
+                    least = l;
+                }
+            }
+
+            merged[k] = lists[least][next[least]++];
+        }
+
+        return merged;
     }
 
     /// <summary>A height where two outlines cross (or nearly touch).</summary>
