@@ -71,13 +71,17 @@ public sealed class ClassKit : IAsyncLifetime
     public Task<string> RunAsync(string workingDirectory, string fileName, params string[] args) =>
         ChildProcess.RunCheckedAsync(workingDirectory, Environment(), ChildTimeout, fileName, args);
 
-    /// <summary>A method lab from the installed template, made with the moved kit's feed as its only source.</summary>
+    /// <summary>A lab from the installed template, made with the moved kit's feed as its only source.</summary>
     /// <returns>The lab's folder.</returns>
-    public async Task<string> NewLabAsync(string folder, string name, bool restore)
+    /// <param name="folder">Where the lab's folder goes.</param>
+    /// <param name="name">The lab's name and folder.</param>
+    /// <param name="restore">Whether <c>dotnet new</c> restores it.</param>
+    /// <param name="kind">The template's <c>--kind</c>: <c>method</c> (the submissions change MyMethod.cs) or <c>exercise</c>.</param>
+    /// <param name="extra">More template options (e.g. <c>--solution</c>).</param>
+    public async Task<string> NewLabAsync(string folder, string name, bool restore, string kind = "method", params string[] extra)
     {
         string lab = Path.Combine(folder, name);
-        // The method lab: these submissions change MyMethod.cs (the exercise lab is the template's default).
-        List<string> args = ["new", "raylab-lab", "-o", lab, "--kind", "method", "--feed", Path.Combine(Kit, "feed"), "--offline"];
+        List<string> args = ["new", "raylab-lab", "-o", lab, "--kind", kind, "--feed", Path.Combine(Kit, "feed"), "--offline", .. extra];
         if (!restore)
         {
             args.Add("--skipRestore");
@@ -222,6 +226,39 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         string[] csv = File.ReadAllLines(Path.Combine(report, "grades.csv"));
         Assert.Equal(6, csv.Length);
         Assert.StartsWith("broken,does not build,", csv[1], StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public async Task GradingExerciseLabsGivesEachSectionOfTheStudentsClassesItsOwnResult()
+    {
+        // The exercise lab: the reference solution, and the solution with the 8-bit rule rounded instead of cut (2.2).
+        string submissions = Directory.CreateDirectory(Path.Combine(kit.Root, "exercise-submissions")).FullName;
+        await kit.NewLabAsync(submissions, "solution", restore: false, "exercise", "--solution");
+        string rounded = await kit.NewLabAsync(submissions, "rounded", restore: false, "exercise", "--solution");
+        Edit(rounded, "src/Lab/LabImage.cs", "(byte)(int)scaled", "(byte)Math.Round(scaled)");
+
+        string report = Path.Combine(kit.Root, "exercise-report");
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        int exit = Program.Run(
+            ["grade", submissions, "--checks", Path.Combine(kit.Kit, "checks", "exercise"), "--out", report,
+             "--check-timeout", "60", "--run-timeout", "60", "--submission-timeout", SubmissionLimitSeconds.ToString(System.Globalization.CultureInfo.InvariantCulture)],
+            stdout, stderr, TestContext.Current.CancellationToken);
+        Assert.True(exit == 0, $"raylab grade exited {exit}:\n{stdout}\n{stderr}");
+
+        using JsonDocument grades = JsonDocument.Parse(File.ReadAllText(Path.Combine(report, "grades.json")));
+        Dictionary<string, JsonElement> rows = grades.RootElement.GetProperty("students").EnumerateArray().ToDictionary(r => r.GetProperty("name").GetString()!);
+        string[] sections = [.. grades.RootElement.GetProperty("sections").EnumerateArray().Select(s => s.GetString()!)];
+        // Every section of the lab, parsed from the checks' display names.
+        Assert.Equal(["2.1", "2.2", "3", "3.1", "3.2", "4.1.1", "4.1.2", "4.1.3", "4.1.4", "5"], sections.Order(StringComparer.Ordinal));
+        Assert.Equal("ok", rows["solution"].GetProperty("status").GetString());
+        Assert.All(sections, s => Assert.Equal("pass", Section(rows["solution"], s)));
+        Assert.True(Rmse(rows["solution"]) < 1, $"the solution's perspective picture is {Rmse(rows["solution"])} levels RMSE from the exact one");
+
+        Assert.Equal("ok", rows["rounded"].GetProperty("status").GetString());
+        Assert.Equal("fail", Section(rows["rounded"], "2.2"));
+        Assert.Equal("pass", Section(rows["rounded"], "2.1"));
+        Assert.Equal("pass", Section(rows["rounded"], "3.2"));
     }
 
     private static string Grid(int n) =>
