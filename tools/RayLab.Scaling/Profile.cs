@@ -20,7 +20,6 @@ internal sealed class Profile
     public required double AfterMs { get; init; }
     public required double[] BandMs { get; init; }
     public required double[] ScatteredBandMs { get; init; }
-    public required int BandHeight { get; init; }
     public required double HierarchyMs { get; init; }
     public required double BuffersMs { get; init; }
     public required double EncodeMs { get; init; }
@@ -67,15 +66,14 @@ internal sealed class Profile
             }
         }));
         double encode = Median(rounds, () => Wall(() => image.Save(Stream.Null, ImageFormat.Png)));
-        int bands = inOrder[0].BandTicks.Length;
+        int bands = inOrder[0].RowTicks.Length;
         return new Profile
         {
             PreparationMs = Median(inOrder.Select(t => Cpu(t.RowsStarted - t.Started))),
             ParallelPreparationMs = crossings,
             AfterMs = Median(inOrder.Select(t => Cpu(t.Finished - t.RowsEnded))),
-            BandMs = [.. Enumerable.Range(0, bands).Select(b => Median(inOrder.Select(t => Cpu(t.BandTicks[b]))))],
-            ScatteredBandMs = [.. Enumerable.Range(0, bands).Select(b => Median(scattered.Select(t => Cpu(t.BandTicks[b]))))],
-            BandHeight = inOrder[0].BandHeight,
+            BandMs = [.. Enumerable.Range(0, bands).Select(b => Median(inOrder.Select(t => Cpu(t.RowTicks[b]))))],
+            ScatteredBandMs = [.. Enumerable.Range(0, bands).Select(b => Median(scattered.Select(t => Cpu(t.RowTicks[b]))))],
             HierarchyMs = scene.UsesHierarchy ? hierarchy : 0,
             BuffersMs = buffers,
             EncodeMs = encode,
@@ -89,9 +87,9 @@ internal sealed class Profile
         Console.WriteLine("|---|---:|---|---|");
         Console.WriteLine($"| hierarchy (once per scene) | {HierarchyMs:F2} | no | – |");
         Console.WriteLine($"| preparation (set-up in the clock) | {PreparationMs:F2} | yes | {(ParallelPreparationMs > 0 ? $"{ParallelPreparationMs:F2} of it (the outlines' crossings)" : "no")} |");
-        Console.WriteLine($"| rows: {BandMs.Length} bands of {BandHeight} | {RowsMs:F2} | yes | by the schedule |");
-        Console.WriteLine($"| rows, every band scattered | {ScatteredBandMs.Sum():F2} | – | – |");
-        Console.WriteLine($"| largest band | {BandMs.Max():F3} | – | – |");
+        Console.WriteLine($"| rows: {BandMs.Length}, one at a time | {RowsMs:F2} | yes | by the schedule |");
+        Console.WriteLine($"| rows, every row scattered | {ScatteredBandMs.Sum():F2} | – | – |");
+        Console.WriteLine($"| slowest row | {BandMs.Max():F3} | – | – |");
         Console.WriteLine($"| after the rows | {AfterMs:F2} | yes | no |");
         Console.WriteLine($"| buffers (a new image, its pages touched; wall) | {BuffersMs:F2} | no | – |");
         Console.WriteLine($"| PNG encode (wall, its own threads) | {EncodeMs:F2} | no | – |");

@@ -7,22 +7,38 @@ using RayLab.Scaling;
 // A CASE is one row of the issue's table: bench-jittered16, bench-jittered256, bench-adaptive, bench-guard, bench-exact,
 // field-jittered16, field-adaptive, field-exact; none: all but bench-jittered256.
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
+const string Usage = "usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [CASE ...]\n"
+    + "  CASE: SCENE-METHOD, SCENE bench or field, METHOD jittered16, jittered256, adaptive, guard or exact\n"
+    + "  (none: every case but bench-jittered256)";
 int rounds = 5;
 int[] measured = [1, 2], modelled = [1, 2, 4, 8, 16];
 var names = new List<string>();
-for (int i = 0; i < args.Length; i++)
+Case[] cases;
+try
 {
-    switch (args[i])
+    for (int i = 0; i < args.Length; i++)
     {
-        case "--rounds": rounds = int.Parse(args[++i]); break;
-        case "--threads": measured = [.. args[++i].Split(',').Select(int.Parse)]; break;
-        case "--model": modelled = [.. args[++i].Split(',').Select(int.Parse)]; break;
-        default: names.Add(args[i]); break;
+        switch (args[i])
+        {
+            case "-h" or "--help": Console.WriteLine(Usage); return 0;
+            case "--rounds": rounds = Positive(args, ++i, "--rounds")[0]; break;
+            case "--threads": measured = Positive(args, ++i, "--threads"); break;
+            case "--model": modelled = Positive(args, ++i, "--model"); break;
+            case ['-', ..]: throw new ArgumentException($"{args[i]}: unknown option");
+            default: names.Add(args[i]); break;
+        }
     }
+
+    string root = Case.FindRoot();
+    cases = [.. (names.Count == 0 ? [.. Case.Defaults] : names).Select(n => Case.Named(n, root))];
+}
+catch (Exception e) when (e is ArgumentException or IOException or InvalidOperationException)
+{
+    Console.Error.WriteLine($"raylab-scaling: error: {e.Message}");
+    Console.Error.WriteLine(Usage);
+    return 2;
 }
 
-string root = Case.FindRoot();
-Case[] cases = [.. (names.Count == 0 ? [.. Case.Defaults] : names).Select(n => Case.Named(n, root))];
 Console.WriteLine($"# {Environment.ProcessorCount} processors, {rounds} rounds; load average {File.ReadAllText("/proc/loadavg").Trim()}");
 var summary = new List<string>();
 int[] all = [.. modelled.Union(measured).Order()];
@@ -59,3 +75,18 @@ Console.WriteLine($"|---|---:|{string.Join("", all.Select(_ => "---:|"))}---:|--
 summary.ForEach(Console.WriteLine);
 Console.WriteLine();
 Console.WriteLine($"load average at the end: {File.ReadAllText("/proc/loadavg").Trim()}");
+return 0;
+
+// The comma-separated positive integers after option args[i - 1].
+static int[] Positive(string[] args, int i, string option)
+{
+    if (i >= args.Length)
+    {
+        throw new ArgumentException($"{option}: expected a value");
+    }
+
+    int[] values = [.. args[i].Split(',').Select(v => int.TryParse(v, NumberStyles.None, CultureInfo.InvariantCulture, out int n) && n > 0
+        ? n
+        : throw new ArgumentException($"{option} {args[i]}: expected positive whole numbers, separated by commas"))];
+    return values;
+}

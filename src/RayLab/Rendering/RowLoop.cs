@@ -4,16 +4,12 @@ using System.Runtime.ExceptionServices;
 namespace RayLab.Rendering;
 
 /// <summary>
-/// A renderer as <see cref="RowLoop"/> sees it: rows cut into bands of a fixed height, a scratch for each thread,
-/// and one row at a time. A row's pixels must depend only on the row, never on which thread or scratch renders it,
+/// A renderer as <see cref="RowLoop"/> sees it: a scratch for each thread, and one row at a time. A row's pixels must depend only on the row, never on which thread or scratch renders it,
 /// so the bytes are the same whatever the thread count.
 /// </summary>
 /// <typeparam name="TScratch">One thread's working space.</typeparam>
 internal interface IRowRenderer<TScratch>
 {
-    /// <summary>Rows per band (1 unless the renderer says otherwise): a band's rows go to one thread, top to bottom. Fixed by the renderer, never by the thread count.</summary>
-    int BandHeight => 1;
-
     /// <summary>A thread's scratch, new or kept from an earlier render.</summary>
     TScratch Rent();
 
@@ -41,7 +37,7 @@ internal struct RowTotals
 
 /// <summary>
 /// The one row loop every renderer runs on: it owns the clock, the threads (at most
-/// <see cref="RenderOptions.MaxDegreeOfParallelism"/>), the band order, the progress count, the cancellation check
+/// <see cref="RenderOptions.MaxDegreeOfParallelism"/>), the row order, the progress count, the cancellation check
 /// before each row, each thread's scratch and the <see cref="RenderStatistics"/>. A renderer supplies only "render
 /// this row with this scratch" (<see cref="IRowRenderer{TScratch}"/>). Start the loop before the renderer's
 /// per-frame set-up, so the set-up is timed too.
@@ -66,10 +62,9 @@ internal readonly struct RowLoop
     public static RowLoop Start(RenderOptions options, int rows) => new(options, rows);
 
     /// <summary>
-    /// Renders every row: bands of <see cref="IRowRenderer{TScratch}.BandHeight"/> rows, each band's rows in order on one
-    /// thread, the token checked before each row. Each thread renders a range of consecutive bands and steals half of
-    /// the fullest range when its own is done (<see cref="BandSchedule"/>), so the threads finish together wherever
-    /// the costly bands are. A renderer's own exception is rethrown as it was thrown.
+    /// Renders every row, the token checked before each. Each thread renders a range of consecutive rows and steals
+    /// half of the fullest range when its own is done (<see cref="BandSchedule"/>), so the threads finish together
+    /// wherever the costly rows are. A renderer's own exception is rethrown as it was thrown.
     /// </summary>
     /// <returns>What the threads counted.</returns>
     /// <exception cref="OperationCanceledException">The render was cancelled.</exception>
@@ -77,35 +72,29 @@ internal readonly struct RowLoop
     {
         var totals = new RowTotals();
         var gate = new Lock();
-        int band = renderer.BandHeight;
-        // The rows this render fills (all, or Renderer.RenderRows' band), in the renderer's bands as a whole render cuts them.
+        // The rows this render fills (all, or Renderer.RenderRows' band).
         (int start, int stop) = _options.Rows(_rows);
-        int firstBand = start / band, endBand = stop > start ? ((stop + band - 1) / band) : firstBand;
+        stop = Math.Max(start, stop);
         RenderProgress? progress = _options.Progress;
         CancellationToken token = _options.CancellationToken;
         RowLoopTrace? trace = _options.Trace;
-        int workers = BandSchedule.Workers(endBand - firstBand, _options.MaxDegreeOfParallelism);
-        var schedule = new BandSchedule(firstBand, endBand, workers, trace is { Scattered: true } && workers == 1);
-        trace?.Begin(firstBand, endBand, band);
+        int workers = BandSchedule.Workers(stop - start, _options.MaxDegreeOfParallelism);
+        var schedule = new BandSchedule(start, stop, workers, trace is { Scattered: true } && workers == 1);
+        trace?.Begin(start, stop);
         var parallel = new ParallelOptions { MaxDegreeOfParallelism = workers, CancellationToken = token };
         try
         {
-            // One iteration per worker, its number its range in the schedule; a worker renders bands until the
+            // One iteration per worker, its number its range in the schedule; a worker renders rows until the
             // schedule has none left. A worker that starts late finds its range stolen: nobody waits for a thread.
             Parallel.For(0, workers, parallel, renderer.Rent, (worker, state, scratch) =>
             {
-                // A worker stops taking bands once another has thrown (ShouldExitCurrentIteration) or the token is cancelled.
-                while (!token.IsCancellationRequested && !state.ShouldExitCurrentIteration && schedule.TryTake(worker, out int b))
+                // A worker stops taking rows once another has thrown (ShouldExitCurrentIteration) or the token is cancelled.
+                while (!token.IsCancellationRequested && !state.ShouldExitCurrentIteration && schedule.TryTake(worker, out int row))
                 {
                     long began = trace?.Clock() ?? 0;
-                    int first = Math.Max(start, b * band), end = Math.Min(stop, (b + 1) * band);
-                    for (int row = first; row < end && !token.IsCancellationRequested; row++)
-                    {
-                        renderer.RenderRow(row, ref scratch);
-                        progress?.CompleteRow();
-                    }
-
-                    trace?.Band(b, began, trace.Clock());
+                    renderer.RenderRow(row, ref scratch);
+                    progress?.CompleteRow();
+                    trace?.Row(row, began, trace.Clock());
                 }
 
                 return scratch;

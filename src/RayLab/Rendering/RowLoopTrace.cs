@@ -4,7 +4,7 @@ namespace RayLab.Rendering;
 
 /// <summary>
 /// What a <see cref="RowLoop"/> did, for the scaling tool (<c>tools/RayLab.Scaling</c>): when the clock started, when
-/// the rows started (the renderer's set-up before them), each band's time, when the rows ended and when the clock
+/// the rows started (the renderer's set-up before them), each row's time, when the rows ended and when the clock
 /// stopped (the work after them), in ticks of <see cref="Clock"/>. One trace records one render.
 /// </summary>
 internal sealed class RowLoopTrace
@@ -15,7 +15,7 @@ internal sealed class RowLoopTrace
     /// <summary>Ticks of <see cref="Clock"/> per second.</summary>
     public long Frequency { get; init; } = Stopwatch.Frequency;
 
-    /// <summary>For a one-thread render: the bands one by one, the even ones then the odd ones (<see cref="BandSchedule"/>), so that every band starts on a thread that did not render the band above it.</summary>
+    /// <summary>For a one-thread render: the rows one by one, the even ones then the odd ones (<see cref="BandSchedule"/>), so that every row starts on a thread that did not render the row above it.</summary>
     public bool Scattered { get; init; }
 
     /// <summary>When the clock started.</summary>
@@ -24,35 +24,31 @@ internal sealed class RowLoopTrace
     /// <summary>When the rows started.</summary>
     public long RowsStarted { get; private set; }
 
-    /// <summary>When the last band ended.</summary>
+    /// <summary>When the last row ended.</summary>
     public long RowsEnded { get; private set; }
 
     /// <summary>When the clock stopped.</summary>
     public long Finished { get; private set; }
 
-    /// <summary>The first band.</summary>
-    public int FirstBand { get; private set; }
+    /// <summary>The first row.</summary>
+    public int FirstRow { get; private set; }
 
-    /// <summary>Rows per band.</summary>
-    public int BandHeight { get; private set; }
-
-    /// <summary>Each band's time in ticks, from <see cref="FirstBand"/> on.</summary>
-    public long[] BandTicks { get; private set; } = [];
+    /// <summary>Each row's time in ticks, from <see cref="FirstRow"/> on.</summary>
+    public long[] RowTicks { get; private set; } = [];
 
     /// <summary>The clock starts.</summary>
     public void Start() => Started = Clock();
 
-    /// <summary>The rows start: bands <paramref name="firstBand"/> to <paramref name="endBand"/> − 1 of <paramref name="bandHeight"/> rows.</summary>
-    public void Begin(int firstBand, int endBand, int bandHeight)
+    /// <summary>The rows start: rows <paramref name="firstRow"/> to <paramref name="endRow"/> − 1.</summary>
+    public void Begin(int firstRow, int endRow)
     {
         RowsStarted = Clock();
-        FirstBand = firstBand;
-        BandHeight = bandHeight;
-        BandTicks = new long[endBand - firstBand];
+        FirstRow = firstRow;
+        RowTicks = new long[endRow - firstRow];
     }
 
-    /// <summary>Band <paramref name="band"/> ran from <paramref name="began"/> to <paramref name="ended"/>.</summary>
-    public void Band(int band, long began, long ended) => BandTicks[band - FirstBand] = ended - began;
+    /// <summary>Row <paramref name="row"/> ran from <paramref name="began"/> to <paramref name="ended"/>.</summary>
+    public void Row(int row, long began, long ended) => RowTicks[row - FirstRow] = ended - began;
 
     /// <summary>The rows are done.</summary>
     public void End() => RowsEnded = Clock();
