@@ -71,14 +71,14 @@ public sealed class Texts
     public string Camera => T("Kamera", "Camera");
 
     /// <summary>The projection's label.</summary>
-    public string Projection => T("Rzutowanie", "Projection");
+    public string Projection => T("Rodzaj kamery", "Projection");
 
-    /// <summary>A camera type's name in the list (the scene file's word stays visible in Polish).</summary>
+    /// <summary>A camera type's name in the list (English: the scene file's word).</summary>
     /// <param name="type">The scene file's camera type.</param>
     public string CameraType(string type) => !_pl ? type : type switch
     {
-        "perspective" => "kamera perspektywiczna (perspective)",
-        "orthographic" => "kamera ortogonalna (orthographic)",
+        "perspective" => "perspektywiczna",
+        "orthographic" => "ortogonalna",
         _ => type,
     };
 
@@ -124,15 +124,15 @@ public sealed class Texts
     /// <summary>The sample project's group in the sampler list.</summary>
     public string OwnMethods => T("Własne metody projektu przykładowego (samples/RayLab.OwnMethod)", "The sample project's own (samples/RayLab.OwnMethod)");
 
-    /// <summary>A sampler's name in the list (the scene file's word stays visible in Polish).</summary>
+    /// <summary>A sampler's name in the list (English, and the methods the lab does not name: the scene file's word).</summary>
     /// <param name="type">The scene file's sampler type.</param>
     public string SamplerType(string type) => !_pl ? type : type switch
     {
-        "regular" => "próbkowanie regularne (regular)",
-        "random" => "próbkowanie losowe (random)",
-        "jittered" => "losowe nieregularne (jittered)",
-        "adaptive" => "próbkowanie adaptacyjne (adaptive)",
-        "exact" => "obraz dokładny (exact)",
+        "regular" => "regularne",
+        "random" => "losowe",
+        "jittered" => "losowe nieregularne",
+        "adaptive" => "adaptacyjne",
+        "exact" => "obraz dokładny",
         _ => type,
     };
 
