@@ -48,7 +48,8 @@ public sealed partial class Playground : IDisposable
     private double? _firstBandMs;
     private double? _firstPreviewMs;
     private int? _firstRows;
-    private string? _showing;
+    private (bool Exact, int Width, int Height)? _preview; // the preview on the canvas, until the full render replaces it
+    private Texts _t = Texts.English;
     private readonly List<Trial> _trials = [];
     private IJSInProcessObjectReference? _module;
     private DotNetObjectReference<Playground>? _self;
@@ -65,6 +66,8 @@ public sealed partial class Playground : IDisposable
 
     protected override void OnInitialized()
     {
+        // index.html's script chose the language before .NET started: the session's choice, else the browser's.
+        _t = Texts.For(OperatingSystem.IsBrowser() ? PageLanguage.Get() : null);
         _state = LabState.FromQuery(new Uri(Navigation.Uri).Query);
         _editorText = _state.SceneText;
         Prepare();
@@ -197,7 +200,7 @@ public sealed partial class Playground : IDisposable
             }
 
             _longestGap = _module?.Invoke<double>("longestFrameGap") ?? 0;
-            _showing = null;
+            _preview = null;
             _frames++;
             _status = "ready";
             UpdateUrl();
@@ -317,7 +320,7 @@ public sealed partial class Playground : IDisposable
             _previewStep = next;
         }
 
-        _showing = $"a preview: {(method == RenderMethod.Exact ? "the exact picture" : "one ray per pixel")} at {preview.Width}×{preview.Height}, scaled up; the full render follows";
+        _preview = (method == RenderMethod.Exact, preview.Width, preview.Height);
         return true;
     }
 
@@ -674,12 +677,17 @@ public sealed partial class Playground : IDisposable
             : Task.CompletedTask;
     }
 
-    private static string ViewName(string view) => view switch
+    /// <summary>The language switch: the page's words, the html <c>lang</c> and the session's choice follow.</summary>
+    private void SetLanguage(Texts texts)
     {
-        "rays" => "Rays per pixel",
-        "error" => "Error against exact",
-        _ => "Picture",
-    };
+        _t = texts;
+        if (OperatingSystem.IsBrowser())
+        {
+            PageLanguage.Set(texts.Lang, texts.Title);
+        }
+    }
+
+    private string? Showing => _preview is (bool exact, int w, int h) ? _t.Showing(exact, w, h) : null;
 
     private static string Hue(int index) => $"hsl({(index * 67) % 360}, 80%, 62%)";
 

@@ -23,7 +23,7 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         public async ValueTask DisposeAsync() => await Browser.DisposeAsync();
     }
 
-    private async Task<Session> OpenAsync(string query = "")
+    private async Task<Session> OpenAsync(string query = "", string? locale = null)
     {
         // Without the omnibox popup: headless Chromium builds that browser UI (a WebUI renderer, 2.9 s of main-thread work
         // in a trace) for each new window, on the same 2 cores as the page; a user's browser has it built long before.
@@ -31,7 +31,7 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         {
             ExecutablePath = Chromium, Headless = true, Args = ["--no-sandbox", "--disable-features=PreloadTopChromeWebUI,WebUIOmniboxPopup"],
         });
-        IBrowserContext context = await browser.NewContextAsync(new() { ViewportSize = new() { Width = 1400, Height = 1000 } });
+        IBrowserContext context = await browser.NewContextAsync(new() { ViewportSize = new() { Width = 1400, Height = 1000 }, Locale = locale });
         // Long tasks (50 ms or more on the main thread, Chromium's measure of blocked input), kept for the figures.
         await context.AddInitScriptAsync(
             "window.longTasks = []; new PerformanceObserver(l => { for (const e of l.getEntries()) window.longTasks.push([e.startTime, e.duration]); }).observe({ type: 'longtask', buffered: true });");
@@ -254,6 +254,122 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         await s.Page.SelectOptionAsync("#method", "exact");
         await WaitForFrame(s.Page, frame + 1);
         Assert.Equal("exact", await s.Page.GetAttributeAsync("#lab", "data-method"));
+        Assert.Empty(s.Errors);
+    }
+
+    /// <summary>A .NET resource key such as <c>Arg_ParamName_Name</c>, which a trimmed site shows in place of the framework's text.</summary>
+    private static readonly System.Text.RegularExpressions.Regex ResourceKey = new(@"\b[A-Z][a-z]+_[A-Za-z_]+\b");
+
+    /// <summary>The page's words that the language switch changes: the heading, the section headings, the sample count's label.</summary>
+    private static async Task<string[]> Words(IPage page)
+    {
+        string[] words =
+        [
+            await page.GetAttributeAsync("html", "lang") ?? "",
+            await page.TitleAsync(),
+            .. await page.Locator("h1, h2").AllInnerTextsAsync(),
+            await page.InnerTextAsync("label:has(#samples)"),
+            await page.InnerTextAsync("#status"),
+        ];
+        return [.. words.Select(w => System.Text.RegularExpressions.Regex.Replace(w, @"\s+", " ").Trim())];
+    }
+
+    [Theory]
+    [InlineData("pl-PL", "pl", "Plac zabaw RayLab")]
+    [InlineData("en-US", "en", "RayLab playground")]
+    public async Task The_page_opens_in_the_browsers_language(string locale, string lang, string title)
+    {
+        await using Session s = await OpenAsync("?scene=two-spheres&m=jittered&n=4", locale);
+        Assert.Equal(lang, await s.Page.GetAttributeAsync("html", "lang"));
+        Assert.Equal(title, await s.Page.InnerTextAsync("h1"));
+        Assert.Equal(title, await s.Page.TitleAsync());
+        Assert.Equal("on", await s.Page.GetAttributeAsync($"#lang-{lang}", "class"));
+        string[] words = await Words(s.Page);
+        Assert.Equal(lang == "pl"
+            ? ["pl", title, title, "Scena", "Kamera", "Metoda", "Liczby na żywo Renderuj ponownie", "Inspektor piksela", "Błąd a czas (ta wizyta)", "Promienie na piksel", "gotowe"]
+            : ["en", title, title, "Scene", "Camera", "Method", "Live numbers Render again", "Pixel inspector", "Error against time (this visit)", "Samples per pixel", "ready"],
+            words);
+        Assert.Empty(s.Errors);
+    }
+
+    [Fact]
+    public async Task The_language_switch_changes_the_pages_words_and_stays_for_the_session()
+    {
+        await using Session s = await OpenAsync("?scene=two-spheres&m=jittered&n=4", "en-US");
+        string[] english = await Words(s.Page);
+        await s.Page.ClickAsync("#lang-pl");
+        await s.Page.WaitForSelectorAsync("html[lang='pl']");
+        string[] polish = await Words(s.Page);
+        TestContext.Current.SendDiagnosticMessage($"EN: {string.Join(" | ", english)}");
+        TestContext.Current.SendDiagnosticMessage($"PL: {string.Join(" | ", polish)}");
+        Assert.All(english.Zip(polish), p => Assert.NotEqual(p.First, p.Second));
+        Assert.Equal("Plac zabaw RayLab", await s.Page.InnerTextAsync("h1"));
+        Assert.Equal("perspektywiczna", (await s.Page.InnerTextAsync("#camera option[value='perspective']")).Trim());
+        Assert.Equal("losowe nieregularne", (await s.Page.InnerTextAsync("#method option[value='jittered']")).Trim());
+
+        // A reload in the same tab keeps the choice; the other button takes it back.
+        await s.Page.ReloadAsync();
+        await WaitForFrame(s.Page, 1);
+        Assert.Equal(polish, await Words(s.Page));
+        await s.Page.ClickAsync("#lang-en");
+        await s.Page.WaitForSelectorAsync("html[lang='en']");
+        Assert.Equal(english, await Words(s.Page));
+        Assert.Empty(s.Errors);
+    }
+
+    [Theory]
+    [InlineData("pl-PL", "Biblioteka odrzuciła ustawienia:", "Biblioteka odrzuciła scenę:")]
+    [InlineData("en-US", "The library refused the settings:", "The library refused the scene:")]
+    public async Task A_refused_setting_or_scene_shows_the_librarys_text_with_no_resource_key(string locale, string settingPrefix, string scenePrefix)
+    {
+        // A 3-sample grid: the sampler's own ArgumentException, whose parameter name the framework appends; no samples at
+        // all: the framework's own message (ArgumentOutOfRangeException.ThrowIfLessThan), passed on by the library.
+        string twoSpheres = File.ReadAllText(Path.Combine(StaticSite.RepositoryRoot, "samples", "scenes", "two-spheres.json"));
+        SceneFileException Refused(SamplerSettings sampler) => Assert.Throws<SceneFileException>(() =>
+            (SceneFile.Parse(twoSpheres, "two-spheres") with { Width = 640, Height = 360, Sampler = sampler }).Prepare());
+        SceneFileException setting = Refused(new SamplerSettings("jittered", 3, 1));
+        SceneFileException none = Refused(new SamplerSettings("random", 0, 1));
+        // The same grid in the editor: the two-spheres file with its sampler made jittered with 3 samples.
+        string bad = twoSpheres.Replace("\"type\": \"adaptive\"", "\"type\": \"jittered\"", StringComparison.Ordinal)
+            .Replace("\"samples\": 16", "\"samples\": 3", StringComparison.Ordinal);
+        SceneFileException scene = Assert.Throws<SceneFileException>(() => SceneFile.Parse(bad, "editor").Prepare());
+        Assert.Equal(("sampler.samples", "sampler.samples", "sampler.samples"), (setting.Field, none.Field, scene.Field));
+        Assert.Contains("got 3", scene.Problem, StringComparison.Ordinal);
+
+        await using Session s = await OpenAsync(locale: locale);
+        await s.Page.SelectOptionAsync("#method", "jittered");
+        await WaitForFrame(s.Page, 2);
+        await Change(s.Page, "#samples", "3");
+        await s.Page.WaitForSelectorAsync("#lab[data-state='error']");
+        string message = (await s.Page.InnerTextAsync("#error")).Trim();
+        TestContext.Current.SendDiagnosticMessage($"{locale} setting: {message}");
+        Assert.DoesNotMatch(ResourceKey, message);
+        Assert.Equal(setting.Message, message);
+        Assert.Equal($"{settingPrefix} {setting.Message}", (await s.Page.InnerTextAsync("p.error:has(#error)")).Trim());
+
+        await s.Page.SelectOptionAsync("#method", "random");
+        await s.Page.WaitForSelectorAsync("#lab[data-state='ready']");
+        await Change(s.Page, "#samples", "0");
+        await s.Page.WaitForSelectorAsync("#lab[data-state='error']");
+        message = (await s.Page.InnerTextAsync("#error")).Trim();
+        TestContext.Current.SendDiagnosticMessage($"{locale} setting: {message}");
+        Assert.DoesNotMatch(ResourceKey, message);
+        Assert.Equal(none.Message, message);
+
+        await s.Page.ClickAsync("summary");
+        await Change(s.Page, "#editor", bad);
+        await s.Page.ClickAsync("#apply");
+        await s.Page.WaitForSelectorAsync("#editor-error");
+        message = (await s.Page.InnerTextAsync("#editor-error")).Trim();
+        TestContext.Current.SendDiagnosticMessage($"{locale} scene: {message}");
+        Assert.DoesNotMatch(ResourceKey, message);
+        Assert.Equal(scene.Message, message);
+        Assert.Equal($"{scenePrefix} {scene.Message}", (await s.Page.InnerTextAsync("p.error:has(#editor-error)")).Trim());
+
+        // The page still works: a sample count the sampler takes renders again.
+        int frame = await Frame(s.Page);
+        await Change(s.Page, "#samples", "4");
+        await WaitForFrame(s.Page, frame + 1);
         Assert.Empty(s.Errors);
     }
 

@@ -137,7 +137,19 @@ export function paintFirstRows(view, width, height, firstRow, method) {
   if (canvas.hidden) {
     canvas.width = width; canvas.height = height; canvas.hidden = false;
     const caption = document.getElementById('first-caption');
-    if (caption) caption.textContent = `The picture: ${method}, ${width}×${height}. The controls follow.`;
+    if (caption) caption.textContent = document.documentElement.lang === 'pl'
+      ? `Obraz: ${method}, ${width}×${height}. Kontrolki za chwilę.`
+      : `The picture: ${method}, ${width}×${height}. The controls follow.`;
   }
   paintRows('first', view.slice(), width, firstRow);
+}
+
+/** The page's language, the html lang: index.html's script set it from the session's choice, else the browser's. */
+export function language() { return document.documentElement.lang; }
+
+/** The language switch: the html lang, the window's title, and the choice kept for the tab's session. */
+export function setLanguage(lang, title) {
+  document.documentElement.lang = lang;
+  document.title = title;
+  try { sessionStorage.setItem('raylab-lang', lang); } catch { /* storage off: the choice lasts until a reload */ }
 }
