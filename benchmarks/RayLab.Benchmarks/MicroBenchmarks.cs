@@ -1,6 +1,7 @@
-using BenchmarkDotNet.Attributes;
 using System.Runtime.Intrinsics;
+using BenchmarkDotNet.Attributes;
 using RayLab.Cameras;
+using RayLab.Rendering.Packets;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
 using RayLab.Simd;

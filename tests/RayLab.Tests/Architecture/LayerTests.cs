@@ -22,12 +22,13 @@ public sealed class LayerTests
         ["Cameras"] = ["Model", "Simd"],
         ["Imaging"] = ["Model", "Simd"],
         ["Metrics"] = ["Model", "Imaging"],
-        ["Rendering"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging"],
-        ["Rendering.Point"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering"],
-        ["Rendering.Adaptive"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering"],
-        ["Rendering.Exact"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering"],
-        ["Rendering.PixelMethods"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering"],
-        ["Facade"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Metrics", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods"],
+        ["Rendering.Packets"] = ["Model", "Simd", "Cameras"],
+        ["Rendering"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets"],
+        ["Rendering.Point"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Rendering.Adaptive"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Rendering.Exact"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Rendering.PixelMethods"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Facade"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Metrics", "Rendering.Packets", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods"],
     };
 
     /// <summary>Namespace (and its sub-namespaces) → layer.</summary>
@@ -39,6 +40,7 @@ public sealed class LayerTests
         ("RayLab.Cameras", "Cameras"),
         ("RayLab.Imaging", "Imaging"),
         ("RayLab.Metrics", "Metrics"),
+        ("RayLab.Rendering.Packets", "Rendering.Packets"),
         ("RayLab.Rendering.Point", "Rendering.Point"),
         ("RayLab.Rendering.Adaptive", "Rendering.Adaptive"),
         ("RayLab.Rendering.Exact", "Rendering.Exact"),
