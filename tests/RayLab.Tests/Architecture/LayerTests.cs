@@ -17,24 +17,26 @@ public sealed class LayerTests
     private static readonly Dictionary<string, string[]> Allowed = new()
     {
         ["Model"] = [],
+        ["Simd"] = ["Model"],
         ["Sampling"] = ["Model"],
-        ["Simd"] = ["Model", "Sampling"],
+        ["Sampling.Lanes"] = ["Model", "Sampling", "Simd"],
         ["Cameras"] = ["Model", "Simd"],
         ["Imaging"] = ["Model", "Simd"],
         ["Metrics"] = ["Model", "Imaging"],
         ["Rendering.Packets"] = ["Model", "Simd", "Cameras"],
         ["Rendering"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets"],
-        ["Rendering.Point"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Rendering.Point"] = ["Model", "Sampling", "Sampling.Lanes", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.Adaptive"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.Exact"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.PixelMethods"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
-        ["Facade"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Metrics", "Rendering.Packets", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods"],
+        ["Facade"] = ["Model", "Sampling", "Sampling.Lanes", "Simd", "Cameras", "Imaging", "Metrics", "Rendering.Packets", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods"],
     };
 
     /// <summary>Namespace (and its sub-namespaces) → layer.</summary>
     private static readonly (string Namespace, string Layer)[] Namespaces =
     [
         ("RayLab.Geometry", "Model"),
+        ("RayLab.Sampling.Lanes", "Sampling.Lanes"),
         ("RayLab.Sampling", "Sampling"),
         ("RayLab.Simd", "Simd"),
         ("RayLab.Cameras", "Cameras"),
