@@ -13,7 +13,11 @@ namespace RayLab.Tests.Architecture;
 /// </summary>
 public sealed class LayerTests
 {
-    /// <summary>The layers, bottom up, each with the layers it may use (itself always).</summary>
+    /// <summary>
+    /// The layers, bottom up, each with the layers it may use (itself always). Simd is lane arithmetic over the
+    /// model alone; the lane samplers (Sampling.Lanes) sit over Sampling and Simd, packet tracing
+    /// (Rendering.Packets) over the cameras and Simd, and the renderers over both.
+    /// </summary>
     private static readonly Dictionary<string, string[]> Allowed = new()
     {
         ["Model"] = [],
@@ -123,6 +127,8 @@ public sealed class LayerTests
         Assert.Empty(FindCycle([.. Allowed.SelectMany(pair => pair.Value.Select(to => (pair.Key, to)))]));
         Assert.Contains(LayerDependencies(), d => d.From == "Rendering.Point" && d.To == "Simd");
         Assert.Contains(LayerDependencies(), d => d.From == "Cameras" && d.To == "Simd");
+        Assert.Contains(LayerDependencies(), d => d.From == "Sampling.Lanes" && d.To == "Simd");
+        Assert.Contains(LayerDependencies(), d => d.From == "Rendering.Packets" && d.To == "Cameras");
     }
 
     private static IEnumerable<IType> CoreTypes() =>
