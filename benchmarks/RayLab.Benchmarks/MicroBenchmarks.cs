@@ -1,8 +1,10 @@
-using BenchmarkDotNet.Attributes;
 using System.Runtime.Intrinsics;
+using BenchmarkDotNet.Attributes;
 using RayLab.Cameras;
+using RayLab.Rendering.Packets;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Benchmarks;

@@ -1,3 +1,4 @@
+using RayLab.Geometry;
 using RayLab.Simd;
 
 namespace RayLab.Cameras;
@@ -98,7 +99,7 @@ internal interface IProjection : ILaneRays
     /// <param name="depth">The depth along the gaze.</param>
     static abstract double WindowScale(double distance, double depth);
 
-    /// <summary>The four side half-spaces of the rays through [α0, α1] × [β0, β1] (see <see cref="RayLab.Simd.IRayFrame.Frustum"/>); returns the central ray's direction.</summary>
+    /// <summary>The four side half-spaces of the rays through [α0, α1] × [β0, β1] (see <see cref="ImagePlane.Frustum"/>); returns the central ray's direction.</summary>
     /// <param name="plane">The image plane.</param>
     /// <param name="alpha0">The left α.</param>
     /// <param name="alpha1">The right α.</param>

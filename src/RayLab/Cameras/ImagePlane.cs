@@ -1,6 +1,5 @@
 using System.Runtime.CompilerServices;
 using RayLab.Geometry;
-using RayLab.Simd;
 
 namespace RayLab.Cameras;
 
@@ -17,7 +16,7 @@ namespace RayLab.Cameras;
 /// the projection's: each camera's plane is an <c>ImagePlane&lt;TProjection&gt;</c> whose projection type
 /// (<see cref="OrthoCamera"/>: orthographic, <see cref="PerspectiveCamera"/>: perspective) holds the formulas.
 /// </remarks>
-public abstract class ImagePlane : IRayFrame
+public abstract class ImagePlane
 {
     private protected ImagePlane(int width, int height, Double3 eye, Double3 u, Double3 v, Double3 w, Window window,
         double distance, bool orthographic, Double3 corner, double depthPerT, double near, double far, Double3 parallelDirection, Double3 originShift)
@@ -220,40 +219,20 @@ public abstract class ImagePlane : IRayFrame
     internal abstract TResult Dispatch<TAction, TResult>(ref TAction action)
         where TAction : struct, IProjectionAction<TResult>, allows ref struct;
 
-    /// <summary>The five planes that bound the rays through [α0, α1] × [β0, β1] (see <see cref="IRayFrame.Frustum"/>).</summary>
+    /// <summary>The five planes that bound the rays through [α0, α1] × [β0, β1] (see <see cref="Frustum"/>).</summary>
     private protected abstract Double3 SideFrustum(double alpha0, double alpha1, double beta0, double beta1, Span<Plane> planes);
 
-    int IRayFrame.Width => Width;
-
-    int IRayFrame.Height => Height;
-
-    Double3 IRayFrame.A => A;
-
-    Double3 IRayFrame.B => B;
-
-    Double3 IRayFrame.C => C;
-
-    Double3 IRayFrame.ParallelDirection => ParallelDirection;
-
-    Double3 IRayFrame.FixedPoint => FixedPoint;
-
-    double IRayFrame.OriginReach => OriginReach;
-
-    double IRayFrame.DirectionRoundingSize => DirectionRoundingSize;
-
-    double IRayFrame.TMin => TMin;
-
-    double IRayFrame.TMax => TMax;
-
-    (Double3 Offset, double Largest) IRayFrame.SphereOffset(Double3 centre) => SphereOffset(centre);
-
-    SphereVisibility IRayFrame.Visibility(Double3 centre, double radius) => Visibility(centre, radius);
-
-    double IRayFrame.OriginRoundingSize(double largest) => OriginRoundingSize(largest);
-
-    Ray IRayFrame.GetPixelRay(int x, int row, double sx, double sy) => GetPixelRay(x, row, sx, sy);
-
-    Double3 IRayFrame.Frustum(double alpha0, double alpha1, double beta0, double beta1, Span<Plane> planes)
+    /// <summary>
+    /// The five half-spaces, relative to <see cref="FixedPoint"/>, that bound the rays through the window rectangle
+    /// [α0, α1] × [β0, β1] (four sides and the plane through the eye, nothing behind it), into
+    /// <paramref name="planes"/>; returns the direction of the rectangle's central ray.
+    /// </summary>
+    /// <param name="alpha0">The left α.</param>
+    /// <param name="alpha1">The right α.</param>
+    /// <param name="beta0">The bottom β.</param>
+    /// <param name="beta1">The top β.</param>
+    /// <param name="planes">Receives the five planes.</param>
+    internal Double3 Frustum(double alpha0, double alpha1, double beta0, double beta1, Span<Plane> planes)
     {
         Double3 centre = SideFrustum(alpha0, alpha1, beta0, beta1, planes);
         planes[4] = new Plane(-W, 0); // nothing behind the eye (or the orthographic window's plane)
@@ -284,6 +263,21 @@ public abstract class ImagePlane : IRayFrame
     /// <param name="sx">Offset inside the pixel, 0..1 left to right.</param>
     /// <param name="sy">Offset inside the pixel, 0..1 top to bottom.</param>
     public Ray GetPixelRay(int x, int row, double sx, double sy) => GetRay(Alpha(x, sx), Beta(row, sy));
+
+    /// <summary>
+    /// The value of one sample seen through this plane: <paramref name="scene"/>'s <see cref="Scene.Trace"/> of
+    /// <paramref name="ray"/> between the near and far planes (<see cref="TMin"/>, <see cref="TMax"/>).
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="ray">A ray of this plane.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal Intensity Trace(Scene scene, in Ray ray) => scene.Trace(ray, TMin, TMax);
+
+    /// <summary>The index of the nearest sphere of <paramref name="scene"/> that <paramref name="ray"/> hits between the near and far planes, or −1.</summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="ray">A ray of this plane.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal int Nearest(Scene scene, in Ray ray) => scene.Nearest(ray, TMin, TMax);
 
     /// <summary>
     /// Where a world point is seen: its pixel coordinates (X, Y), X to the right and Y down as in

@@ -1,4 +1,4 @@
-using RayLab.Simd;
+using RayLab.Geometry;
 
 namespace RayLab.Cameras;
 

@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using RayLab.Geometry;
 using RayLab.Simd;
 
 namespace RayLab.Cameras;

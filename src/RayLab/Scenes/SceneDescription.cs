@@ -1,3 +1,4 @@
+using RayLab.Cameras;
 using RayLab.Rendering.Exact;
 
 namespace RayLab.Scenes;
@@ -16,7 +17,8 @@ public sealed record SceneDescription(
     string Source, int Width, int Height, Scene Scene, CameraSettings Camera, SamplerSettings Sampler)
 {
     /// <summary>
-    /// Builds and checks the camera, sampler and image plane. A problem is reported as a
+    /// Builds and checks the camera and sampler (the camera's image plane is built once, for its checks and the
+    /// exact reference's, which make no outlines). A problem is reported as a
     /// <see cref="SceneFileException"/> naming the scene-file field, even when it came from a combination of
     /// fields (position equal to target, near ≥ far) or from an override.
     /// </summary>
@@ -32,11 +34,11 @@ public sealed record SceneDescription(
             CheckAtMost(Height, SceneFile.MaxImageSide, "height");
             section = SceneSection.Camera;
             Camera camera = Camera.CreateCamera();
-            camera.GetImagePlane(Width, Height);
+            ImagePlane plane = camera.GetImagePlane(Width, Height); // the camera's checks; the renderer builds its own from the camera it is given
             section = SceneSection.Sampler;
             if (Sampler.IsExact)
             {
-                ExactRenderer.Check(Scene, camera, Width, Height);
+                ExactRenderer.Check(Scene, plane); // the outlines' checks, without the outlines
             }
             else if (!Sampler.IsAdaptive)
             {

@@ -1,7 +1,6 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using System.Runtime.Intrinsics.X86;
-using RayLab.Sampling;
 
 namespace RayLab.Simd;
 
@@ -81,14 +80,20 @@ internal readonly partial record struct Lanes128(Vector128<float> V) : ILanes<La
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Xor(Lanes128 a, Lanes128 b) => new(a.V ^ b.V);
 
+    /// <summary>lowbias32's first multiplier (<see cref="Sampling.CounterHash.Multiplier1"/>; the lane tests hold the two equal).</summary>
+    private const uint HashMultiplier1 = 0x7feb352du;
+
+    /// <summary>lowbias32's second multiplier (<see cref="Sampling.CounterHash.Multiplier2"/>).</summary>
+    private const uint HashMultiplier2 = 0x846ca68bu;
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 Hash(Lanes128 bits)
     {
         Vector128<uint> x = bits.V.AsUInt32();
         x ^= x >>> 16;
-        x *= CounterHash.Multiplier1;
+        x *= HashMultiplier1;
         x ^= x >>> 15;
-        x *= CounterHash.Multiplier2;
+        x *= HashMultiplier2;
         x ^= x >>> 16;
         return new(x.AsSingle());
     }

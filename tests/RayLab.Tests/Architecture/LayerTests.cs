@@ -13,32 +13,40 @@ namespace RayLab.Tests.Architecture;
 /// </summary>
 public sealed class LayerTests
 {
-    /// <summary>The layers, bottom up, each with the layers it may use (itself always).</summary>
+    /// <summary>
+    /// The layers, bottom up, each with the layers it may use (itself always). Simd is lane arithmetic over the
+    /// model alone; the lane samplers (Sampling.Lanes) sit over Sampling and Simd, packet tracing
+    /// (Rendering.Packets) over the cameras and Simd, and the renderers over both.
+    /// </summary>
     private static readonly Dictionary<string, string[]> Allowed = new()
     {
         ["Model"] = [],
+        ["Simd"] = ["Model"],
         ["Sampling"] = ["Model"],
-        ["Simd"] = ["Model", "Sampling"],
+        ["Sampling.Lanes"] = ["Model", "Sampling", "Simd"],
         ["Cameras"] = ["Model", "Simd"],
         ["Imaging"] = ["Model", "Simd"],
         ["Metrics"] = ["Model", "Imaging"],
-        ["Rendering"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging"],
-        ["Rendering.Point"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering"],
-        ["Rendering.Adaptive"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering"],
-        ["Rendering.Exact"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering"],
-        ["Rendering.PixelMethods"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering"],
-        ["Facade"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Metrics", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods"],
+        ["Rendering.Packets"] = ["Model", "Simd", "Cameras"],
+        ["Rendering"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets"],
+        ["Rendering.Point"] = ["Model", "Sampling", "Sampling.Lanes", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Rendering.Adaptive"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Rendering.Exact"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Rendering.PixelMethods"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Facade"] = ["Model", "Sampling", "Sampling.Lanes", "Simd", "Cameras", "Imaging", "Metrics", "Rendering.Packets", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods"],
     };
 
     /// <summary>Namespace (and its sub-namespaces) → layer.</summary>
     private static readonly (string Namespace, string Layer)[] Namespaces =
     [
         ("RayLab.Geometry", "Model"),
+        ("RayLab.Sampling.Lanes", "Sampling.Lanes"),
         ("RayLab.Sampling", "Sampling"),
         ("RayLab.Simd", "Simd"),
         ("RayLab.Cameras", "Cameras"),
         ("RayLab.Imaging", "Imaging"),
         ("RayLab.Metrics", "Metrics"),
+        ("RayLab.Rendering.Packets", "Rendering.Packets"),
         ("RayLab.Rendering.Point", "Rendering.Point"),
         ("RayLab.Rendering.Adaptive", "Rendering.Adaptive"),
         ("RayLab.Rendering.Exact", "Rendering.Exact"),
@@ -119,6 +127,8 @@ public sealed class LayerTests
         Assert.Empty(FindCycle([.. Allowed.SelectMany(pair => pair.Value.Select(to => (pair.Key, to)))]));
         Assert.Contains(LayerDependencies(), d => d.From == "Rendering.Point" && d.To == "Simd");
         Assert.Contains(LayerDependencies(), d => d.From == "Cameras" && d.To == "Simd");
+        Assert.Contains(LayerDependencies(), d => d.From == "Sampling.Lanes" && d.To == "Simd");
+        Assert.Contains(LayerDependencies(), d => d.From == "Rendering.Packets" && d.To == "Cameras");
     }
 
     private static IEnumerable<IType> CoreTypes() =>

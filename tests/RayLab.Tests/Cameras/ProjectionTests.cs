@@ -1,4 +1,5 @@
 using RayLab.Cameras;
+using RayLab.Rendering.Packets;
 using RayLab.Simd;
 
 namespace RayLab.Tests.Cameras;

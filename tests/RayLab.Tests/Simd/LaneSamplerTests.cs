@@ -1,4 +1,5 @@
 using RayLab.Sampling;
+using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Tests.Simd;

@@ -80,7 +80,7 @@ public sealed class AdaptiveDiagram
             for (int i = 0; i < resolution; i++)
             {
                 double sx = (i + 0.5) / resolution, sy = (j + 0.5) / resolution;
-                image.SetPixel(i, j, scene.Trace(plane.GetRay(plane.Alpha(PixelX, sx), WindowMapping.Beta(PixelY + sy, height)), plane.TMin, plane.TMax));
+                image.SetPixel(i, j, plane.Trace(scene, plane.GetRay(plane.Alpha(PixelX, sx), WindowMapping.Beta(PixelY + sy, height))));
             }
         }
 
@@ -277,9 +277,8 @@ public sealed class AdaptiveDiagram
             return At(lx, ly, out _);
         }
 
-        private readonly Intensity Shoot(long lx, long ly) => scene.Trace(
-            plane.GetRay(WindowMapping.Alpha(lx, plane.Width * (double)Size), WindowMapping.Beta(ly, plane.Height * (double)Size)),
-            plane.TMin,
-            plane.TMax);
+        private readonly Intensity Shoot(long lx, long ly) => plane.Trace(
+            scene,
+            plane.GetRay(WindowMapping.Alpha(lx, plane.Width * (double)Size), WindowMapping.Beta(ly, plane.Height * (double)Size)));
     }
 }

@@ -1,6 +1,7 @@
-using RayLab.Sampling;
 using System.Runtime.InteropServices;
 using RayLab.Cameras;
+using RayLab.Rendering.Packets;
+using RayLab.Sampling;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Adaptive;

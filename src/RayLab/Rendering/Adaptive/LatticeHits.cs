@@ -2,6 +2,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
+using RayLab.Rendering.Packets;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Adaptive;
@@ -107,7 +108,7 @@ internal sealed class LatticeHits
     public static int TraceScalar(Scene scene, ImagePlane plane, double latticeWidth, double latticeHeight, long lx, long ly)
     {
         Ray ray = plane.GetRay(WindowMapping.Alpha(lx, latticeWidth), WindowMapping.Beta(ly, latticeHeight));
-        return scene.Nearest(ray, plane.TMin, plane.TMax) + 1;
+        return plane.Nearest(scene, ray) + 1;
     }
 
     /// <summary>

@@ -150,8 +150,14 @@ public sealed class ExactRenderer
     {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
-        OutlineSet.Build(scene, camera.GetImagePlane(width, height), withCrossings: false);
+        Check(scene, camera.GetImagePlane(width, height));
     }
+
+    /// <summary>Throws what <see cref="Render"/> would throw for <paramref name="scene"/> seen through <paramref name="plane"/>, without making the outlines.</summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="plane">The camera's image plane.</param>
+    /// <exception cref="UnsupportedSceneException">A sphere the exact reference cannot outline.</exception>
+    internal static void Check(Scene scene, ImagePlane plane) => OutlineSet.Check(scene, plane);
 
     private static RenderStatistics Run(Scene scene, ImagePlane plane, RenderOptions options, bool sweep, Action<int, ExactRow> writeRow)
     {

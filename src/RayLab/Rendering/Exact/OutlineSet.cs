@@ -43,14 +43,13 @@ internal sealed class OutlineSet
     /// <summary>Finds the outlines of <paramref name="scene"/> as <paramref name="plane"/> sees it.</summary>
     /// <param name="scene">The scene.</param>
     /// <param name="plane">The camera's image plane.</param>
-    /// <param name="withCrossings">False to skip finding where the outlines cross (for a check that draws nothing).</param>
     /// <param name="parallel">The threads to find the crossings with (and the cancellation); null for the defaults.</param>
     /// <exception cref="UnsupportedSceneException">
     /// A sphere that visible rays can reach extends behind a perspective camera's eye (or within 1e-4 of its
     /// radius of the plane through the eye): its outline is not an ellipse. Or the zoom is so high that double
     /// rounding alone moves its picture by more than 1e-6 of a pixel (<see cref="OutlineProjection.RoundingInPixels"/>).
     /// </exception>
-    public static OutlineSet Build(Scene scene, ImagePlane plane, bool withCrossings = true, ParallelOptions? parallel = null)
+    public static OutlineSet Build(Scene scene, ImagePlane plane, ParallelOptions? parallel = null)
     {
         var projection = new OutlineProjection(plane);
         double depthPerT = plane.DepthPerT;
@@ -62,24 +61,12 @@ internal sealed class OutlineSet
         {
             Sphere sphere = scene.Spheres[i];
             double r = sphere.Radius;
-            Double3 c = projection.ToCamera(sphere.Center);
-            double depth = -c.Z;
-            if (r == 0 || plane.Visibility(sphere.Center, r) == SphereVisibility.Hidden || !plane.MayBeInView(c, r))
+            if (!Keep(plane, projection, sphere, i, kept.Count, out Double3 c))
             {
                 continue;
             }
 
-            if (!plane.IsAheadOfEye(depth, r))
-            {
-                string span = string.Create(CultureInfo.InvariantCulture, $"from {depth - r:G6} to {depth + r:G6}");
-                throw new UnsupportedSceneException(i, $"reaches behind the perspective camera (its depth along the gaze runs {span}): "
-                    + "the exact sampler needs every sphere it can see wholly in front of the eye, its nearest point at a depth "
-                    + "above 1e-4 of its radius (move the sphere or the camera, or use a point sampler)");
-            }
-
-            ThrowIfBeyondDoublePrecision(i, projection.RoundingInPixels(c, r));
-            ThrowIfOneTooMany(i, kept.Count);
-
+            double depth = -c.Z;
             kept.Add((c, r));
             keptIndex.Add(i);
             outlines.Add(projection.Sphere(c, r));
@@ -103,7 +90,60 @@ internal sealed class OutlineSet
 
         Outline[] inImage = outlines.Where(o => (o.Hx > 0 || o.Hy > 0)
             && o.Right >= 0 && o.Left <= plane.Width && o.Bottom >= 0 && o.Top <= plane.Height).ToArray();
-        return new OutlineSet(inImage, withCrossings ? FindCrossings(inImage, plane.Height, parallel) : []);
+        return new OutlineSet(inImage, FindCrossings(inImage, plane.Height, parallel));
+    }
+
+    /// <summary>
+    /// Throws the <see cref="UnsupportedSceneException"/> that <see cref="Build"/> would throw for <paramref name="scene"/> seen through <paramref name="plane"/>,
+    /// without making the outlines: the same test of each sphere, nothing kept.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="plane">The camera's image plane.</param>
+    /// <exception cref="UnsupportedSceneException">As <see cref="Build"/>.</exception>
+    public static void Check(Scene scene, ImagePlane plane)
+    {
+        var projection = new OutlineProjection(plane);
+        int inView = 0;
+        for (int i = 0; i < scene.Spheres.Count; i++)
+        {
+            if (Keep(plane, projection, scene.Spheres[i], i, inView, out _))
+            {
+                inView++;
+            }
+        }
+    }
+
+    /// <summary>
+    /// Whether sphere <paramref name="index"/> can be seen (it gets an outline), with its centre in camera
+    /// coordinates; throws when it can be seen but not outlined.
+    /// </summary>
+    /// <param name="plane">The camera's image plane.</param>
+    /// <param name="projection">The plane's outline projection.</param>
+    /// <param name="sphere">The sphere.</param>
+    /// <param name="index">Its index in the scene.</param>
+    /// <param name="inView">How many spheres before it were kept.</param>
+    /// <param name="c">Its centre in camera coordinates.</param>
+    private static bool Keep(ImagePlane plane, OutlineProjection projection, Sphere sphere, int index, int inView, out Double3 c)
+    {
+        double r = sphere.Radius;
+        c = projection.ToCamera(sphere.Center);
+        double depth = -c.Z;
+        if (r == 0 || plane.Visibility(sphere.Center, r) == SphereVisibility.Hidden || !plane.MayBeInView(c, r))
+        {
+            return false;
+        }
+
+        if (!plane.IsAheadOfEye(depth, r))
+        {
+            string span = string.Create(CultureInfo.InvariantCulture, $"from {depth - r:G6} to {depth + r:G6}");
+            throw new UnsupportedSceneException(index, $"reaches behind the perspective camera (its depth along the gaze runs {span}): "
+                + "the exact sampler needs every sphere it can see wholly in front of the eye, its nearest point at a depth "
+                + "above 1e-4 of its radius (move the sphere or the camera, or use a point sampler)");
+        }
+
+        ThrowIfBeyondDoublePrecision(index, projection.RoundingInPixels(c, r));
+        ThrowIfOneTooMany(index, inView);
+        return true;
     }
 
     private static void ThrowIfBeyondDoublePrecision(int sphere, double rounding)

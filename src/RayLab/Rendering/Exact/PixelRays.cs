@@ -10,7 +10,7 @@ internal readonly struct PixelRays(Scene scene, ImagePlane plane)
     /// <summary>What the ray at pixel coordinates (X, Y) hits: a sphere's index, or −1.</summary>
     /// <param name="x">X.</param>
     /// <param name="y">Y.</param>
-    public int Hit(double x, double y) => scene.Nearest(plane.GetRayAt(x, y), plane.TMin, plane.TMax);
+    public int Hit(double x, double y) => plane.Nearest(scene, plane.GetRayAt(x, y));
 
     /// <summary>The colour at pixel coordinates (X, Y): the <see cref="Scene.ColourOf"/> what the ray there hits (flat shading).</summary>
     /// <param name="x">X.</param>

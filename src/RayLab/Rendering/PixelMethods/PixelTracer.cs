@@ -57,7 +57,7 @@ public sealed class PixelTracer
         CheckOffset(sx, nameof(sx));
         CheckOffset(sy, nameof(sy));
         RaysTraced++;
-        Intensity value = _scene.Trace(_plane.GetPixelRay(X, Row, sx, sy), _plane.TMin, _plane.TMax);
+        Intensity value = _plane.Trace(_scene, _plane.GetPixelRay(X, Row, sx, sy));
         Recorded?.Add(new TracedPoint(sx, sy, value));
         return value;
     }

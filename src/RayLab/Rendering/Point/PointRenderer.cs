@@ -1,6 +1,8 @@
 using RayLab.Cameras;
+using RayLab.Rendering.Packets;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
+using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Point;
@@ -132,7 +134,7 @@ internal static class PointRenderer
         {
             SamplePoint s = sampler.GetSample(x, row, i);
             Ray ray = TP.GetRay(plane, plane.Alpha(x, s.X), plane.Beta(row, s.Y));
-            Intensity value = scene.Trace(ray, plane.TMin, plane.TMax);
+            Intensity value = plane.Trace(scene, ray);
             r += value.R;
             g += value.G;
             b += value.B;

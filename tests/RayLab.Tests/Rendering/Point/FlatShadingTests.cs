@@ -1,7 +1,7 @@
 using RayLab.Cameras;
 using RayLab.Rendering.Exact;
+using RayLab.Rendering.Packets;
 using RayLab.Sampling;
-using RayLab.Simd;
 
 namespace RayLab.Tests.Rendering.Point;
 
@@ -60,9 +60,9 @@ public class FlatShadingTests
                 foreach ((double sx, double sy) in new[] { (0.5, 0.5), (0.1, 0.7), (0.9, 0.2) })
                 {
                     Ray ray = plane.GetPixelRay(x, row, sx, sy);
-                    int nearest = scene.Nearest(ray, plane.TMin, plane.TMax);
+                    int nearest = plane.Nearest(scene, ray);
                     hit.Add(nearest);
-                    Assert.Equal(scene.ColourOf(nearest), scene.Trace(ray, plane.TMin, plane.TMax));
+                    Assert.Equal(scene.ColourOf(nearest), plane.Trace(scene, ray));
                 }
             }
         }
@@ -99,7 +99,7 @@ public class FlatShadingTests
             {
                 for (int x = 0; x < W; x++)
                 {
-                    int nearest = scene.Nearest(plane.GetPixelRay(x, row, 0.5, 0.5), plane.TMin, plane.TMax);
+                    int nearest = plane.Nearest(scene, plane.GetPixelRay(x, row, 0.5, 0.5));
                     Assert.True(Rgb24.FromIntensity(scene.ColourOf(nearest)) == image.GetPixel(x, row), $"{kernel}, pixel ({x}, {row}): {image.GetPixel(x, row)}, the palette's colour of {nearest} is {scene.ColourOf(nearest)}");
                 }
             }
@@ -121,7 +121,7 @@ public class FlatShadingTests
         {
             for (int i = 0; i <= W; i++)
             {
-                corner[i, j] = scene.Nearest(plane.GetRayAt(i, j), plane.TMin, plane.TMax);
+                corner[i, j] = plane.Nearest(scene, plane.GetRayAt(i, j));
             }
         }
 

@@ -2,6 +2,8 @@ using System.Buffers;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
+using RayLab.Rendering.Packets;
+using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Point.Packets;

@@ -1,6 +1,8 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
+using RayLab.Rendering.Packets;
+using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Point.Packets;
@@ -178,13 +180,13 @@ internal static partial class PacketKernel
         colour.G.Store(values[(3 * count)..]);
         colour.B.Store(values[(4 * count)..]);
         uint lanes = colour.Unsure & (uint)((1UL << Math.Min(count, frame.Width - x0)) - 1); // not the lanes past the image
-        IRayFrame rays = frame.Rays;
+        ImagePlane plane = frame.Plane;
         for (uint rest = lanes; rest != 0; rest &= rest - 1)
         {
             int lane = BitOperations.TrailingZeroCount(rest);
 
-            Ray ray = rays.GetPixelRay(x0 + lane, row, values[lane], values[count + lane]);
-            Intensity value = frame.Scene.Trace(ray, rays.TMin, rays.TMax);
+            Ray ray = plane.GetPixelRay(x0 + lane, row, values[lane], values[count + lane]);
+            Intensity value = plane.Trace(frame.Scene, ray);
             values[(2 * count) + lane] = (float)value.R;
             values[(3 * count) + lane] = (float)value.G;
             values[(4 * count) + lane] = (float)value.B;

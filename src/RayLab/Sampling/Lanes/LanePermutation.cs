@@ -1,8 +1,8 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
-using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>
 /// One of Kensler's permutations (<see cref="Permutation.PermutationElement"/>) per lane: the lane's pattern

@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
-using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>
 /// <see cref="HammersleySampler"/> in lanes: the per-pixel shift is the counter hash in SIMD, made once per packet;

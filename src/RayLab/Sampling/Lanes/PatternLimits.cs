@@ -1,4 +1,4 @@
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>Where the permutation samplers' lanes are exact.</summary>
 internal static class PatternLimits

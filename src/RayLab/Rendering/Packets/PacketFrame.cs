@@ -1,6 +1,7 @@
+using RayLab.Cameras;
 using RayLab.Geometry;
 
-namespace RayLab.Simd;
+namespace RayLab.Rendering.Packets;
 
 /// <summary>
 /// One frame's constants for the packet kernel, in float: the window vectors a, b, c, and per sphere its
@@ -37,16 +38,16 @@ internal sealed class PacketFrame
     /// <summary>The most (in pixels) that float rounding may move a ray's direction or origin: 1/50 pixel.</summary>
     private const double Resolution = 0.02;
 
-    private PacketFrame(IRayFrame rays, Scene scene, int[] kept)
+    private PacketFrame(ImagePlane plane, Scene scene, int[] kept)
     {
-        Rays = rays;
+        Plane = plane;
         Scene = scene;
-        Width = rays.Width;
-        Height = rays.Height;
-        A = rays.A;
-        B = rays.B;
-        C = rays.C;
-        Direction = rays.ParallelDirection;
+        Width = plane.Width;
+        Height = plane.Height;
+        A = plane.A;
+        B = plane.B;
+        C = plane.C;
+        Direction = plane.ParallelDirection;
         Background = Vector(scene.ColourOf(-1));
         Sphere[] spheres = [.. kept.Select(index => scene.Spheres[index])];
         Spheres = new SphereConstants[spheres.Length];
@@ -56,7 +57,7 @@ internal sealed class PacketFrame
         for (int k = 0; k < spheres.Length; k++)
         {
             Sphere sphere = spheres[k];
-            (Double3 offset, double largest) = rays.SphereOffset(sphere.Center);
+            (Double3 offset, double largest) = plane.SphereOffset(sphere.Center);
             double bound = FloatRounding.DiscriminantError(sphere.Radius, largest);
             Spheres[k] = new SphereConstants(offset, (float)(sphere.Radius * sphere.Radius), (float)(1 / bound), Vector(scene.ColourOf(kept[k])));
             depthBounds[k] = DepthBound.Of(bound, sphere.Radius, largest);
@@ -75,7 +76,7 @@ internal sealed class PacketFrame
         if (hierarchy is not null)
         {
             double largestRadius = spheres.Length == 0 ? 0 : spheres.Max(sphere => sphere.Radius);
-            Hierarchy = PacketHierarchy.Create(hierarchy, rays, index => (Spheres[position[index]], depthBounds[position[index]]), largestRadius);
+            Hierarchy = PacketHierarchy.Create(hierarchy, plane, index => (Spheres[position[index]], depthBounds[position[index]]), largestRadius);
         }
     }
 
@@ -130,8 +131,8 @@ internal sealed class PacketFrame
     private static bool Close(Sphere a, Sphere b, double reachA, double reachB) =>
         (a.Center - b.Center).Length - a.Radius - b.Radius <= 2 * (reachA + reachB);
 
-    /// <summary>The frame's rays in double (the camera's image plane): the uncertain samples are traced again through it.</summary>
-    public IRayFrame Rays { get; }
+    /// <summary>The camera's image plane, in double: the uncertain samples are traced again through it.</summary>
+    public ImagePlane Plane { get; }
 
     public Scene Scene { get; }
 
@@ -167,13 +168,13 @@ internal sealed class PacketFrame
 
     /// <summary>The frame, when float with the error bounds can render it; else null and why not.</summary>
     /// <param name="scene">The scene.</param>
-    /// <param name="rays">The camera's rays for the frame (its image plane).</param>
+    /// <param name="plane">The camera's image plane for the frame.</param>
     /// <param name="frame">The frame constants.</param>
     /// <param name="reason">Why the frame needs the double path.</param>
-    public static bool TryCreate(Scene scene, IRayFrame rays, out PacketFrame? frame, out string? reason)
+    public static bool TryCreate(Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
     {
         frame = null;
-        double pixel = Math.Min(rays.A.Length / rays.Width, rays.B.Length / rays.Height);
+        double pixel = Math.Min(plane.A.Length / plane.Width, plane.B.Length / plane.Height);
         var kept = new List<int>();
         for (int k = 0; k < scene.Spheres.Count; k++)
         {
@@ -183,20 +184,20 @@ internal sealed class PacketFrame
                 continue;
             }
 
-            if (rays.Visibility(sphere.Center, sphere.Radius) != SphereVisibility.Whole)
+            if (plane.Visibility(sphere.Center, sphere.Radius) != SphereVisibility.Whole)
             {
                 reason = $"sphere {k} reaches past the near or far plane";
                 return false;
             }
 
-            (_, double largest) = rays.SphereOffset(sphere.Center);
+            (_, double largest) = plane.SphereOffset(sphere.Center);
             if (!(largest + sphere.Radius < 1e18))
             {
                 reason = $"sphere {k} is too far away for float";
                 return false;
             }
 
-            if (!(8 * FloatRounding.MachineEpsilon * rays.OriginRoundingSize(largest) <= Resolution * pixel))
+            if (!(8 * FloatRounding.MachineEpsilon * plane.OriginRoundingSize(largest) <= Resolution * pixel))
             {
                 reason = $"float cannot resolve the ray origins a pixel apart near sphere {k}";
                 return false;
@@ -205,14 +206,14 @@ internal sealed class PacketFrame
             kept.Add(k);
         }
 
-        if (!(8 * FloatRounding.MachineEpsilon * rays.DirectionRoundingSize <= Resolution * pixel))
+        if (!(8 * FloatRounding.MachineEpsilon * plane.DirectionRoundingSize <= Resolution * pixel))
         {
             reason = "float cannot resolve the ray directions a pixel apart (field of view too narrow for the image size)";
             return false;
         }
 
         reason = null;
-        frame = new PacketFrame(rays, scene, [.. kept]);
+        frame = new PacketFrame(plane, scene, [.. kept]);
         return true;
     }
 

@@ -1,8 +1,8 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
-using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>
 /// The cell formula of the jittered family, in double as the scalar samplers write it:

@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
-using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>
 /// <see cref="SobolSampler"/> in lanes: integer arithmetic only. Each nested uniform scramble reverses its input's

@@ -1,8 +1,8 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
-using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>
 /// <see cref="ZSobolSampler"/> in lanes: each lane's Sobol' indices come from <see cref="ZSobolSampler.FillIndices"/>

@@ -1,7 +1,9 @@
 using System.Runtime.CompilerServices;
+using RayLab.Cameras;
 using RayLab.Geometry;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Rendering.Packets;
 
 /// <summary>
 /// The scene's <see cref="SphereHierarchy"/> for one frame of the packet kernel: each box in float, as offsets
@@ -25,7 +27,7 @@ internal sealed class PacketHierarchy
     /// <summary>The widening of each box, relative to its distance from the eye.</summary>
     private const double Widening = 1e-4;
 
-    private PacketHierarchy(PacketNode[] nodes, SphereConstants[] spheres, DepthBound[] depthBounds, int depth, float radiusSlack, IRayFrame frame)
+    private PacketHierarchy(PacketNode[] nodes, SphereConstants[] spheres, DepthBound[] depthBounds, int depth, float radiusSlack, ImagePlane frame)
     {
         Nodes = nodes;
         Spheres = spheres;
@@ -35,7 +37,7 @@ internal sealed class PacketHierarchy
         _frame = frame;
     }
 
-    private readonly IRayFrame _frame;
+    private readonly ImagePlane _frame;
 
     /// <summary>The nodes in the hierarchy's order.</summary>
     public PacketNode[] Nodes { get; }
@@ -57,7 +59,7 @@ internal sealed class PacketHierarchy
     /// <param name="frame">The frame's rays.</param>
     /// <param name="constantsOf">A sphere's kernel constants and depth error constants, by its index in the scene.</param>
     /// <param name="largestRadius">The largest radius in the scene.</param>
-    public static PacketHierarchy Create(SphereHierarchy hierarchy, IRayFrame frame, Func<int, (SphereConstants Constants, DepthBound Bound)> constantsOf, double largestRadius)
+    public static PacketHierarchy Create(SphereHierarchy hierarchy, ImagePlane frame, Func<int, (SphereConstants Constants, DepthBound Bound)> constantsOf, double largestRadius)
     {
         Double3 fixedPoint = frame.FixedPoint;
         double window = frame.OriginReach;
@@ -161,7 +163,7 @@ internal sealed class PacketHierarchy
     /// </summary>
     private int Frustum(int x0, int lanes, int row, Span<Plane> planes)
     {
-        IRayFrame frame = _frame;
+        ImagePlane frame = _frame;
         double alpha0 = (x0 - 1.0) / frame.Width, alpha1 = (x0 + lanes + 1.0) / frame.Width;
         double beta0 = 1 - ((row + 2.0) / frame.Height), beta1 = 1 - ((row - 1.0) / frame.Height);
         Double3 centre = frame.Frustum(alpha0, alpha1, beta0, beta1, planes);
@@ -321,18 +323,6 @@ internal sealed class PacketHierarchy
 /// <param name="Axis">The split axis.</param>
 internal readonly record struct PacketNode(Float3 Lo, Float3 Hi, int Start, int Count, int Axis);
 
-/// <summary>A half-space n·x + d ≥ 0 (relative to the frame's fixed point).</summary>
-/// <param name="Normal">n, pointing inside.</param>
-/// <param name="Offset">d.</param>
-internal readonly record struct Plane(Double3 Normal, double Offset)
-{
-    /// <summary>The half-space n·x + d ≥ 0 with n = ±<paramref name="normal"/> pointing along <paramref name="inward"/>, through <paramref name="point"/>.</summary>
-    public static Plane Side(Double3 normal, Double3 inward, Double3 point)
-    {
-        Double3 n = Double3.Dot(normal, inward) >= 0 ? normal : -normal;
-        return new Plane(n, -Double3.Dot(n, point));
-    }
-}
 
 /// <summary>A packet's nearest hits: −t, colour, the smallest |Δ|/bound, the lanes uncertain in depth order and the error bound of each lane's t.</summary>
 internal readonly record struct LaneHit<TL>(TL Nearest, TL R, TL G, TL B, TL Closest, TL Unsure, TL NearestError)

@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
-using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>
 /// Where the samples of a packet's pixels go, lane by lane: sample <c>index</c> of pixels

@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
-using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>
 /// <see cref="MultiJitteredSampler"/> in lanes: the n column and n row permutations of each pixel get their

@@ -1,7 +1,8 @@
 using System.Runtime.CompilerServices;
 using RayLab.Geometry;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Rendering.Packets;
 
 /// <summary>
 /// One sphere against a packet of rays in float: the stable discriminant <c>Δ = r² − |f⊥|²</c>, <c>f⊥ = f − (f·d / d·d) d</c>

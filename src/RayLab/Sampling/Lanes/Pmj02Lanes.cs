@@ -1,8 +1,8 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
-using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>
 /// <see cref="Pmj02Sampler"/> and <see cref="Pmj02BNSampler"/> in lanes: each lane's pixel reads its own generated

@@ -1,8 +1,8 @@
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
-using RayLab.Sampling;
+using RayLab.Simd;
 
-namespace RayLab.Simd;
+namespace RayLab.Sampling.Lanes;
 
 /// <summary>
 /// A toroidal shift in double, as <see cref="HammersleySampler"/> writes it: <c>q + a·2⁻²⁴</c> wrapped into [0, 1),
