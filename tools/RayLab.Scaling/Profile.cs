@@ -52,9 +52,8 @@ internal sealed class Profile
         {
             ImagePlane plane = c.Prepared.Camera.GetImagePlane(image.Width, image.Height);
             var one = new ParallelOptions { MaxDegreeOfParallelism = 1 };
-            double all = Median(rounds, () => Time(() => OutlineSet.Build(scene, plane, parallel: one)));
-            double without = Median(rounds, () => Time(() => OutlineSet.Build(scene, plane, withCrossings: false)));
-            crossings = Math.Max(0, all - without);
+            Outline[] outlines = OutlineSet.Build(scene, plane, parallel: one).Outlines;
+            crossings = Median(rounds, () => Time(() => OutlineSet.FindCrossings(outlines, plane.Height, one)));
         }
 
         double buffers = Median(rounds, () => Wall(() =>

@@ -233,7 +233,7 @@ internal sealed class OutlineSet
         return (a.Centre + (along * n), radius, n);
     }
 
-    private static Crossing[] FindCrossings(Outline[] outlines, int height, ParallelOptions? parallel)
+    internal static Crossing[] FindCrossings(Outline[] outlines, int height, ParallelOptions? parallel)
     {
         var lists = new List<List<Crossing>>();
 
