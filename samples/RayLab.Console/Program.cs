@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.CommandLine.Help;
 using System.Globalization;
 using System.Runtime.InteropServices;
+using RayLab.Imaging;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -44,6 +45,7 @@ public static class Program
     /// <returns>The exit code.</returns>
     public static int Run(string[] args, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
+        ReportsImageFormats.Register(); // .webp for -o and --heatmap
         RootCommand root = BuildCommands(stdout, stderr, cancellation);
         ParseResult parsed = root.Parse(args);
         if (parsed.Errors.Count > 0)
