@@ -51,18 +51,19 @@ public static class Program
         if (parsed.Errors.Count > 0)
         {
             stderr.WriteLine(SceneFileException.OneLine(CommandLineError.Describe(parsed)));
-            return 2;
+            return CommandExit.BadCommandLine;
         }
 
         try
         {
+            // Each command's action returns through CommandExit.Run, which turns bad input, cancellation and lack of
+            // memory into one line and its code.
             return parsed.Invoke(new InvocationConfiguration { Output = stdout, Error = stderr, EnableDefaultExceptionHandler = false });
         }
         catch (Exception e)
         {
             // A bug, not bad input: still one line and no stack trace, but a distinct exit code.
-            stderr.WriteLine($"raylab: internal error: {e.GetType().Name}: {SceneFileException.OneLine(e.Message)}");
-            return 70;
+            return CommandExit.Bug(stderr, e);
         }
     }
 

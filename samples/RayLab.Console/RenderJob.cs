@@ -50,26 +50,16 @@ public static class RenderJob
         ArgumentNullException.ThrowIfNull(request);
         ArgumentNullException.ThrowIfNull(stdout);
         ArgumentNullException.ThrowIfNull(stderr);
-        try
-        {
-            RunOrThrow(request, stdout, stderr, cancellation);
-            return 0;
-        }
-        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
-        {
-            stderr.WriteLine($"raylab: cancelled; {SceneFileException.OneLine(request.OutputPath)} not written");
-            return Program.CancelledExitCode;
-        }
-        catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException or NotSupportedException)
-        {
-            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
-            return 1;
-        }
-        catch (OutOfMemoryException)
-        {
-            stderr.WriteLine($"raylab: error: not enough memory to render {SceneFileException.OneLine(request.ScenePath)} at the requested size");
-            return 1;
-        }
+        return CommandExit.Run(
+            stderr,
+            () =>
+            {
+                RunOrThrow(request, stdout, stderr, cancellation);
+                return CommandExit.Done;
+            },
+            cancelled: $"{request.OutputPath} not written",
+            tooLarge: $"render {request.ScenePath} at the requested size",
+            cancellation);
     }
 
     private static void RunOrThrow(RenderRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation)
