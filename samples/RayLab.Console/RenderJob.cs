@@ -161,8 +161,19 @@ public static class RenderJob
 
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"{request.OutputPath}: {image.Width}×{image.Height}, {prepared.Camera.Name} camera, {prepared.SamplerDescription}, "
-            + $"{stats.PrimaryRays:N0} rays ({stats.PrimaryRays / ((double)image.Width * image.Height):F2}/px), render {stats.RenderTime.TotalMilliseconds:F1} ms ({stats.RaysPerSecond / 1e6:F1} Mrays/s), encode {encodeMs:F1} ms"));
+            + $"{stats.PrimaryRays:N0} rays ({stats.PrimaryRays / ((double)image.Width * image.Height):F2}/px), render {stats.RenderTime.TotalMilliseconds:F1} ms ({stats.RaysPerSecond / 1e6:F1} Mrays/s{RenderTimeNote(warmupMs, RuntimeFeature.IsDynamicCodeCompiled)}), encode {encodeMs:F1} ms"));
     }
+
+    /// <summary>What the printed render time includes beyond the render: nothing in the native build; JIT compilation under the JIT, unless a warm-up render ran first.</summary>
+    /// <param name="warmupMs">The warm-up render's time, when one ran.</param>
+    /// <param name="jit">Whether code is compiled at run time (the JIT build, not Native AOT).</param>
+    /// <returns>"" or "; " and the note.</returns>
+    public static string RenderTimeNote(double? warmupMs, bool jit) => warmupMs switch
+    {
+        double ms => string.Create(CultureInfo.InvariantCulture, $"; after a {ms:F1} ms warm-up render"),
+        null when jit => "; JIT build: includes compiling what this run had not run before",
+        null => "",
+    };
 
     /// <summary>
     /// Commits the image's memory before the render's clock starts, as the anchors' zero-filled buffer is: the first

@@ -24,7 +24,7 @@ public sealed class CommandExitTests
 
     public static TheoryData<Exception> BadInput() =>
     [
-        new UsageException("--samples: expected 1 to 1024,\ngot 0"),
+        new UsageException("--samples: expected 1 to 1024, got 0"),
         new IOException("disk full"), new UnauthorizedAccessException("out: read-only"), new NotSupportedException("'.gif'"),
         new FormatException("table.csv: line 2"), new InvalidDataException("x.png: not a picture"),
     ];
