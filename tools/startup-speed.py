@@ -36,7 +36,7 @@ tmp = tempfile.mkdtemp()
 image, stats = os.path.join(tmp, "x.png"), os.path.join(tmp, "s.json")
 commands = [("`raylab --help`", ["--help"], False),
             ("8×8 render", ["render", scene, "--width", "8", "--height", "8", "-o", image], False),
-            ("exact, 1080p", ["render", scene, "--sampler", "exact", "--threads", "2", "-o", image, "--stats", stats], True),
+            ("exact, 1080p", ["render", scene, "--sampler", "exact", "--threads", "2", "-o", image, "--stats", stats, "--warmup"], True),
             ("jittered 16, 1080p", ["render", scene, "--sampler", "jittered", "--samples", "16", "--threads", "2", "-o", image, "--stats", stats], True)]
 wall = {(c, b): [] for c, *_ in commands for b, _ in builds}
 render = {(c, b): [] for c, *_ in commands for b, _ in builds}

@@ -16,7 +16,7 @@ run untraced, so the render is not slowed), and prints medians of the phases tho
   rest         the plain run's wall minus all of the above (medians): what none of them covers — the kernel's
                exec before execve returns, process teardown after the last thread, Python's spawn and wait
 
-With RAYLAB_WARMUP=1 in a third run per round (--warmup), the native build renders the scaled-down warm-up first,
+With raylab's --warmup in a third run per round (this tool's --warmup), the native build renders the scaled-down warm-up first,
 as the JIT build does, so renderMs after a warm-up can be compared with the cold one.
 
 Build first: dotnet publish samples/RayLab.Console -c Release -r linux-x64 -o artifacts/native
@@ -99,7 +99,7 @@ for _ in range(args.rounds):
         for k, v in phases(s["renderMs"]).items():
             r.setdefault(k, []).append(v)
         if args.warmup:
-            _, s = run(options, env={**os.environ, "RAYLAB_WARMUP": "1"})
+            _, s = run([*options, "--warmup"])
             r.setdefault("renderMs after warm-up", []).append(s["renderMs"])
 
 columns = ["wall", "start", "to render", "commitMs", "renderMs", "encodeMs", "encode", "after", "exit", "rest"]

@@ -113,23 +113,19 @@ public static class RenderJob
         {
             MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress, CancellationToken = cancellation,
         };
-        // The measurement harness, for the timing tools only (they all pass --stats): under the JIT, a smaller render of
-        // the same scene first, so that renderMs is the render and not the JIT compiling it (the native anchors are
+        // The measurement harness, only when asked for (--warmup; the timing tools pass it): a smaller render of the
+        // same scene first, so that renderMs is the render and not the JIT compiling it (the native anchors are
         // compiled ahead of time too); its time is reported as warmupMs. It is the same picture scaled down, so it
-        // meets the same edges and compiles the paths the render takes there. The native build (Native AOT) has
-        // nothing to compile, so it skips the warm-up and reports no warmupMs; RAYLAB_WARMUP=1 makes it warm up too.
-        // Then the image's memory is committed before the clock, as the anchors' zero-filled buffer is. A render
-        // without --stats does neither: it renders once.
+        // meets the same edges and compiles the paths the render takes there. Then the image's memory is committed
+        // before the clock, as the anchors' zero-filled buffer is (commitMs). Without --warmup the render is done
+        // once, as asked, whether or not --stats reports it, and the printed time says what it includes.
         double? warmupMs = null;
-        double commitMs = 0;
-        if (request.StatsPath is not null)
+        double? commitMs = null;
+        if (request.Warmup)
         {
-            if (RuntimeFeature.IsDynamicCodeCompiled || Environment.GetEnvironmentVariable(WarmupVariable) == "1")
-            {
-                var warmupClock = Stopwatch.StartNew();
-                prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
-                warmupMs = warmupClock.Elapsed.TotalMilliseconds;
-            }
+            var warmupClock = Stopwatch.StartNew();
+            prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
+            warmupMs = warmupClock.Elapsed.TotalMilliseconds;
 
             var commitClock = Stopwatch.StartNew();
             CommitPages(image, request.Threads ?? Environment.ProcessorCount);
@@ -326,13 +322,10 @@ public static class RenderJob
         }
     }
 
-    /// <summary>Set to 1 to make the native build render the warm-up too (for measurements: docs/performance.md).</summary>
-    public const string WarmupVariable = "RAYLAB_WARMUP";
-
     /// <summary>The most samples the warm-up render takes: about 1/16 of the 1080p, 16 spp benchmark.</summary>
     public const double WarmupSamples = 1 << 21;
 
-    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double commitMs, double encodeMs, double? warmupMs)
+    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double? commitMs, double encodeMs, double? warmupMs)
     {
         SamplerSettings sampler = prepared.Description.Sampler;
         var json = new RenderStatsFile
