@@ -5,7 +5,8 @@ For each of four commands — `raylab --help`, an 8×8 render, the exact referen
 16 spp at 1080p (benchmarks/anchors/bench-1080.json, 2 threads) — runs every build once per round, ROUNDS rounds
 (builds and commands interleaved, so that load drifts touch them alike), and prints a Markdown table of medians:
 wall time of the whole process (start to exit, as a user waits for it), and for the 1080p renders renderMs (the
-render loop alone) and encodeMs (writing the PNG) from --stats. With --before DIR, a third build: the JIT build of
+render loop alone) and encodeMs (writing the PNG) from --stats. No --warmup: the commands run as a user runs them, so
+the JIT build's renderMs includes compiling the render. With --before DIR, a third build: the JIT build of
 another checkout (DIR/samples/RayLab.Console/bin/Release/net10.0/raylab), e.g. the commit before the native build;
 with --build NAME=PATH (repeatable), any other raylab, e.g. a native build for another instruction set.
 
@@ -36,7 +37,7 @@ tmp = tempfile.mkdtemp()
 image, stats = os.path.join(tmp, "x.png"), os.path.join(tmp, "s.json")
 commands = [("`raylab --help`", ["--help"], False),
             ("8×8 render", ["render", scene, "--width", "8", "--height", "8", "-o", image], False),
-            ("exact, 1080p", ["render", scene, "--sampler", "exact", "--threads", "2", "-o", image, "--stats", stats, "--warmup"], True),
+            ("exact, 1080p", ["render", scene, "--sampler", "exact", "--threads", "2", "-o", image, "--stats", stats], True),
             ("jittered 16, 1080p", ["render", scene, "--sampler", "jittered", "--samples", "16", "--threads", "2", "-o", image, "--stats", stats], True)]
 wall = {(c, b): [] for c, *_ in commands for b, _ in builds}
 render = {(c, b): [] for c, *_ in commands for b, _ in builds}
