@@ -2,7 +2,7 @@
 """RayLab against the native C++ anchors (benchmarks/anchors), in one run.
 
 Renders benchmarks/anchors/bench-1080.json (the two-sphere scene at 1920x1080) with jittered 16 spp on 2 threads
-through `raylab render --stats` (renderMs: the render loop only, after a warm-up render; see README) and with
+through `raylab render --stats --warmup` (renderMs: the render loop only, after a warm-up render; see README) and with
 each anchor mode (`native.py ... 4 2 MODE`, render only), alternating, ROUNDS times; prints a Markdown table of
 medians and ratios. Also the lab's adaptive sampler at its defaults, and any extra rows given as raylab options.
 
@@ -49,7 +49,7 @@ extra = {}
 
 def run_ours(label, options):
     stats = os.path.join(tmp, "s.json")
-    subprocess.run(raylab + ["render", scene, "-o", os.path.join(tmp, "o.png"), "--threads", "2", "--stats", stats] + options,
+    subprocess.run(raylab + ["render", scene, "-o", os.path.join(tmp, "o.png"), "--threads", "2", "--stats", stats, "--warmup"] + options,
                    check=True, stdout=subprocess.DEVNULL, env={**os.environ, **environments.get(label, {})})
     s = json.load(open(stats))
     times[label].append(s["renderMs"])

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Every render method's speed on benchmarks/anchors/bench-1080.json, in one run, as ratios to jittered.
 
-Runs `raylab render bench-1080.json --threads 2 --stats` (renderMs: the render loop only, after a warm-up render)
+Runs `raylab render bench-1080.json --threads 2 --stats --warmup` (renderMs: the render loop only, after a warm-up render)
 for each row below, ROUNDS times, the rows interleaved round by round so that load drifts touch them alike, and
 prints a Markdown table: median renderMs, and jittered's median time at the same sample count divided by the
 row's (for a point sampler: its samples per second as a fraction of jittered's; for adaptive and exact: how much
@@ -45,7 +45,7 @@ times = {label: [] for label, *_ in rows}
 for _ in range(args.rounds):
     for label, path, options, _n in rows:
         stats = os.path.join(tmp, "s.json")
-        subprocess.run(["dotnet", path, "render", scene, "-o", os.path.join(tmp, "x.png"), "--threads", "2", "--stats", stats] + options + kernel,
+        subprocess.run(["dotnet", path, "render", scene, "-o", os.path.join(tmp, "x.png"), "--threads", "2", "--stats", stats, "--warmup"] + options + kernel,
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         with open(stats) as f:
             times[label].append(json.load(f)["renderMs"])

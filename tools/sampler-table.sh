@@ -10,7 +10,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 row() { # label, args...
   local label=$1; shift
-  "${raylab[@]}" render "$scene" -o "$tmp/img.png" --stats "$tmp/s.json" "$@" >/dev/null
+  "${raylab[@]}" render "$scene" -o "$tmp/img.png" --stats "$tmp/s.json" --warmup "$@" >/dev/null
   python3 - "$label" "$tmp/s.json" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[2]))
@@ -26,7 +26,7 @@ for camera in perspective; do
   done
   quincunx="$tmp/quincunx.json"
   python3 -c "import json,re,sys; t=re.sub(r'(?m)^\s*//.*\n','',open(sys.argv[1]).read()); d=json.loads(t); d['sampler']['quincunx']=True; json.dump(d,open(sys.argv[2],'w'))" "$scene" "$quincunx"
-  "${raylab[@]}" render "$quincunx" -o "$tmp/img.png" --stats "$tmp/s.json" --camera $camera >/dev/null
+  "${raylab[@]}" render "$quincunx" -o "$tmp/img.png" --stats "$tmp/s.json" --warmup --camera $camera >/dev/null
   python3 -c "import json,sys; s=json.load(open(sys.argv[1])); print(f\"| adaptive with the quincunx (every centre), depth 0–3, contrast 0.05 | {s['rays']:,} | {s['raysPerPixel']:.2f} |\")" "$tmp/s.json"
   for s in "regular 16" "random 16" "jittered 16" "cmj 16" "multijittered 16" "nrooks 16" "hammersley 16" "sobol 16" "pmj02 16" "pmj02bn 16" "zsobol 16"; do
     set -- $s

@@ -22,7 +22,7 @@ def median_ms(scene_path, *options):
     ms = []
     for _ in range(repeats):
         stats = os.path.join(tmp, "s.json")
-        subprocess.run(raylab + ["render", scene_path, "-o", os.path.join(tmp, "o.png"), "--threads", "2", "--stats", stats, *options],
+        subprocess.run(raylab + ["render", scene_path, "-o", os.path.join(tmp, "o.png"), "--threads", "2", "--stats", stats, "--warmup", *options],
                        check=True, stdout=subprocess.DEVNULL)
         s = json.load(open(stats))
         ms.append(s["renderMs"])

@@ -18,7 +18,7 @@ ms() {
   f=$1; shift
   runs=""
   for i in 1 2 3; do
-    timeout 60 "$R" render "$f" -o "$T/x.png" --threads 2 --stats "$T/s.json" "$@" >/dev/null 2>&1
+    timeout 60 "$R" render "$f" -o "$T/x.png" --threads 2 --stats "$T/s.json" --warmup "$@" >/dev/null 2>&1
     status=$?
     [ $status -eq 124 ] && { echo "> 60 s"; return; }
     [ $status -ne 0 ] && { echo "refused"; return; }

@@ -46,7 +46,7 @@ for name, scene, options, pairs in cases:
     for i in range(pairs):
         run = {}
         for k in (list(builds) if i % 2 == 0 else list(builds)[::-1]):
-            subprocess.run([builds[k], "render", scene, "-o", png, *options, "--threads", "2", "--stats", stats],
+            subprocess.run([builds[k], "render", scene, "-o", png, *options, "--threads", "2", "--stats", stats, "--warmup"],
                            check=True, stdout=subprocess.DEVNULL)
             with open(stats) as f:
                 run[k] = json.load(f)["renderMs"]

@@ -5,7 +5,8 @@ For each of four commands — `raylab --help`, an 8×8 render, the exact referen
 16 spp at 1080p (benchmarks/anchors/bench-1080.json, 2 threads) — runs every build once per round, ROUNDS rounds
 (builds and commands interleaved, so that load drifts touch them alike), and prints a Markdown table of medians:
 wall time of the whole process (start to exit, as a user waits for it), and for the 1080p renders renderMs (the
-render loop alone) and encodeMs (writing the PNG) from --stats. With --before DIR, a third build: the JIT build of
+render loop alone) and encodeMs (writing the PNG) from --stats. No --warmup: the commands run as a user runs them, so
+the JIT build's renderMs includes compiling the render. With --before DIR, a third build: the JIT build of
 another checkout (DIR/samples/RayLab.Console/bin/Release/net10.0/raylab), e.g. the commit before the native build;
 with --build NAME=PATH (repeatable), any other raylab, e.g. a native build for another instruction set.
 

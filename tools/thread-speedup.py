@@ -39,7 +39,7 @@ for _ in range(args.rounds):
         scene, method = case.split("-")
         stats = os.path.join(tmp, "s.json")
         subprocess.run(["dotnet", dict(builds)[build], "render", scenes[scene], "-o", os.path.join(tmp, "x.png"), "--width", "1920",
-                        "--height", "1080", "--threads", str(threads), "--stats", stats] + methods[method],
+                        "--height", "1080", "--threads", str(threads), "--stats", stats, "--warmup"] + methods[method],
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         with open(stats) as f:
             times[(case, build, threads)].append(json.load(f)["renderMs"])

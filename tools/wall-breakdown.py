@@ -9,15 +9,16 @@ run untraced, so the render is not slowed), and prints medians of the phases tho
   start        execve → the scene file's openat (loader, runtime start, command-line parsing)
   to render    scene openat → start of the render (scene load, preparation, image allocation), from the traced
                span scene-open → PNG-open minus renderMs
-  commitMs     of "to render", the image's pages first touched on every render thread (--stats' commitMs)
+  commitMs     of "to render", the image's pages first touched on every render thread (--stats' commitMs; only in
+               the --warmup run: a plain render pays those page faults inside renderMs)
   encode       PNG temp file openat → its rename returns (PNG encoding, write, fsync, rename = encodeMs)
   after        PNG rename → exit_group (the --stats JSON, the summary line)
   exit         exit_group → the last thread gone (strace's "+++ exited")
   rest         the plain run's wall minus all of the above (medians): what none of them covers — the kernel's
                exec before execve returns, process teardown after the last thread, Python's spawn and wait
 
-With RAYLAB_WARMUP=1 in a third run per round (--warmup), the native build renders the scaled-down warm-up first,
-as the JIT build does, so renderMs after a warm-up can be compared with the cold one.
+With raylab's --warmup in a third run per round (this tool's --warmup), the native build renders the scaled-down warm-up first
+and commits the image's pages, so renderMs after a warm-up can be compared with the cold one.
 
 Build first: dotnet publish samples/RayLab.Console -c Release -r linux-x64 -o artifacts/native
 With --faults, one more run per sampler under `perf record -e page-faults -c 1 -g` counts every page fault (a few µs
@@ -99,7 +100,7 @@ for _ in range(args.rounds):
         for k, v in phases(s["renderMs"]).items():
             r.setdefault(k, []).append(v)
         if args.warmup:
-            _, s = run(options, env={**os.environ, "RAYLAB_WARMUP": "1"})
+            _, s = run([*options, "--warmup"])
             r.setdefault("renderMs after warm-up", []).append(s["renderMs"])
 
 columns = ["wall", "start", "to render", "commitMs", "renderMs", "encodeMs", "encode", "after", "exit", "rest"]

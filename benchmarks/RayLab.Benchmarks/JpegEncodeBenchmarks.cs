@@ -96,7 +96,7 @@ public static class JpegCandidates
         switch (candidate)
         {
             case JpegCandidate.Skia90:
-                SkiaEncoder.Write(stream, image, ImageFormat.Jpeg, 90);
+                SkiaEncoder.Write(stream, image, SkiaEncoder.Kind.Jpeg, 90);
                 break;
             case JpegCandidate.JpegLibrary90:
                 Imaging.JpegEncoder.Write(stream, image, 90);

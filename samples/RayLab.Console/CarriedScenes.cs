@@ -55,23 +55,23 @@ public static class CarriedScenes
         ArgumentNullException.ThrowIfNull(stderr);
         IReadOnlyList<string> names = Names;
         int width = names.Count == 0 ? 0 : names.Max(n => n.Length);
-        foreach (string name in names)
-        {
-            try
+        return CommandExit.Run(
+            stderr,
+            () =>
             {
-                SceneDescription d = SceneFile.Load(Path.Combine(Folder, name + ".json"));
-                PreparedScene p = d.Prepare();
-                stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                    $"{name.PadRight(width)}  {d.Width}×{d.Height}, {d.Camera.Type} camera, {d.Scene.Spheres.Count} spheres, {p.SamplerDescription}"));
-            }
-            catch (SceneFileException e)
-            {
-                stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
-                return 1;
-            }
-        }
+                foreach (string name in names)
+                {
+                    SceneDescription d = SceneFile.Load(Path.Combine(Folder, name + ".json"));
+                    PreparedScene p = d.Prepare();
+                    stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                        $"{name.PadRight(width)}  {d.Width}×{d.Height}, {d.Camera.Type} camera, {d.Scene.Spheres.Count} spheres, {p.SamplerDescription}"));
+                }
 
-        stdout.WriteLine($"Render one by name from any folder: raylab render {(names.Contains("two-spheres") ? "two-spheres" : names.Count > 0 ? names[0] : "NAME")} -o out.png ({Folder})");
-        return 0;
+                stdout.WriteLine($"Render one by name from any folder: raylab render {(names.Contains("two-spheres") ? "two-spheres" : names.Count > 0 ? names[0] : "NAME")} -o out.png ({Folder})");
+                return CommandExit.Done;
+            },
+            cancelled: "the list is not complete",
+            tooLarge: "list the scenes",
+            CancellationToken.None);
     }
 }

@@ -28,18 +28,18 @@ public static class ChartCommand
         {
             string path = result.GetRequiredValue(table);
             string stem = result.GetRequiredValue(output);
-            try
-            {
-                (string xName, List<LogLogChart.Series> series) = Read(path);
-                LogLogChart.Save(stem, result.GetRequiredValue(title), result.GetValue(xLabel) ?? xName, result.GetRequiredValue(yLabel), series);
-                stdout.WriteLine($"{stem}.png, {stem}.svg: {series.Count} lines, {series.Sum(s => s.Points.Count)} points");
-                return 0;
-            }
-            catch (Exception e) when (e is IOException or UnauthorizedAccessException or FormatException)
-            {
-                stderr.WriteLine($"raylab: error: {e.Message.ReplaceLineEndings(" ")}");
-                return 1;
-            }
+            return CommandExit.Run(
+                stderr,
+                () =>
+                {
+                    (string xName, List<LogLogChart.Series> series) = Read(path);
+                    LogLogChart.Save(stem, result.GetRequiredValue(title), result.GetValue(xLabel) ?? xName, result.GetRequiredValue(yLabel), series);
+                    stdout.WriteLine($"{stem}.png, {stem}.svg: {series.Count} lines, {series.Sum(s => s.Points.Count)} points");
+                    return CommandExit.Done;
+                },
+                cancelled: $"{stem}.png not written",
+                tooLarge: $"draw {path}",
+                CancellationToken.None);
         });
         return chart;
     }

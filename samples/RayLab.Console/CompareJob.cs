@@ -29,6 +29,15 @@ public static class CompareJob
         bool done = false;
         try
         {
+            return CommandExit.Run(stderr, Work, $"no report written to {request.OutputFolder}", $"compare {request.ScenePath} at the requested size", cancellation);
+        }
+        finally
+        {
+            CleanUp(staging, done ? [] : created);
+        }
+
+        int Work()
+        {
             (PreparedScene scene, CompareCase[] cases, List<string> notes) = Plan(request);
             created = MissingFolders(request.OutputFolder);
             Directory.CreateDirectory(request.OutputFolder);
@@ -45,26 +54,7 @@ public static class CompareJob
             stdout.Write(report.Table());
             stdout.WriteLine($"wrote {Path.Combine(request.OutputFolder, "index.html")} ({measured.Results.Count} settings; results.md, results.csv, charts, images)");
             stdout.WriteLine(string.Create(CultureInfo.InvariantCulture, $"total time {clock.Elapsed.TotalSeconds:F1} s"));
-            return 0;
-        }
-        catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException)
-        {
-            stderr.WriteLine($"raylab: error: {e.Message}");
-            return 1;
-        }
-        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
-        {
-            stderr.WriteLine($"raylab: cancelled; no report written to {SceneFileException.OneLine(request.OutputFolder)}");
-            return Program.CancelledExitCode;
-        }
-        catch (OutOfMemoryException)
-        {
-            stderr.WriteLine($"raylab: error: not enough memory to compare {request.ScenePath} at the requested size");
-            return 1;
-        }
-        finally
-        {
-            CleanUp(staging, done ? [] : created);
+            return CommandExit.Done;
         }
     }
 

@@ -2,7 +2,6 @@ using System.CommandLine;
 using System.Globalization;
 using RayLab.Imaging;
 using RayLab.Metrics;
-using RayLab.Scenes;
 
 namespace RayLab.Cli;
 
@@ -28,24 +27,16 @@ public static class FlipCommand
         {
             reference, test, output, ppd,
         };
-        flip.SetAction(result =>
-        {
-            try
+        flip.SetAction(result => CommandExit.Run(
+            stderr,
+            () =>
             {
                 Run(result.GetRequiredValue(reference), result.GetRequiredValue(test), result.GetValue(output), result.GetValue(ppd), stdout);
-                return 0;
-            }
-            catch (Exception e) when (e is UsageException or IOException or UnauthorizedAccessException or NotSupportedException)
-            {
-                stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
-                return 1;
-            }
-            catch (OutOfMemoryException)
-            {
-                stderr.WriteLine("raylab: error: not enough memory to compare pictures this large");
-                return 1;
-            }
-        });
+                return CommandExit.Done;
+            },
+            cancelled: "no map written",
+            tooLarge: "compare pictures this large",
+            CancellationToken.None));
         return flip;
     }
 

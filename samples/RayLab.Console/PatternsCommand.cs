@@ -32,7 +32,7 @@ public static class PatternsCommand
             int n = result.GetRequiredValue(samples);
             uint s = result.GetRequiredValue(seed);
             string folder = result.GetRequiredValue(output);
-            try
+            return CommandExit.Run(stderr, () =>
             {
                 PatternSampler[] chosen = [.. (names.Length == 0 ? Samplers.Names : names).Select(Resolve)];
                 if (n is < 1 or > 1024)
@@ -50,12 +50,7 @@ public static class PatternsCommand
                 command.AddRange(names.Select(x => $"--sampler {x}"));
                 command.Add($"--samples {n} --seed {s} --out {folder}");
                 return PatternsJob.Run(new PatternsRequest(folder, chosen, n, s, Command: string.Join(' ', command)), stdout, stderr, cancellation);
-            }
-            catch (UsageException e)
-            {
-                stderr.WriteLine($"raylab: error: {e.Message}");
-                return 1;
-            }
+            }, $"nothing written to {folder}", $"draw the patterns of {n} samples", cancellation);
         });
         return patterns;
     }

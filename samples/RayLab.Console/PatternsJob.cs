@@ -1,6 +1,5 @@
 using System.Globalization;
 using RayLab.Patterns;
-using RayLab.Scenes;
 
 namespace RayLab.Cli;
 
@@ -27,6 +26,20 @@ public static class PatternsJob
         string? staging = null;
         try
         {
+            // The report's own argument checks (ArgumentException) are bad input here, not bugs.
+            return CommandExit.Run(stderr, Work, $"nothing written to {request.OutputFolder}", $"draw the patterns of {request.Samples} samples", cancellation,
+                alsoBadInput: e => e is ArgumentException);
+        }
+        finally
+        {
+            if (staging is not null && Directory.Exists(staging))
+            {
+                Directory.Delete(staging, recursive: true);
+            }
+        }
+
+        int Work()
+        {
             if (request.Samplers.Count == 0)
             {
                 throw new UsageException("--sampler: no sampler to draw");
@@ -46,24 +59,7 @@ public static class PatternsJob
             int moved = ReportFolder.Publish(staging, request.OutputFolder);
 
             stdout.WriteLine(string.Create(Inv, $"wrote {Path.Combine(request.OutputFolder, "index.html")} ({moved - 1} files) in {clock.Elapsed.TotalSeconds:F1} s"));
-            return 0;
-        }
-        catch (Exception e) when (e is UsageException or IOException or UnauthorizedAccessException or ArgumentException)
-        {
-            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
-            return 1;
-        }
-        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
-        {
-            stderr.WriteLine($"raylab: cancelled; nothing written to {SceneFileException.OneLine(request.OutputFolder)}");
-            return Program.CancelledExitCode;
-        }
-        finally
-        {
-            if (staging is not null && Directory.Exists(staging))
-            {
-                Directory.Delete(staging, recursive: true);
-            }
+            return CommandExit.Done;
         }
     }
 }

@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.CommandLine.Help;
 using System.Globalization;
 using System.Runtime.InteropServices;
+using RayLab.Imaging;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -44,23 +45,25 @@ public static class Program
     /// <returns>The exit code.</returns>
     public static int Run(string[] args, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
+        ReportsImageFormats.Register(); // .webp for -o and --heatmap
         RootCommand root = BuildCommands(stdout, stderr, cancellation);
         ParseResult parsed = root.Parse(args);
         if (parsed.Errors.Count > 0)
         {
             stderr.WriteLine(SceneFileException.OneLine(CommandLineError.Describe(parsed)));
-            return 2;
+            return CommandExit.BadCommandLine;
         }
 
         try
         {
+            // Each command's action returns through CommandExit.Run, which turns bad input, cancellation and lack of
+            // memory into one line and its code.
             return parsed.Invoke(new InvocationConfiguration { Output = stdout, Error = stderr, EnableDefaultExceptionHandler = false });
         }
         catch (Exception e)
         {
             // A bug, not bad input: still one line and no stack trace, but a distinct exit code.
-            stderr.WriteLine($"raylab: internal error: {e.GetType().Name}: {SceneFileException.OneLine(e.Message)}");
-            return 70;
+            return CommandExit.Bug(stderr, e);
         }
     }
 
@@ -86,11 +89,12 @@ public static class Program
         var guard = new Option<bool>("--guard") { Description = $"Adaptive: also refine, down to the maximum depth, every square a sphere's silhouette may cross although its points agree (never loses a small sphere or a sliver). Default: the scene's sampler.guard; {(d.Guard ? "true" : "false")} if omitted." };
         var kernel = new Option<string?>("--kernel") { Description = $"Point samplers and the adaptive sampler's traced points: the render loop, {Choices(RenderJob.Kernels)}; auto takes the widest SIMD packet the CPU runs, scalar is the double-precision reference loop. Default: auto.", HelpName = "KERNEL" };
         var heatmap = new Option<string?>("--heatmap") { Description = "Also write the primary rays spent per pixel as an image with a legend, .png, .bmp, .jpg/.jpeg or .webp. Default: none.", HelpName = "HEAT.png" };
+        var warmup = new Option<bool>("--warmup") { Description = "For timing: render the scene scaled down first and commit the image's memory, so that the render's time (printed, and the stats file's renderMs) leaves out JIT compilation and page faults; the stats file gives them as warmupMs and commitMs. Default: off, the render is done once." };
         var quality = new Option<int?>("--quality") { Description = $"JPEG and WebP quality, 0 to 100 (higher keeps more detail in a larger file); PNG and BMP are lossless and ignore it. Default: {ImageFormats.DefaultQuality}.", HelpName = "Q" };
 
         var render = new Command("render", "Render a scene file into an image.")
         {
-            scene, output, camera, sampler, samples, seed, minDepth, maxDepth, contrast, quincunx, guard, width, height, threads, kernel, stats, heatmap, quality,
+            scene, output, camera, sampler, samples, seed, minDepth, maxDepth, contrast, quincunx, guard, width, height, threads, kernel, stats, warmup, heatmap, quality,
         };
         render.SetAction(result => RenderJob.Run(
             new RenderRequest(
@@ -111,7 +115,8 @@ public static class Program
                 result.GetValue(kernel),
                 result.GetValue(quincunx),
                 result.GetValue(guard),
-                result.GetValue(quality)),
+                result.GetValue(quality),
+                result.GetValue(warmup)),
             stdout,
             stderr,
             cancellation));

@@ -50,26 +50,16 @@ public static class RenderJob
         ArgumentNullException.ThrowIfNull(request);
         ArgumentNullException.ThrowIfNull(stdout);
         ArgumentNullException.ThrowIfNull(stderr);
-        try
-        {
-            RunOrThrow(request, stdout, stderr, cancellation);
-            return 0;
-        }
-        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
-        {
-            stderr.WriteLine($"raylab: cancelled; {SceneFileException.OneLine(request.OutputPath)} not written");
-            return Program.CancelledExitCode;
-        }
-        catch (Exception e) when (e is SceneFileException or UsageException or IOException or UnauthorizedAccessException or NotSupportedException)
-        {
-            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
-            return 1;
-        }
-        catch (OutOfMemoryException)
-        {
-            stderr.WriteLine($"raylab: error: not enough memory to render {SceneFileException.OneLine(request.ScenePath)} at the requested size");
-            return 1;
-        }
+        return CommandExit.Run(
+            stderr,
+            () =>
+            {
+                RunOrThrow(request, stdout, stderr, cancellation);
+                return CommandExit.Done;
+            },
+            cancelled: $"{request.OutputPath} not written",
+            tooLarge: $"render {request.ScenePath} at the requested size",
+            cancellation);
     }
 
     private static void RunOrThrow(RenderRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation)
@@ -123,23 +113,19 @@ public static class RenderJob
         {
             MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress, CancellationToken = cancellation,
         };
-        // The measurement harness, for the timing tools only (they all pass --stats): under the JIT, a smaller render of
-        // the same scene first, so that renderMs is the render and not the JIT compiling it (the native anchors are
+        // The measurement harness, only when asked for (--warmup; the timing tools pass it): a smaller render of the
+        // same scene first, so that renderMs is the render and not the JIT compiling it (the native anchors are
         // compiled ahead of time too); its time is reported as warmupMs. It is the same picture scaled down, so it
-        // meets the same edges and compiles the paths the render takes there. The native build (Native AOT) has
-        // nothing to compile, so it skips the warm-up and reports no warmupMs; RAYLAB_WARMUP=1 makes it warm up too.
-        // Then the image's memory is committed before the clock, as the anchors' zero-filled buffer is. A render
-        // without --stats does neither: it renders once.
+        // meets the same edges and compiles the paths the render takes there. Then the image's memory is committed
+        // before the clock, as the anchors' zero-filled buffer is (commitMs). Without --warmup the render is done
+        // once, as asked, whether or not --stats reports it, and the printed time says what it includes.
         double? warmupMs = null;
-        double commitMs = 0;
-        if (request.StatsPath is not null)
+        double? commitMs = null;
+        if (request.Warmup)
         {
-            if (RuntimeFeature.IsDynamicCodeCompiled || Environment.GetEnvironmentVariable(WarmupVariable) == "1")
-            {
-                var warmupClock = Stopwatch.StartNew();
-                prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
-                warmupMs = warmupClock.Elapsed.TotalMilliseconds;
-            }
+            var warmupClock = Stopwatch.StartNew();
+            prepared.Render(renderer, WarmupImage(image.Width, image.Height, WarmupCostPerPixel(prepared.Description.Sampler)), null);
+            warmupMs = warmupClock.Elapsed.TotalMilliseconds;
 
             var commitClock = Stopwatch.StartNew();
             CommitPages(image, request.Threads ?? Environment.ProcessorCount);
@@ -171,8 +157,19 @@ public static class RenderJob
 
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"{request.OutputPath}: {image.Width}×{image.Height}, {prepared.Camera.Name} camera, {prepared.SamplerDescription}, "
-            + $"{stats.PrimaryRays:N0} rays ({stats.PrimaryRays / ((double)image.Width * image.Height):F2}/px), render {stats.RenderTime.TotalMilliseconds:F1} ms ({stats.RaysPerSecond / 1e6:F1} Mrays/s), encode {encodeMs:F1} ms"));
+            + $"{stats.PrimaryRays:N0} rays ({stats.PrimaryRays / ((double)image.Width * image.Height):F2}/px), render {stats.RenderTime.TotalMilliseconds:F1} ms ({stats.RaysPerSecond / 1e6:F1} Mrays/s{RenderTimeNote(warmupMs, RuntimeFeature.IsDynamicCodeCompiled)}), encode {encodeMs:F1} ms"));
     }
+
+    /// <summary>What the printed render time includes beyond the render: nothing in the native build; JIT compilation under the JIT, unless a warm-up render ran first.</summary>
+    /// <param name="warmupMs">The warm-up render's time, when one ran.</param>
+    /// <param name="jit">Whether code is compiled at run time (the JIT build, not Native AOT).</param>
+    /// <returns>"" or "; " and the note.</returns>
+    public static string RenderTimeNote(double? warmupMs, bool jit) => warmupMs switch
+    {
+        double ms => string.Create(CultureInfo.InvariantCulture, $"; after a {ms:F1} ms warm-up render"),
+        null when jit => "; JIT build: includes compiling what this run had not run before",
+        null => "",
+    };
 
     /// <summary>
     /// Commits the image's memory before the render's clock starts, as the anchors' zero-filled buffer is: the first
@@ -325,13 +322,10 @@ public static class RenderJob
         }
     }
 
-    /// <summary>Set to 1 to make the native build render the warm-up too (for measurements: docs/performance.md).</summary>
-    public const string WarmupVariable = "RAYLAB_WARMUP";
-
     /// <summary>The most samples the warm-up render takes: about 1/16 of the 1080p, 16 spp benchmark.</summary>
     public const double WarmupSamples = 1 << 21;
 
-    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double commitMs, double encodeMs, double? warmupMs)
+    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double? commitMs, double encodeMs, double? warmupMs)
     {
         SamplerSettings sampler = prepared.Description.Sampler;
         var json = new RenderStatsFile

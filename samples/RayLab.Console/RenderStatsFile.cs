@@ -4,8 +4,8 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// What <c>raylab render --stats</c> writes: the render's settings and counts, and its times — <c>renderMs</c> the
-/// render loop alone, <c>warmupMs</c> the JIT's warm-up render (absent in the native build, which has none),
-/// <c>commitMs</c> the image's memory first touched, <c>encodeMs</c> the image file. Fields that do not apply to the sampler are left out.
+/// render loop alone, <c>warmupMs</c> the warm-up render and <c>commitMs</c> the image's memory first touched (both
+/// only with <c>--warmup</c>), <c>encodeMs</c> the image file. Fields that do not apply to the sampler are left out.
 /// </summary>
 public sealed record RenderStatsFile
 {
@@ -60,14 +60,15 @@ public sealed record RenderStatsFile
     /// <summary>The render loop's wall time in milliseconds (not start-up, loading, warm-up or encoding).</summary>
     public double RenderMs { get; init; }
 
-    /// <summary>The JIT build's warm-up render in milliseconds; absent in the native build.</summary>
+    /// <summary>The warm-up render (<c>--warmup</c>) in milliseconds; absent without it.</summary>
     public double? WarmupMs { get; init; }
 
     /// <summary>
-    /// Committing the image's memory before the render, in milliseconds: its pages first touched, on every render
-    /// thread (the render's clock starts after it, as the native anchors' does after they zero their buffer).
+    /// Committing the image's memory before the render (<c>--warmup</c>), in milliseconds: its pages first touched, on
+    /// every render thread (the render's clock starts after it, as the native anchors' does after they zero their
+    /// buffer); absent without <c>--warmup</c>, when the render pays for them.
     /// </summary>
-    public double CommitMs { get; init; }
+    public double? CommitMs { get; init; }
 
     /// <summary>Writing the image file, in milliseconds.</summary>
     public double EncodeMs { get; init; }

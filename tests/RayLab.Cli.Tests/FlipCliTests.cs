@@ -110,8 +110,8 @@ public sealed partial class FlipCliTests : IDisposable
         AssertFails($"raylab: error: {empty}: not a picture", "flip", empty, test, "-o", map);
         AssertFails($"raylab: error: {cut}: ", "flip", reference, cut, "-o", map);
         AssertFails($"raylab: error: {_dir.Path}: is a folder, not a picture", "flip", _dir.Path, test, "-o", map);
-        AssertFails("raylab: error: --output: Unsupported image format '.txt'", "flip", reference, test, "-o", _dir.File("map.txt"));
-        AssertFails("raylab: error: --output: Unsupported image format '(no extension)'", "flip", reference, test, "-o", _dir.File("map"));
+        AssertFails("raylab: error: --output: No registered image format writes '.txt' files", "flip", reference, test, "-o", _dir.File("map.txt"));
+        AssertFails("raylab: error: --output: Cannot tell the image format of ", "flip", reference, test, "-o", _dir.File("map"));
         AssertFails($"raylab: error: --output: the folder '{_dir.File("no")}' does not exist", "flip", reference, test, "-o", _dir.File(Path.Combine("no", "map.png")));
         AssertFails($"raylab: error: --output: '{test}' is one of the pictures compared", "flip", reference, test, "-o", test);
         AssertFails("raylab: error: --ppd: expected 1 to 1000 pixels per degree, got 0", "flip", reference, test, "--ppd", "0");

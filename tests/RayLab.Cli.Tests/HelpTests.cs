@@ -68,6 +68,7 @@ public sealed class HelpTests
     [InlineData("--height", "Default: the scene's image.height.", "1 to 1048576, with W·H·3 ≤ 2,147,483,591 bytes")]
     [InlineData("--threads", "Default: all cores", "≥ 1")]
     [InlineData("--stats", "Default: none.", "JSON")]
+    [InlineData("--warmup", "Default: off", "leaves out JIT compilation")]
     [InlineData("--heatmap", "Default: none.", ".png, .bmp, .jpg/.jpeg or .webp")]
     [InlineData("--quality", "Default: 90.", "0 to 100")]
     public void EachRenderOptionStatesItsDefaultAndRange(string option, string defaultText, string rangeText)
@@ -83,7 +84,7 @@ public sealed class HelpTests
     {
         string[] entries = OptionEntries(RenderHelp());
 
-        Assert.Equal(18, entries.Length); // --output, 16 other options and --help
+        Assert.Equal(19, entries.Length); // --output, 17 other options and --help
         Assert.All(entries.Where(e => !e.Contains("--help", StringComparison.Ordinal)), e =>
             Assert.True(e.Contains("Default:", StringComparison.Ordinal) || e.Contains("(REQUIRED)", StringComparison.Ordinal), e));
     }

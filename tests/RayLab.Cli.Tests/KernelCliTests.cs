@@ -16,7 +16,7 @@ public sealed class KernelCliTests : IDisposable
     private JsonElement Stats(params string[] options)
     {
         string image = Path.Combine(_dir, "k.png"), stats = Path.Combine(_dir, "k.json");
-        var r = Run(["render", Scene, "-o", image, "--width", "48", "--height", "32", "--stats", stats, .. options]);
+        var r = Run(["render", Scene, "-o", image, "--width", "48", "--height", "32", "--stats", stats, "--warmup", .. options]);
         Assert.True(r.Code == 0, r.Err);
         return JsonDocument.Parse(File.ReadAllText(stats)).RootElement;
     }
@@ -36,16 +36,32 @@ public sealed class KernelCliTests : IDisposable
 
     /// <summary>
     /// The built app started on its own (raylab.dll with its own runtimeconfig.json, as <c>dotnet run</c> and the JIT tool
-    /// start it) is the JIT build and warms up: Native AOT's feature switches (IsDynamicCodeSupported false) must not
-    /// reach its runtimeconfig.json, where the native build's project settings could put them.
+    /// start it) is the JIT build, and its printed time says it includes JIT compilation: Native AOT's feature switches
+    /// (IsDynamicCodeSupported false) must not reach its runtimeconfig.json, where the native build's project settings
+    /// could put them. <c>--stats</c> alone does not warm up: it reports the render as done.
     /// </summary>
     [Fact]
-    public async Task TheBuiltAppStartedOnItsOwnIsTheJitBuildAndWarmsUp()
+    public async Task TheBuiltAppStartedOnItsOwnIsTheJitBuildAndStatsAloneDoNotWarmUp()
     {
         string stats = Path.Combine(_dir, "child.json");
         var r = await ConsoleRunner.RunChildAsync(_dir, "render", Scene, "-o", "child.png", "--width", "48", "--height", "32", "--stats", stats);
         Assert.True(r.Code == 0, r.Err);
-        Assert.True(JsonDocument.Parse(File.ReadAllText(stats)).RootElement.GetProperty("warmupMs").GetDouble() > 0);
+        Assert.Contains("JIT build: includes compiling", r.Out, StringComparison.Ordinal);
+        JsonElement root = JsonDocument.Parse(File.ReadAllText(stats)).RootElement;
+        Assert.False(root.TryGetProperty("warmupMs", out _), "--stats alone made a warm-up render");
+        Assert.False(root.TryGetProperty("commitMs", out _), "--stats alone committed the image's pages");
+    }
+
+    [Fact]
+    public void Warmup_renders_first_and_the_printed_time_says_so()
+    {
+        string image = Path.Combine(_dir, "w.png"), stats = Path.Combine(_dir, "w.json");
+        var r = Run(["render", Scene, "-o", image, "--width", "48", "--height", "32", "--warmup", "--stats", stats]);
+        Assert.True(r.Code == 0, r.Err);
+        JsonElement root = JsonDocument.Parse(File.ReadAllText(stats)).RootElement;
+        Assert.True(root.GetProperty("warmupMs").GetDouble() > 0);
+        Assert.True(root.GetProperty("commitMs").GetDouble() >= 0);
+        Assert.Matches(@"Mrays/s; after a \d+\.\d ms warm-up render\)", r.Out);
     }
 
     [Theory]

@@ -1,4 +1,3 @@
-using RayLab.Imaging;
 using System.Runtime.InteropServices;
 
 namespace RayLab;
@@ -80,27 +79,24 @@ public sealed class Image : IPixelRows
 
     /// <summary>
     /// Saves the image, choosing the format from the extension as System.Drawing's <c>Bitmap.Save</c> does:
-    /// <c>.png</c>, <c>.bmp</c>, <c>.jpg</c>/<c>.jpeg</c> or <c>.webp</c> (JPEG and WebP at quality
-    /// <see cref="ImageFormats.DefaultQuality"/>). The file is written under a temporary name in the same folder
-    /// and renamed, so a failure never leaves a partial file.
+    /// <c>.png</c>, <c>.bmp</c>, <c>.jpg</c>/<c>.jpeg</c>, or the extension of a format a package registered
+    /// (<see cref="ImageFormats.Register"/>); lossy formats at quality <see cref="ImageFormats.DefaultQuality"/>.
+    /// The file is written under a temporary name in the same folder and renamed, so a failure never leaves a partial file.
     /// </summary>
     /// <param name="path">The output path.</param>
-    /// <exception cref="NotSupportedException">The extension is not a supported format (the message names them).</exception>
+    /// <exception cref="NotSupportedException">No registered format has the extension (the message names the registered ones).</exception>
     /// <exception cref="DirectoryNotFoundException">The folder does not exist (the message names it).</exception>
     /// <exception cref="IOException">The folder cannot be written.</exception>
     public void Save(string path) => Save(path, ImageFormats.DefaultQuality);
 
     /// <summary>
-    /// Saves the image, choosing the format from the extension (see <see cref="Save(string)"/>); JPEG and WebP
-    /// are written at <paramref name="quality"/>, which PNG and BMP (lossless) ignore.
+    /// Saves the image, choosing the format from the extension (see <see cref="Save(string)"/>); lossy formats (JPEG)
+    /// are written at <paramref name="quality"/>, which lossless ones (PNG, BMP) ignore.
     /// </summary>
     /// <param name="path">The output path.</param>
-    /// <param name="quality">JPEG/WebP quality, 0–100 (90 by default; higher keeps more detail in a larger file).</param>
+    /// <param name="quality">Lossy quality, 0–100 (90 by default; higher keeps more detail in a larger file).</param>
     /// <exception cref="ArgumentOutOfRangeException">The quality is outside 0–100.</exception>
-    /// <exception cref="NotSupportedException">
-    /// The extension is not a supported format (the message names them), or it is <c>.webp</c> and the app does not
-    /// reference <c>RayLab.Reports</c> (the message names the package).
-    /// </exception>
+    /// <exception cref="NotSupportedException">No registered format has the extension (the message names the registered ones); no file is made.</exception>
     /// <exception cref="DirectoryNotFoundException">The folder does not exist (the message names it).</exception>
     /// <exception cref="IOException">The folder cannot be written.</exception>
     public void Save(string path, int quality)
@@ -108,11 +104,6 @@ public sealed class Image : IPixelRows
         ArgumentException.ThrowIfNullOrWhiteSpace(path);
         CheckQuality(quality);
         ImageFormat format = ImageFormat.FromPath(path);
-        if (format == ImageFormat.Webp)
-        {
-            _ = ImageEncoders.Get(format); // the package error before any file is made
-        }
-
         string full = Path.GetFullPath(path);
         string folder = Path.GetDirectoryName(full) ?? ".";
         if (!Directory.Exists(folder))
@@ -142,38 +133,22 @@ public sealed class Image : IPixelRows
         }
     }
 
-    /// <summary>Writes the image to a stream in the given format (JPEG and WebP at quality <see cref="ImageFormats.DefaultQuality"/>).</summary>
+    /// <summary>Writes the image to a stream in the given format (lossy formats at quality <see cref="ImageFormats.DefaultQuality"/>).</summary>
     /// <param name="stream">A writable stream.</param>
-    /// <param name="format">The format.</param>
+    /// <param name="format">The format, e.g. <see cref="ImageFormat.Png"/>.</param>
     public void Save(Stream stream, ImageFormat format) => Save(stream, format, ImageFormats.DefaultQuality);
 
-    /// <summary>Writes the image to a stream in the given format.</summary>
+    /// <summary>Writes the image to a stream in the given format (registered or not).</summary>
     /// <param name="stream">A writable stream.</param>
-    /// <param name="format">The format.</param>
-    /// <param name="quality">JPEG/WebP quality, 0–100; PNG and BMP ignore it.</param>
-    /// <exception cref="ArgumentOutOfRangeException">The format is unknown or the quality is outside 0–100.</exception>
-    /// <exception cref="NotSupportedException">The format is WebP and the app does not reference <c>RayLab.Reports</c> (the message names it).</exception>
+    /// <param name="format">The format, e.g. <see cref="ImageFormat.Png"/>.</param>
+    /// <param name="quality">Lossy quality, 0–100; PNG and BMP ignore it.</param>
+    /// <exception cref="ArgumentOutOfRangeException">The quality is outside 0–100.</exception>
     public void Save(Stream stream, ImageFormat format, int quality)
     {
         ArgumentNullException.ThrowIfNull(stream);
+        ArgumentNullException.ThrowIfNull(format);
         CheckQuality(quality);
-        switch (format)
-        {
-            case ImageFormat.Png:
-                PngEncoder.Write(stream, this);
-                break;
-            case ImageFormat.Bmp:
-                BmpEncoder.Write(stream, this);
-                break;
-            case ImageFormat.Jpeg:
-                JpegEncoder.Write(stream, this, quality);
-                break;
-            case ImageFormat.Webp:
-                ImageEncoders.Get(format)(stream, this, quality);
-                break;
-            default:
-                throw new ArgumentOutOfRangeException(nameof(format), format, "Unknown image format.");
-        }
+        format.Write(stream, this, quality);
     }
 
     private static void CheckQuality(int quality)

@@ -73,6 +73,7 @@ public sealed class LayerTests
         ["RayLab.IPixelRows"] = "Imaging",
         ["RayLab.ImageError"] = "Imaging",
         ["RayLab.ImageFormat"] = "Imaging",
+        ["RayLab.ImageEncoder"] = "Imaging",
         ["RayLab.ImageFormats"] = "Imaging",
         ["RayLab.Rgb24"] = "Imaging",
         ["RayLab.RenderKernel"] = "Rendering",
