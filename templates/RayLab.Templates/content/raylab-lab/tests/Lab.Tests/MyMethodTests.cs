@@ -36,7 +36,7 @@ public class MyMethodTests(ITestOutputHelper output)
 
         var image = new Image(File.Width, File.Height);
         var limit = new TimeLimit();
-        RenderStatistics stats = limit.Run(() => new Renderer().Render(File.Scene, camera, limit.MyMethod(), image));
+        RenderStatistics stats = limit.Run(() => new Renderer().Render(File.Scene, camera, limit.Method(), image));
 
         ImageError error = ImageError.Measure(image, exact);
         double raysPerPixel = (double)stats.PrimaryRays / (File.Width * File.Height);

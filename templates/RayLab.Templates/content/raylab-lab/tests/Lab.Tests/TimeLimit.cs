@@ -13,7 +13,7 @@ namespace MyLab.Tests;
 internal sealed class TimeLimit
 {
     /// <summary>The environment variable that sets the limit in seconds (e.g. a smaller one for a quick try).</summary>
-    public const string Variable = "RAYLAB_LAB_TIME_LIMIT_S";
+    public const string Variable = "LAB_TIME_LIMIT_S";
 
     private readonly ConcurrentDictionary<int, (int X, int Y)> _working = new();
     private long _last = -1;
@@ -26,15 +26,15 @@ internal sealed class TimeLimit
 
     /// <summary>Your method (a new MyMethod), watched: the renderer's calls note the pixel they are for.</summary>
     /// <returns>The render method to give the renderer.</returns>
-    public RenderMethod MyMethod() =>
+    public RenderMethod Method() =>
 #if (Sampler)
-        RenderMethod.Sampled(new WatchedSampler(new global::MyLab.MyMethod(), this));
+        RenderMethod.Sampled(new WatchedSampler(new MyMethod(), this));
 #else
-        RenderMethod.Custom(Watched(new global::MyLab.MyMethod()));
+        RenderMethod.Custom(Watched(new MyMethod()));
 #endif
 
     /// <summary>
-    /// Runs <paramref name="work"/> (a render with <see cref="MyMethod"/>) with the limit; fails with the pixel
+    /// Runs <paramref name="work"/> (a render with <see cref="Method"/>) with the limit; fails with the pixel
     /// MyMethod was on when the limit passed.
     /// </summary>
     /// <returns>What <paramref name="work"/> returned.</returns>

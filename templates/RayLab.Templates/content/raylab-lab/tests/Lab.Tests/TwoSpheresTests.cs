@@ -37,7 +37,7 @@ public class TwoSpheresTests
     {
         var image = new Image(File.Width, File.Height);
         var limit = new TimeLimit();
-        limit.Run(() => new Renderer().Render(File.Scene, camera, limit.MyMethod(), image));
+        limit.Run(() => new Renderer().Render(File.Scene, camera, limit.Method(), image));
         return image;
     }
 }
