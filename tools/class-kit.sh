@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
 # The class kit: one folder that hands out the lab with no network and grades it (docs/teaching.md).
-#   DIR/feed/              every package a new lab restores: RayLab, RayLab.Reports, RayLab.ImageSharp (when the
-#                          repository has it), RayLab.Templates, the RayLab.Tool packages, and xUnit, the test SDK,
-#                          SixLabors.ImageSharp, … with their dependencies, copied from a fresh NuGet cache after
-#                          restoring a lab of every kind
-#   DIR/checks/KIND/       the instructor's pinned checks: a lab of that kind as the template makes it (the exercise
-#                          lab with its reference solution); `raylab grade` replaces each submission's tests/Lab.Tests
-#                          and root build files with these
+#   DIR/feed/              what the students get: every package a new lab restores: RayLab, RayLab.Reports,
+#                          RayLab.ImageSharp (when the repository has it), RayLab.Templates (no reference solution in
+#                          it), the RayLab.Tool packages, and xUnit, the test SDK, SixLabors.ImageSharp, … with their
+#                          dependencies, copied from a fresh NuGet cache after restoring a lab of every kind
+#   DIR/instructor/        the instructor's template package, RayLab.Templates.Instructor (`dotnet new
+#                          raylab-lab-solution`: the exercise lab with its reference solution), kept out of feed/
+#   DIR/checks/KIND/       the instructor's pinned checks: a lab of that kind as the templates make it (the exercise
+#                          lab from raylab-lab-solution, with its reference solution); `raylab grade` replaces each
+#                          submission's tests/Lab.Tests and root build files with these
 #   DIR/raylab-linux-x64/  the native raylab (as tools/publish-native.sh makes it), which also grades
 #   DIR/playground/        the published playground site (samples/RayLab.Web), for any static host
 #   DIR/README.md          the instructor's page, Polish and English (docs/teaching.md is the long form)
 # Usage: tools/class-kit.sh DIR [--feed-only]
-#   --feed-only  the feed (without the tool packages) and the checks alone: what a lab needs (the CI test uses it)
+#   --feed-only  the feed (without the tool packages), instructor/ and the checks alone: what a lab needs (the CI test
+#                uses it)
 # Needs the .NET SDK and network access to a NuGet source for xUnit & co. (the machine's own sources), and for the
 # native build a C toolchain (clang or gcc) and unzip (or python3).
 set -euo pipefail
@@ -44,6 +47,9 @@ projects=(src/RayLab src/RayLab.Reports templates/RayLab.Templates)
 for p in "${projects[@]}"; do
   dotnet pack "$repo/$p" -c Release -o "$feed" --artifacts-path "$work/artifacts" -v q -nologo
 done
+# The reference solution's package goes beside the feed, not in it: feed/ is what the students get.
+echo "== the instructor's template package -> $kit/instructor"
+dotnet pack "$repo/templates/RayLab.Templates.Instructor" -c Release -o "$kit/instructor" --artifacts-path "$work/artifacts" -v q -nologo
 if [ $full = 1 ]; then
   # The tool: the pointer package, the framework-dependent build every OS runs, and the native linux-x64 build.
   dotnet pack "$repo/samples/RayLab.Console" -c Release -o "$feed" -v q -nologo
@@ -53,9 +59,10 @@ fi
 template=$(ls "$feed"/RayLab.Templates.*.nupkg)
 version=$(basename "$template" .nupkg); version=${version#RayLab.Templates.}
 # One version for all (MinVer: the commit's); a commit made while packing would split them.
-for p in "${projects[@]}"; do
+for p in "${projects[@]}" templates/RayLab.Templates.Instructor; do
   id=$(basename "$p")
-  if [ ! -e "$feed/$id.$version.nupkg" ]; then
+  [ "$id" = RayLab.Templates.Instructor ] && dir="$kit/instructor" || dir="$feed"
+  if [ ! -e "$dir/$id.$version.nupkg" ]; then
     echo "tools/class-kit.sh: $id was not packed at the templates' version $version (a commit during the run?); make the kit again" >&2
     exit 1
   fi
@@ -65,8 +72,9 @@ echo "== a lab of every kind, restored into an empty NuGet cache: its packages g
 export DOTNET_CLI_HOME="$work/home" NUGET_PACKAGES="$work/packages"
 mkdir -p "$DOTNET_CLI_HOME" "$NUGET_PACKAGES"
 dotnet new install "RayLab.Templates::$version" --add-source "$feed" >/dev/null
-# The kinds this template offers: the exercise lab (with its reference solution: the checks' oracle) where the
-# template has --kind, else the method lab alone.
+dotnet new install "RayLab.Templates.Instructor::$version" --add-source "$kit/instructor" >/dev/null
+# The kinds this template offers: the exercise lab (from raylab-lab-solution, with its reference solution: the checks'
+# oracle) where the template has --kind, else the method lab alone.
 if dotnet new raylab-lab --help 2>/dev/null | grep -q -- '--kind'; then
   kinds=(exercise method)
 else
@@ -76,8 +84,9 @@ labs="$work/labs"
 for kind in "${kinds[@]}"; do
   args=(-o "$labs/$kind" -n MyLab --feed "$feed" --skipRestore)
   [ ${#kinds[@]} -gt 1 ] && args+=(--kind "$kind")
-  [ "$kind" = exercise ] && args+=(--solution)
-  dotnet new raylab-lab "${args[@]}" >/dev/null
+  template=raylab-lab
+  [ "$kind" = exercise ] && template=raylab-lab-solution
+  dotnet new "$template" "${args[@]}" >/dev/null
   # Restoring the checks restores the whole lab (they reference src/Lab); the method option's two kinds of
   # MyMethod.cs use the same packages.
   dotnet restore "$labs/$kind/tests/Lab.Tests" -v q -nologo
@@ -122,6 +131,7 @@ for nupkg in "$NUGET_PACKAGES"/*/*/*.nupkg; do
 done
 rm -f "$feed"/*.snupkg
 dotnet new uninstall RayLab.Templates >/dev/null
+dotnet new uninstall RayLab.Templates.Instructor >/dev/null
 
 if [ $full = 1 ]; then
   # The native tool package holds what tools/publish-native.sh makes (raylab for x86-64-v2, its -v3 and -v4 siblings,
@@ -143,4 +153,4 @@ fi
 
 cp "$repo/tools/class-kit/README.md" "$kit/README.md"
 sed -i "s/RAYLAB_KIT_VERSION/$version/g" "$kit/README.md"
-echo "$kit: RayLab $version, $(ls "$feed" | wc -l) packages in feed/, checks: ${kinds[*]}$([ $full = 1 ] && echo ', raylab-linux-x64/, playground/')"
+echo "$kit: RayLab $version, $(ls "$feed" | wc -l) packages in feed/ (hand out), instructor/ and checks: ${kinds[*]} (keep)$([ $full = 1 ] && echo ', raylab-linux-x64/, playground/')"

@@ -5,8 +5,9 @@ namespace RayLab.Templates.Tests;
 
 /// <summary>
 /// Once for the test class: <c>tools/class-kit.sh --feed-only</c> makes a kit (the feed with every package a lab
-/// restores, and the pinned checks), which is then moved to another path (the folder it was made in is deleted); the
-/// template is installed from the moved kit's feed in a temporary DOTNET_CLI_HOME, with an empty NUGET_PACKAGES and a
+/// restores, the instructor's template package beside it and the pinned checks), which is then moved to another path
+/// (the folder it was made in is deleted); the students' template is installed from the moved kit's feed, and the
+/// instructor's from its instructor/ folder, in a temporary DOTNET_CLI_HOME, with an empty NUGET_PACKAGES and a
 /// nuget.config above the work folders that clears every package source.
 /// </summary>
 public sealed class ClassKit : IAsyncLifetime
@@ -50,6 +51,7 @@ public sealed class ClassKit : IAsyncLifetime
             </configuration>
             """);
         await RunAsync(Work, "dotnet", "new", "install", $"RayLab.Templates::{Version}", "--add-source", Path.Combine(Kit, "feed"));
+        await RunAsync(Work, "dotnet", "new", "install", $"RayLab.Templates.Instructor::{Version}", "--add-source", Path.Combine(Kit, "instructor"));
     }
 
     public ValueTask DisposeAsync()
@@ -77,11 +79,11 @@ public sealed class ClassKit : IAsyncLifetime
     /// <param name="name">The lab's name and folder.</param>
     /// <param name="restore">Whether <c>dotnet new</c> restores it.</param>
     /// <param name="kind">The template's <c>--kind</c>: <c>method</c> (the submissions change MyMethod.cs) or <c>exercise</c>.</param>
-    /// <param name="extra">More template options (e.g. <c>--solution</c>).</param>
-    public async Task<string> NewLabAsync(string folder, string name, bool restore, string kind = "method", params string[] extra)
+    /// <param name="template">The template's short name: <c>raylab-lab</c> (the students') or <c>raylab-lab-solution</c> (the instructor's).</param>
+    public async Task<string> NewLabAsync(string folder, string name, bool restore, string kind = "method", string template = "raylab-lab")
     {
         string lab = Path.Combine(folder, name);
-        List<string> args = ["new", "raylab-lab", "-o", lab, "--kind", kind, "--feed", Path.Combine(Kit, "feed"), "--offline", .. extra];
+        List<string> args = ["new", template, "-o", lab, "--kind", kind, "--feed", Path.Combine(Kit, "feed"), "--offline"];
         if (!restore)
         {
             args.Add("--skipRestore");
@@ -120,6 +122,10 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
     public async Task ALabFromTheMovedKitRestoresBuildsAndPassesItsTestsWithTheKitsFeedAsItsOnlySource()
     {
         Assert.False(Directory.Exists(kit.MadeAt), "the kit is still where it was made");
+        // The solution's package is beside the feed, not in it; the checks (the instructor's) hold the solution.
+        Assert.Empty(Directory.GetFiles(Path.Combine(kit.Kit, "feed"), "RayLab.Templates.Instructor.*"));
+        Assert.Single(Directory.GetFiles(Path.Combine(kit.Kit, "instructor"), $"RayLab.Templates.Instructor.{kit.Version}.nupkg"));
+        Assert.Contains("c = (u0 * u) + (v0 * v) - (S * w)", File.ReadAllText(Path.Combine(kit.Kit, "checks", "exercise", "src", "Lab", "LabPerspectiveCamera.cs")), StringComparison.Ordinal);
         string lab = await kit.NewLabAsync(kit.Work, "Jan_Kowalski", restore: true);
         string config = File.ReadAllText(Path.Combine(lab, "nuget.config"));
         Assert.Contains("<clear />", config, StringComparison.Ordinal);
@@ -127,7 +133,8 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
 
         await kit.RunAsync(lab, "dotnet", "build");
         string output = await kit.RunAsync(lab, "dotnet", "test", "--no-build");
-        Assert.Matches(@"Failed: +0, Passed: +\d+", output);
+        Assert.Matches(@"(?m)^\s+Passed: +\d+\s*$", output); // the lab's detailed summary
+        Assert.DoesNotMatch(@"(?m)^\s+Failed: +[1-9]\d*\s*$", output);
         // Everything the lab restored came from the kit: xUnit and the test SDK too.
         string[] feed = [.. Directory.GetFiles(Path.Combine(kit.Kit, "feed"), "*.nupkg").Select(f => Path.GetFileName(f).ToLowerInvariant())];
         foreach (string package in new[] { "xunit.v3.mtp-off", "microsoft.net.test.sdk", "raylab" })
@@ -233,8 +240,8 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
     {
         // The exercise lab: the reference solution, and the solution with the 8-bit rule rounded instead of cut (2.2).
         string submissions = Directory.CreateDirectory(Path.Combine(kit.Root, "exercise-submissions")).FullName;
-        await kit.NewLabAsync(submissions, "solution", restore: false, "exercise", "--solution");
-        string rounded = await kit.NewLabAsync(submissions, "rounded", restore: false, "exercise", "--solution");
+        await kit.NewLabAsync(submissions, "solution", restore: false, "exercise", "raylab-lab-solution");
+        string rounded = await kit.NewLabAsync(submissions, "rounded", restore: false, "exercise", "raylab-lab-solution");
         Edit(rounded, "src/Lab/LabImage.cs", "(byte)(int)scaled", "(byte)Math.Round(scaled)");
 
         string report = Path.Combine(kit.Root, "exercise-report");

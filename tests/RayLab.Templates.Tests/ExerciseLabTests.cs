@@ -7,7 +7,7 @@ namespace RayLab.Templates.Tests;
 /// <summary>
 /// The exercise lab (<c>dotnet new raylab-lab</c>, <c>--kind exercise</c> by default): the skeletons build, every section's
 /// checks fail in the lab's words and <c>dotnet run</c> names the classes still to write, in each language; the
-/// reference solution (<c>--solution</c>) passes every check and writes the pictures; and five sabotages of the
+/// reference solution (the instructor's template, <c>dotnet new raylab-lab-solution</c>) passes every check and writes the pictures; and five sabotages of the
 /// solution each fail their own section. One restored solution lab serves all the sabotages
 /// (edit, <c>dotnet test --no-restore</c>, put the file back).
 /// </summary>
@@ -83,7 +83,7 @@ public sealed partial class LabTemplateTests
     public async Task TheSolutionPassesEveryCheckRendersThePicturesAndEachSabotageFailsItsOwnSection()
     {
         string lab = Path.Combine(TrappedFolder("solution"), "Lab2");
-        await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "-o", lab, "--solution", "--feed", feed.Feed);
+        await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab-solution", "-o", lab, "--feed", feed.Feed);
         AssertNoTemplateLeftovers(lab);
 
         // Every check passes.

@@ -90,13 +90,19 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
         // 2. dotnet test: green out of the box, with the packages of this checkout's version from the feed.
         (int testExit, string testOutput) = await feed.RunUncheckedAsync(lab, "dotnet", "test");
         Assert.True(testExit == 0, $"dotnet test failed in the new lab:\n{testOutput}");
-        (int passed, int failed) = Counts(testOutput);
+        (int passed, int failed) = DetailedCounts(testOutput);
         Assert.Equal(0, failed);
         Assert.True(passed >= 15, $"only {passed} tests passed:\n{testOutput}");
+        foreach (string camera in new[] { "orthographic", "perspective" })
+        {
+            // MyMethodTests' figures, in what dotnet test shows.
+            Assert.Matches($@"{camera}: RMSE [\d.]+, mean [\d.]+, max \d+ levels, [\d.]+ rays per pixel, [\d.]+ ms", testOutput);
+        }
         Assert.True(Directory.Exists(Path.Combine(feed.Packages, "raylab", feed.Version)), "RayLab was not restored at the packed version");
 
         // 3. dotnet run: rays and time for each camera and method, both pictures (and the exact ones), obrazkoncowy.jpg.
         string output = await feed.RunAsync(lab, "dotnet", "run", "--project", Path.Combine("src", "Lab"));
+        Assert.Matches(@"(?m)^warm-up \(80×60, both cameras, both methods, not counted\) [\d.]+ ms", output);
         string outDir = Path.Combine(lab, "out");
         foreach (string camera in new[] { "orthographic", "perspective" })
         {
@@ -122,12 +128,72 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
         File.WriteAllText(myMethod, source.Replace(line, sabotage, StringComparison.Ordinal));
         (int sabotagedExit, string sabotagedOutput) = await feed.RunUncheckedAsync(lab, "dotnet", "test");
         Assert.NotEqual(0, sabotagedExit);
-        (int stillPassing, int nowFailing) = Counts(sabotagedOutput); // a summary line: it built, and tests ran and failed
+        (int stillPassing, int nowFailing) = DetailedCounts(sabotagedOutput); // a summary: it built, and tests ran and failed
         Assert.True(nowFailing >= 1, $"no test failed with the sabotaged MyMethod:\n{sabotagedOutput}");
         string tests = name.Replace('-', '_') + ".Tests"; // the namespace: the name as a C# identifier
         Assert.Matches($@"(?m)^\s*Failed {tests}\.MyMethodTests\.MyMethodIsCloseToTheExactImageAtAStatedCost", sabotagedOutput);
         Assert.Matches($@"(?m)^\s*Failed {tests}\.TwoSpheresTests\.", sabotagedOutput);
+        Assert.Matches(@"RMSE [\d.]+ levels > [\d.]+ \(perspective: RMSE [\d.]+, mean [\d.]+, max \d+ levels, [\d.]+ rays per pixel, [\d.]+ ms\)", sabotagedOutput); // the figures in the failure message
         Assert.True(stillPassing > 0, "the tests that do not use MyMethod should still pass");
+    }
+
+    [Fact]
+    public async Task AMyMethodThatNeverReturnsFailsItsTestsAtTheTimeLimitNamingThePixel()
+    {
+        // The method lab with a MyMethod that stops for good at one pixel; the limit set to 5 s for this run.
+        string work = Directory.CreateDirectory(Path.Combine(feed.Root, "work-hang")).FullName;
+        string lab = Path.Combine(work, "HangLab");
+        await feed.RunAsync(work, "dotnet", "new", "raylab-lab", "-o", lab, "--kind", "method", "--feed", feed.Feed);
+        string myMethod = Path.Combine(lab, "src", "Lab", "MyMethod.cs");
+        string line = "return sum / Points.Length;";
+        string source = File.ReadAllText(myMethod);
+        Assert.Contains(line, source, StringComparison.Ordinal);
+        File.WriteAllText(myMethod, source.Replace(line, "if (pixel.X == 123 && pixel.Row == 45) { Thread.Sleep(Timeout.Infinite); }\n        " + line, StringComparison.Ordinal));
+
+        // dotnet test ends (the child's own timeout is minutes, not seconds): the tests that render with MyMethod fail
+        // at the limit, each naming the pixel.
+        (int exit, string output) = await feed.RunUncheckedAsync(lab, new Dictionary<string, string?> { ["LAB_TIME_LIMIT_S"] = "5" },
+            "dotnet", "test", "--filter", "FullyQualifiedName~MyMethodTests");
+        Assert.NotEqual(0, exit);
+        (int passed, int failed) = DetailedCounts(output);
+        Assert.True(passed == 0 && failed == 2, $"the hanging method: {passed} passed, {failed} failed:\n{output}");
+        // (dotnet test shows each failure's message twice: as it happens, and in the list of failures)
+        int limits = Regex.Count(output, @"Time limit of \d+ s passed");
+        Assert.True(limits >= 2, $"no test failed at the time limit:\n{output}");
+        Assert.Equal(limits, Regex.Count(output, @"Time limit of 5 s passed: MyMethod did not finish \(an endless loop\?\)\. It was working on pixel \(123, 45\)\."));
+    }
+
+    [Fact]
+    public async Task TheMethodLabsReadmeCompareExampleBuildsAsPastedAndItsLinksStayInTheLab()
+    {
+        string work = Directory.CreateDirectory(Path.Combine(feed.Root, "work-readme")).FullName;
+        string lab = Path.Combine(work, "ReadmeLab");
+        await feed.RunAsync(work, "dotnet", "new", "raylab-lab", "-o", lab, "--kind", "method", "--feed", feed.Feed);
+        string readme = File.ReadAllText(Path.Combine(lab, "README.md"));
+
+        // No link leaves the lab: no web address, and every relative link names a file or folder of the lab.
+        Assert.DoesNotMatch(@"https?://", readme);
+        foreach (Match link in Regex.Matches(readme, @"\]\((?<target>[^)#]+)(#[^)]*)?\)"))
+        {
+            string target = link.Groups["target"].Value;
+            Assert.True(File.Exists(Path.Combine(lab, target)) || Directory.Exists(Path.Combine(lab, target)), $"the README links to {target}, which the lab does not have");
+        }
+
+        // The compare example, as the README says: the package added with its command, the file pasted, the call added.
+        Match add = Regex.Match(readme, @"`(?<command>dotnet add src/Lab package RayLab\.Reports[^`]*)`");
+        Assert.True(add.Success, "the README gives no command that adds RayLab.Reports");
+        await feed.RunAsync(lab, "dotnet", [.. add.Groups["command"].Value.Split(' ')[1..]]);
+        Match example = Regex.Match(readme, @"`src/Lab/Compare\.cs`:\s*```csharp\n(?<code>.*?)```", RegexOptions.Singleline);
+        Assert.True(example.Success, "the README has no Compare.cs example");
+        File.WriteAllText(Path.Combine(lab, "src", "Lab", "Compare.cs"), example.Groups["code"].Value);
+        Assert.Contains("`Compare.Run();` at the end of `Main`", readme, StringComparison.Ordinal);
+        string program = Path.Combine(lab, "src", "Lab", "Program.cs");
+        string source = File.ReadAllText(program);
+        const string last = "        Console.WriteLine(\"wrote out/obrazkoncowy.jpg\");\n";
+        Assert.Contains(last, source, StringComparison.Ordinal);
+        File.WriteAllText(program, source.Replace(last, last + "        Compare.Run();\n", StringComparison.Ordinal));
+        (int exit, string output) = await feed.RunUncheckedAsync(lab, "dotnet", "build");
+        Assert.True(exit == 0, $"the lab with the README's Compare.cs does not build:\n{output}");
     }
 
     [Fact]
@@ -158,7 +224,7 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
             }
         }
 
-        Assert.Equal(7, options); // --kind, --lang, --solution, --method, --feed, --offline, --skipRestore
+        Assert.Equal(6, options); // --kind, --lang, --method, --feed, --offline, --skipRestore
     }
 
     private static bool IsBuildOutput(string lab, string file)
@@ -166,18 +232,6 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
         string[] parts = Path.GetRelativePath(lab, file).Split(Path.DirectorySeparatorChar);
         return parts.Contains("bin") || parts.Contains("obj") || parts[0] == "out";
     }
-
-    /// <summary>The passed and failed counts of <c>dotnet test</c>'s summary lines ("Passed!  - Failed: 0, Passed: 21, …").</summary>
-    private static (int Passed, int Failed) Counts(string output)
-    {
-        MatchCollection summaries = Summary().Matches(output);
-        Assert.True(summaries.Count > 0, $"dotnet test printed no summary line (did the lab build?):\n{output}");
-        return (summaries.Sum(m => int.Parse(m.Groups["passed"].Value, System.Globalization.CultureInfo.InvariantCulture)),
-            summaries.Sum(m => int.Parse(m.Groups["failed"].Value, System.Globalization.CultureInfo.InvariantCulture)));
-    }
-
-    [GeneratedRegex(@"Failed: +(?<failed>\d+), Passed: +(?<passed>\d+)")]
-    private static partial Regex Summary();
 
     [GeneratedRegex(@"\s+")]
     private static partial Regex Whitespace();

@@ -4,8 +4,9 @@ namespace RayLab.Templates.Tests;
 /// <summary>
 /// Once for the test class: a temporary folder with its own DOTNET_CLI_HOME (so the template is installed nowhere
 /// else) and an empty NUGET_PACKAGES (so no cached RayLab package can stand in for the one packed here); RayLab,
-/// RayLab.ImageSharp, RayLab.Reports and RayLab.Templates packed from this checkout into a folder feed; the template
-/// package installed from that feed by its id and version, as a student would.
+/// RayLab.ImageSharp, RayLab.Reports and RayLab.Templates packed from this checkout into a folder feed, and the
+/// instructor's RayLab.Templates.Instructor into a folder of its own; both template packages installed side by side
+/// by their ids and version, as the student and the instructor would.
 /// </summary>
 public sealed class TemplateFeed : IAsyncLifetime
 {
@@ -23,7 +24,10 @@ public sealed class TemplateFeed : IAsyncLifetime
     /// <summary>The children's DOTNET_CLI_HOME (where <c>dotnet new install</c> records templates).</summary>
     public string CliHome => Path.Combine(Root, "dotnet-home");
 
-    /// <summary>The version the four packages were packed with (MinVer: the same for all four).</summary>
+    /// <summary>The folder with the instructor's template package (<c>dotnet new raylab-lab-solution</c>).</summary>
+    public string InstructorFeed => Path.Combine(Root, "instructor");
+
+    /// <summary>The version the five packages were packed with (MinVer: the same for all five).</summary>
     public string Version { get; private set; } = "";
 
     public async ValueTask InitializeAsync()
@@ -36,6 +40,8 @@ public sealed class TemplateFeed : IAsyncLifetime
             await RunAsync(Root, "dotnet", "pack", Path.Combine(repo, project), "-c", "Release", "-o", Feed, "--artifacts-path", artifacts);
         }
 
+        await RunAsync(Root, "dotnet", "pack", Path.Combine(repo, "templates/RayLab.Templates.Instructor/RayLab.Templates.Instructor.csproj"), "-c", "Release", "-o", InstructorFeed, "--artifacts-path", artifacts);
+
         string template = Assert.Single(Directory.GetFiles(Feed, "RayLab.Templates.*.nupkg"));
         Version = Path.GetFileNameWithoutExtension(template)["RayLab.Templates.".Length..];
         Assert.True(File.Exists(Path.Combine(Feed, $"RayLab.{Version}.nupkg")), $"RayLab {Version} is not in the feed");
@@ -43,6 +49,7 @@ public sealed class TemplateFeed : IAsyncLifetime
         Assert.True(File.Exists(Path.Combine(Feed, $"RayLab.ImageSharp.{Version}.nupkg")), $"RayLab.ImageSharp {Version} is not in the feed");
 
         await RunAsync(Root, "dotnet", "new", "install", $"RayLab.Templates::{Version}", "--add-source", Feed);
+        await RunAsync(Root, "dotnet", "new", "install", $"RayLab.Templates.Instructor::{Version}", "--add-source", InstructorFeed);
     }
 
     public ValueTask DisposeAsync()
@@ -66,9 +73,20 @@ public sealed class TemplateFeed : IAsyncLifetime
 
     /// <summary>Runs a child to completion, whatever its exit code.</summary>
     /// <returns>Its exit code, and stdout followed by stderr.</returns>
-    public async Task<(int ExitCode, string Output)> RunUncheckedAsync(string workingDirectory, string fileName, params string[] args)
+    public Task<(int ExitCode, string Output)> RunUncheckedAsync(string workingDirectory, string fileName, params string[] args) =>
+        RunUncheckedAsync(workingDirectory, new Dictionary<string, string?>(), fileName, args);
+
+    /// <summary>Runs a child to completion, whatever its exit code, with more environment variables.</summary>
+    /// <returns>Its exit code, and stdout followed by stderr.</returns>
+    public async Task<(int ExitCode, string Output)> RunUncheckedAsync(string workingDirectory, IReadOnlyDictionary<string, string?> variables, string fileName, params string[] args)
     {
-        ChildResult result = await ChildProcess.RunAsync(workingDirectory, Environment(), ChildTimeout, fileName, args);
+        Dictionary<string, string?> environment = Environment();
+        foreach ((string name, string? value) in variables)
+        {
+            environment[name] = value;
+        }
+
+        ChildResult result = await ChildProcess.RunAsync(workingDirectory, environment, ChildTimeout, fileName, args);
         return (result.ExitCode, result.Output + result.Errors);
     }
 

@@ -32,15 +32,12 @@ public class TwoSpheresTests
         Assert.Equal(new Rgb24(25, 25, 38), image.GetPixel(File.Width - 1, File.Height - 1));
     }
 
-    /// <summary>The picture as your method renders it.</summary>
+    /// <summary>The picture as your method renders it, within the time limit (<see cref="TimeLimit"/>).</summary>
     private static Image Render(Camera camera)
     {
         var image = new Image(File.Width, File.Height);
-#if (Sampler)
-        new Renderer().Render(File.Scene, camera, RenderMethod.Sampled(new MyMethod()), image);
-#else
-        new Renderer().Render(File.Scene, camera, RenderMethod.Custom(new MyMethod()), image);
-#endif
+        var limit = new TimeLimit();
+        limit.Run(() => new Renderer().Render(File.Scene, camera, limit.Method(), image));
         return image;
     }
 }
