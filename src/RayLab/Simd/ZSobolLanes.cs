@@ -5,9 +5,13 @@ using RayLab.Sampling;
 namespace RayLab.Simd;
 
 /// <summary>
-/// <see cref="ZSobolSampler"/> in lanes: each lane's Sobol' indices come from <see cref="ZSobolSampler.FillIndices"/>
-/// (the digit permutations, shared between neighbouring pixels), and the two Owen-scrambled coordinates are
-/// <see cref="SobolLanes{TL}"/>' last stage with the image's seeds in every lane.
+/// <see cref="ZSobolSampler"/> in lanes. At the start of a packet each lane's pixel digits come from
+/// <see cref="ZSobolSampler.Prefix"/> (recomputed only from the highest bit that changed since the last pixel), the
+/// digit permutations of the sample levels for every lane are hashed together in 64-bit vector lanes
+/// (<see cref="ZSobolSampler.PermutationsOf"/>), and the Sobol' indices of all samples are assembled in
+/// <typeparamref name="TL"/> lanes: a sample's digit at each level is its permutation's 2-bit image, one shift and mask
+/// for all lanes. The two Owen-scrambled coordinates are <see cref="SobolLanes{TL}"/>' last stage with the image's
+/// seeds in every lane.
 /// </summary>
 internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
@@ -15,15 +19,34 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     private readonly float[] _block = PointBlock.Create<TL>();
     private readonly ZSobolSampler _sampler;
     private readonly ZSobolSampler.DigitCache _digits = new();
-    private readonly uint[] _pixel;
+
+    /// <summary>Each lane's pixel digits (the bits from m up), as bits.</summary>
+    private readonly float[] _prefixes;
+
+    /// <summary>The digit prefixes to hash, group by group (the sample levels from the top, then the flips), lane by lane.</summary>
+    private readonly ulong[] _higher;
+
+    /// <summary>The packed permutations (then the flip bits) of <see cref="_higher"/>, as bits.</summary>
+    private readonly float[] _permutations;
+
+    /// <summary>The Sobol' indices, sample by sample, lane by lane, as bits.</summary>
     private readonly float[] _indices;
+
+    private readonly int _groups;
     private readonly TL _xSeed, _ySeed;
 
     /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
     public ZSobolLanes(ZSobolSampler sampler)
     {
         _sampler = sampler;
-        _pixel = new uint[1 << sampler.Log2Block];
+        int m = sampler.Log2Block;
+
+        // (4ᴸ − 1) / 3 groups on the L base-4 levels of a sample index, and for odd m 2ᵐ⁻¹ last binary digits.
+        _groups = ((1 << (m - (m & 1))) - 1) / 3;
+        int flips = (m & 1) == 1 ? 1 << (m - 1) : 0;
+        _prefixes = new float[TL.Count];
+        _higher = new ulong[(_groups + flips) * TL.Count];
+        _permutations = new float[(_groups + flips) * TL.Count];
         _indices = new float[sampler.SamplesPerPixel * TL.Count];
         _xSeed = TL.BroadcastBits(sampler.XSeed);
         _ySeed = TL.BroadcastBits(sampler.YSeed);
@@ -32,15 +55,67 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     /// <inheritdoc />
     public readonly void BeginPacket(int x0, int row)
     {
-        int count = TL.Count;
-        Span<uint> indices = MemoryMarshal.Cast<float, uint>(_indices.AsSpan());
+        int count = TL.Count, m = _sampler.Log2Block;
+        Span<uint> prefixes = MemoryMarshal.Cast<float, uint>(_prefixes.AsSpan());
+        Span<ulong> higher = _higher.AsSpan();
         for (int lane = 0; lane < count; lane++)
         {
-            _sampler.FillIndices(x0 + lane, row, _pixel, _digits);
-            for (int index = 0, slot = lane; index < _sampler.SamplesPerPixel; index++, slot += count)
+            ulong pixel = ZSobolSampler.Morton(x0 + lane, row) << m;
+            prefixes[lane] = _sampler.Prefix(pixel, _digits);
+
+            // Group (level from the top L, digits above t) hashes the pixel's code and t above the level's digit.
+            int slot = lane;
+            for (int shift = m - 2, groups = 1; shift >= (m & 1); shift -= 2, groups *= 4)
             {
-                indices[slot] = _pixel[index];
+                ulong above = pixel >> (shift + 2);
+                for (int t = 0; t < groups; t++, slot += count)
+                {
+                    higher[slot] = above | (uint)t;
+                }
             }
+
+            if ((m & 1) == 1)
+            {
+                ulong above = pixel >> 1;
+                for (int t = 0; t < 1 << (m - 1); t++, slot += count)
+                {
+                    higher[slot] = above | (uint)t;
+                }
+            }
+        }
+
+        Span<uint> permutations = MemoryMarshal.Cast<float, uint>(_permutations.AsSpan());
+        int permuted = _groups * count;
+        _sampler.PermutationsOf(higher[..permuted], permutations);
+        _sampler.FlipBits(higher[permuted..], permutations[permuted..]);
+        Assemble(m);
+    }
+
+    /// <summary>Every sample's Sobol' index from the prefixes, the permutations and the flips, all lanes at once.</summary>
+    private readonly void Assemble(int m)
+    {
+        int count = TL.Count;
+        TL prefix = TL.Load(_prefixes), three = TL.BroadcastBits(3u);
+        ReadOnlySpan<float> permutations = _permutations;
+        Span<float> indices = _indices;
+        int flips = _groups * count;
+        for (int index = 0; index < _sampler.SamplesPerPixel; index++)
+        {
+            TL value = prefix;
+            for (int shift = m - 2, first = 0, groups = 1; shift >= (m & 1); shift -= 2, first += groups, groups *= 4)
+            {
+                TL permutation = TL.Load(permutations.Slice((first + (index >> (shift + 2))) * count, count));
+                int digit = (index >> shift) & 3;
+                value = value | TL.ShiftLeftBits(TL.ShiftRightBits(permutation, 2 * digit) & three, shift);
+            }
+
+            if ((m & 1) == 1)
+            {
+                TL flip = TL.Load(permutations.Slice(flips + ((index >> 1) * count), count));
+                value = value | TL.Xor(flip, TL.BroadcastBits((uint)index & 1u));
+            }
+
+            value.Store(indices.Slice(index * count, count));
         }
     }
 
