@@ -1,3 +1,4 @@
+using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Sampling;
@@ -5,13 +6,14 @@ using RayLab.Sampling;
 namespace RayLab.Simd;
 
 /// <summary>
-/// <see cref="ZSobolSampler"/> in lanes. At the start of a packet each lane's pixel digits come from
-/// <see cref="ZSobolSampler.Prefix"/> (recomputed only from the highest bit that changed since the last pixel), the
-/// digit permutations of the sample levels for every lane are hashed together in 64-bit vector lanes
-/// (<see cref="ZSobolSampler.PermutationsOf"/>), and the Sobol' indices of all samples are assembled in
-/// <typeparamref name="TL"/> lanes: a sample's digit at each level is its permutation's 2-bit image, one shift and mask
-/// for all lanes. The two Owen-scrambled coordinates are <see cref="SobolLanes{TL}"/>' last stage with the image's
-/// seeds in every lane.
+/// <see cref="ZSobolSampler"/> in lanes. At the start of a packet the digit permutations it needs are hashed together
+/// in 64-bit vector lanes (<see cref="ZSobolSampler.PermutationsOf"/>): those of the sample levels, per lane, and, for a
+/// packet that starts at a multiple of its width, those of the pixels' low levels, one per pair, quad, … of lanes (the
+/// higher levels are the same for the whole packet and come from <see cref="ZSobolSampler.Prefix"/>, recomputed only
+/// from the highest bit that changed since the last packet). The Sobol' indices of all samples are then assembled in
+/// <typeparamref name="TL"/> lanes: a sample's digit at each level is its permutation's 2-bit image, one shift and
+/// mask for all lanes. The two Owen-scrambled coordinates are <see cref="SobolLanes{TL}"/>' last stage with the
+/// image's seeds in every lane.
 /// </summary>
 internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
@@ -23,7 +25,13 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     /// <summary>Each lane's pixel digits (the bits from m up), as bits.</summary>
     private readonly float[] _prefixes;
 
-    /// <summary>The digit prefixes to hash, group by group (the sample levels from the top, then the flips), lane by lane.</summary>
+    /// <summary>Each lane's Morton code.</summary>
+    private readonly ulong[] _codes;
+
+    /// <summary>
+    /// The digit prefixes to hash: the sample levels' groups from the top, lane by lane; then one row of lanes for the
+    /// low levels of the pixels' own digits (level by level, one per 2ᵏ⁺¹ lanes); then the flips' groups, lane by lane.
+    /// </summary>
     private readonly ulong[] _higher;
 
     /// <summary>The packed permutations (then the flip bits) of <see cref="_higher"/>, as bits.</summary>
@@ -45,8 +53,9 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
         _groups = ((1 << (m - (m & 1))) - 1) / 3;
         int flips = (m & 1) == 1 ? 1 << (m - 1) : 0;
         _prefixes = new float[TL.Count];
-        _higher = new ulong[(_groups + flips) * TL.Count];
-        _permutations = new float[(_groups + flips) * TL.Count];
+        _codes = new ulong[TL.Count];
+        _higher = new ulong[(_groups + 1 + flips) * TL.Count];
+        _permutations = new float[(_groups + 1 + flips) * TL.Count];
         _indices = new float[sampler.SamplesPerPixel * TL.Count];
         _xSeed = TL.BroadcastBits(sampler.XSeed);
         _ySeed = TL.BroadcastBits(sampler.YSeed);
@@ -57,13 +66,31 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     {
         int count = TL.Count, m = _sampler.Log2Block;
         Span<uint> prefixes = MemoryMarshal.Cast<float, uint>(_prefixes.AsSpan());
-        Span<ulong> higher = _higher.AsSpan();
+        Span<ulong> codes = _codes.AsSpan(), higher = _higher.AsSpan();
         for (int lane = 0; lane < count; lane++)
         {
-            ulong pixel = ZSobolSampler.Morton(x0 + lane, row) << m;
-            prefixes[lane] = _sampler.Prefix(pixel, _digits);
+            codes[lane] = ZSobolSampler.Morton(x0 + lane, row);
+        }
 
-            // Group (level from the top L, digits above t) hashes the pixel's code and t above the level's digit.
+        // An aligned packet's pixels share their digits from level log₂(count) up (x's higher bits, y's); a lower
+        // level k has one permutation per 2ᵏ⁺¹ lanes, the code above the digit: count − 1 of them in all.
+        bool aligned = (x0 & (count - 1)) == 0;
+        int levels = BitOperations.Log2((uint)count), sampleGroups = _groups * count;
+        if (aligned)
+        {
+            for (int k = 0, slot = sampleGroups; k < levels; k++)
+            {
+                for (int lane = 0; lane < count; lane += 2 << k, slot++)
+                {
+                    higher[slot] = codes[lane] >> ((2 * k) + 2);
+                }
+            }
+        }
+
+        // Group (level from the top, digits above t) hashes the pixel's code and t above the level's digit.
+        for (int lane = 0; lane < count; lane++)
+        {
+            ulong pixel = codes[lane] << m;
             int slot = lane;
             for (int shift = m - 2, groups = 1; shift >= (m & 1); shift -= 2, groups *= 4)
             {
@@ -77,17 +104,42 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
             if ((m & 1) == 1)
             {
                 ulong above = pixel >> 1;
-                for (int t = 0; t < 1 << (m - 1); t++, slot += count)
+                for (int t = 0, flip = sampleGroups + count; t < 1 << (m - 1); t++)
                 {
-                    higher[slot] = above | (uint)t;
+                    higher[flip + (t * count) + lane] = above | (uint)t;
                 }
             }
         }
 
         Span<uint> permutations = MemoryMarshal.Cast<float, uint>(_permutations.AsSpan());
-        int permuted = _groups * count;
+        int permuted = sampleGroups + (aligned ? count - 1 : 0);
         _sampler.PermutationsOf(higher[..permuted], permutations);
-        _sampler.FlipBits(higher[permuted..], permutations[permuted..]);
+        _sampler.FlipBits(higher[(sampleGroups + count)..], permutations[(sampleGroups + count)..]);
+        if (aligned)
+        {
+            ulong low = ((1ul << (2 * levels)) - 1) << m;
+            ulong shared = _sampler.Prefix(codes[0] << m, _digits) & ~low;
+            for (int lane = 0; lane < count; lane++)
+            {
+                ulong prefix = shared;
+                for (int k = 0, first = sampleGroups; k < levels; first += count >> (k + 1), k++)
+                {
+                    uint permutation = permutations[first + (lane >> (k + 1))];
+                    int digit = (int)(codes[lane] >> (2 * k)) & 3;
+                    prefix |= (ulong)((permutation >> (2 * digit)) & 3u) << (m + (2 * k));
+                }
+
+                prefixes[lane] = (uint)prefix;
+            }
+        }
+        else
+        {
+            for (int lane = 0; lane < count; lane++)
+            {
+                prefixes[lane] = _sampler.Prefix(codes[lane] << m, _digits);
+            }
+        }
+
         Assemble(m);
     }
 
@@ -98,7 +150,7 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
         TL prefix = TL.Load(_prefixes), three = TL.BroadcastBits(3u);
         ReadOnlySpan<float> permutations = _permutations;
         Span<float> indices = _indices;
-        int flips = _groups * count;
+        int flips = (_groups + 1) * count;
         for (int index = 0; index < _sampler.SamplesPerPixel; index++)
         {
             TL value = prefix;
