@@ -131,6 +131,7 @@ public sealed class ZSobolSampler : PixelSampler
     /// block; only the digits from the highest bit in which it differs from the last pixel asked (<paramref name="digits"/>)
     /// are permuted again.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal uint Prefix(ulong pixel, DigitCache digits)
     {
         int m = Log2Block;
@@ -153,6 +154,7 @@ public sealed class ZSobolSampler : PixelSampler
     /// <see cref="Vector{T}"/> lanes of 64 bits (emulated where the hardware lacks 64-bit multiplies). Overwrites
     /// <paramref name="higher"/> with the permutations' numbers.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void PermutationsOf(Span<ulong> higher, Span<uint> permutations)
     {
         int j = 0;
@@ -179,6 +181,7 @@ public sealed class ZSobolSampler : PixelSampler
     }
 
     /// <summary>The last binary digit's flip (odd m) for each of <paramref name="higher"/>'s prefixes, into <paramref name="flips"/>.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void FlipBits(ReadOnlySpan<ulong> higher, Span<uint> flips)
     {
         for (int j = 0; j < higher.Length; j++)

@@ -15,6 +15,11 @@ namespace RayLab.Simd;
 /// mask for all lanes. The two Owen-scrambled coordinates are <see cref="SobolLanes{TL}"/>' last stage with the
 /// image's seeds in every lane.
 /// </summary>
+/// <remarks>
+/// The packet's index work is compiled fully optimised at its first call (as <see cref="PointBlock"/>'s stages are):
+/// left to tiered compilation, its lane operations run as calls until the background compile lands, which on a
+/// loaded machine can be after the warm-up render.
+/// </remarks>
 internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     where TL : struct, ILanes<TL>
 {
@@ -62,6 +67,7 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     }
 
     /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public readonly void BeginPacket(int x0, int row)
     {
         int count = TL.Count, m = _sampler.Log2Block;
@@ -144,6 +150,7 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
     }
 
     /// <summary>Every sample's Sobol' index from the prefixes, the permutations and the flips, all lanes at once.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private readonly void Assemble(int m)
     {
         int count = TL.Count;
