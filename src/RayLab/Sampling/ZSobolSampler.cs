@@ -219,8 +219,10 @@ public sealed class ZSobolSampler : PixelSampler
     }
 
     /// <summary>The Morton code of (x, y): x's bits at the even positions, y's at the odd ones.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static ulong Morton(int x, int y) => Spread((uint)x) | (Spread((uint)y) << 1);
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static ulong Spread(uint v)
     {
         ulong x = v & 0xffffu;

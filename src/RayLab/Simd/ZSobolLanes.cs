@@ -93,23 +93,26 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
             }
         }
 
-        // Group (level from the top, digits above t) hashes the pixel's code and t above the level's digit.
-        for (int lane = 0; lane < count; lane++)
+        // Group (level from the top, digits above t) hashes the pixel's code and t above the level's digit:
+        // (code · 2ᵐ) >> (shift + 2) | t, for all lanes at once.
+        int width = Vector<ulong>.Count;
+        for (int shift = m - 2, groups = 1, first = 0; shift >= (m & 1); shift -= 2, first += groups * count, groups *= 4)
         {
-            ulong pixel = codes[lane] << m;
-            int slot = lane;
-            for (int shift = m - 2, groups = 1; shift >= (m & 1); shift -= 2, groups *= 4)
+            for (int lane = 0; lane < count; lane += width)
             {
-                ulong above = pixel >> (shift + 2);
-                for (int t = 0; t < groups; t++, slot += count)
+                Vector<ulong> above = new Vector<ulong>(codes.Slice(lane, width)) << (m - shift - 2);
+                for (int t = 0; t < groups; t++)
                 {
-                    higher[slot] = above | (uint)t;
+                    (above | new Vector<ulong>((ulong)t)).CopyTo(higher.Slice(first + (t * count) + lane, width));
                 }
             }
+        }
 
-            if ((m & 1) == 1)
+        if ((m & 1) == 1)
+        {
+            for (int lane = 0; lane < count; lane++)
             {
-                ulong above = pixel >> 1;
+                ulong above = (codes[lane] << m) >> 1;
                 for (int t = 0, flip = sampleGroups + count; t < 1 << (m - 1); t++)
                 {
                     higher[flip + (t * count) + lane] = above | (uint)t;
