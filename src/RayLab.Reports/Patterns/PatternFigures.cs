@@ -12,8 +12,11 @@ internal static partial class PatternFigures
 {
     private static readonly CultureInfo Inv = CultureInfo.InvariantCulture;
 
-    /// <summary>A colour per sampler, stable across figures (Tableau 10).</summary>
-    public static Color ColourOf(int index) => new ScottPlot.Palettes.Category10().GetColor(index);
+    /// <summary>Colours after Tableau's ten, far from all of them.</summary>
+    private static readonly Color[] Beyond = [Colors.Black, Colors.Gold, Colors.DarkSlateGray];
+
+    /// <summary>A colour per sampler, stable across figures (Tableau 10, then black, gold and dark slate grey, then Tableau again).</summary>
+    public static Color ColourOf(int index) => index is >= 10 and < 13 ? Beyond[index - 10] : new ScottPlot.Palettes.Category10().GetColor(index);
 
     /// <summary>
     /// One pixel with its points (the lab's Rys. 12 and 13), y downward as in the image; <paramref name="strata"/>

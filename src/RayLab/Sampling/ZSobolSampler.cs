@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace RayLab.Sampling;
 
@@ -96,16 +97,7 @@ public sealed class ZSobolSampler : PixelSampler
     {
         int m = Log2Block;
         ulong pixel = Morton(x, y) << m;
-        ulong diff = pixel ^ digits.LastPixel;
-        ulong prefix = digits.LastPrefix;
-        int top = diff == 0 ? -1 : 63 - BitOperations.LeadingZeroCount(diff);
-        for (int shift = m; shift <= Math.Min(top, 30 + m); shift += 2)
-        {
-            prefix = (prefix & ~(3ul << shift)) | ((ulong)PermuteDigit((int)(pixel >> shift) & 3, pixel >> (shift + 2)) << shift);
-        }
-
-        digits.LastPixel = pixel;
-        digits.LastPrefix = prefix;
+        ulong prefix = Prefix(pixel, digits);
 
         // block[t] holds the samples whose digits above the current level are t; each level splits every entry in four.
         block[0] = (uint)prefix;
@@ -134,15 +126,91 @@ public sealed class ZSobolSampler : PixelSampler
         }
     }
 
+    /// <summary>
+    /// The permuted digits of <paramref name="pixel"/> (a Morton code · 2ᵐ), the bits from m up of every index of its
+    /// block; only the digits from the highest bit in which it differs from the last pixel asked (<paramref name="digits"/>)
+    /// are permuted again.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal uint Prefix(ulong pixel, DigitCache digits)
+    {
+        int m = Log2Block;
+        ulong diff = pixel ^ digits.LastPixel;
+        ulong prefix = digits.LastPrefix;
+        int top = diff == 0 ? -1 : 63 - BitOperations.LeadingZeroCount(diff);
+        for (int shift = m; shift <= Math.Min(top, 30 + m); shift += 2)
+        {
+            prefix = (prefix & ~(3ul << shift)) | ((ulong)PermuteDigit((int)(pixel >> shift) & 3, pixel >> (shift + 2)) << shift);
+        }
+
+        digits.LastPixel = pixel;
+        digits.LastPrefix = prefix;
+        return (uint)prefix;
+    }
+
+    /// <summary>
+    /// The packed permutation (four 2-bit images) that each of <paramref name="higher"/>'s digit prefixes picks, into
+    /// <paramref name="permutations"/>: <see cref="PermutationOf"/> and the table in one pass, the mixer in
+    /// <see cref="Vector{T}"/> lanes of 64 bits (emulated where the hardware lacks 64-bit multiplies). Overwrites
+    /// <paramref name="higher"/> with the permutations' numbers.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal void PermutationsOf(Span<ulong> higher, Span<uint> permutations)
+    {
+        int j = 0;
+        if (Vector.IsHardwareAccelerated)
+        {
+            var salt = new Vector<ulong>(DigitSalt);
+            var twentyFour = new Vector<ulong>(24ul);
+            for (; j <= higher.Length - Vector<ulong>.Count; j += Vector<ulong>.Count)
+            {
+                Span<ulong> slot = higher.Slice(j, Vector<ulong>.Count);
+                (((Mix(new Vector<ulong>(slot) ^ salt) >> 40) * twentyFour) >> 24).CopyTo(slot);
+            }
+        }
+
+        for (; j < higher.Length; j++)
+        {
+            higher[j] = (ulong)PermutationOf(higher[j]);
+        }
+
+        for (j = 0; j < higher.Length; j++)
+        {
+            permutations[j] = Permutations[(int)higher[j]];
+        }
+    }
+
+    /// <summary>The last binary digit's flip (odd m) for each of <paramref name="higher"/>'s prefixes, into <paramref name="flips"/>.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal void FlipBits(ReadOnlySpan<ulong> higher, Span<uint> flips)
+    {
+        for (int j = 0; j < higher.Length; j++)
+        {
+            flips[j] = (uint)FlipBit(higher[j]);
+        }
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private int PermuteDigit(int digit, ulong higher) => (Permutations[PermutationOf(higher)] >> (2 * digit)) & 3;
 
     /// <summary>Which of the 24 permutations the digits <paramref name="higher"/> above a digit pick.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private int PermutationOf(ulong higher) => (int)(((Mix(higher ^ DigitSalt) >> 40) * 24) >> 24);
 
     /// <summary>The last binary digit's flip (odd m), from the digits above it.</summary>
     private ulong FlipBit(ulong higher) => Mix(higher ^ DigitSalt ^ 0x9e3779b97f4a7c15ul) >> 63;
 
+    /// <summary><see cref="Mix(ulong)"/> in every lane.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector<ulong> Mix(Vector<ulong> z)
+    {
+        z = (z ^ (z >> 30)) * new Vector<ulong>(0xbf58476d1ce4e5b9ul);
+        z = (z ^ (z >> 27)) * new Vector<ulong>(0x94d049bb133111ebul);
+        return z ^ (z >> 31);
+    }
+
     /// <summary>A 64-bit mixer (the splitmix64 finalizer).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static ulong Mix(ulong z)
     {
         z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ul;
@@ -151,8 +219,10 @@ public sealed class ZSobolSampler : PixelSampler
     }
 
     /// <summary>The Morton code of (x, y): x's bits at the even positions, y's at the odd ones.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static ulong Morton(int x, int y) => Spread((uint)x) | (Spread((uint)y) << 1);
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static ulong Spread(uint v)
     {
         ulong x = v & 0xffffu;
