@@ -1,4 +1,5 @@
 using System.Buffers.Binary;
+using System.Globalization;
 using System.Text;
 using System.Text.Json;
 using System.Text.RegularExpressions;
@@ -161,6 +162,14 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
         int limits = Regex.Count(output, @"Time limit of \d+ s passed");
         Assert.True(limits >= 2, $"no test failed at the time limit:\n{output}");
         Assert.Equal(limits, Regex.Count(output, @"Time limit of 5 s passed: MyMethod did not finish \(an endless loop\?\)\. It was working on pixel \(123, 45\)\."));
+
+        // dotnet run stops at the limit too, naming the render and the rows it had finished (row 45 holds it up).
+        (exit, output) = await feed.RunUncheckedAsync(lab, new Dictionary<string, string?> { ["LAB_TIME_LIMIT_S"] = "5" },
+            "dotnet", "run", "--project", "src/Lab");
+        Assert.True(exit == 1, $"dotnet run with the hanging method exited with {exit}:\n{output}");
+        Match stopped = Regex.Match(output, @"Time limit of 5 s passed: orthographic mymethod did not finish \(an endless loop in MyMethod\?\)\. (?<done>\d+) of 600 rows were done");
+        Assert.True(stopped.Success, $"dotnet run did not name the hanging render:\n{output}");
+        Assert.InRange(int.Parse(stopped.Groups["done"].Value, CultureInfo.InvariantCulture), 0, 599);
     }
 
     [Fact]

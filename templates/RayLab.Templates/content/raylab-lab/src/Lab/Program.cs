@@ -11,7 +11,8 @@ namespace MyLab;
 /// Lab II, section 5: renders the two spheres with both cameras, once with the lab's adaptive antialiasing and once
 /// with your own method (MyMethod.cs); prints each render's rays, time and error against the exact image; writes the
 /// pictures into out/, and the lab's obrazkoncowy.jpg. A small warm-up render comes first, timed apart and not counted:
-/// the first render of a run pays for the JIT.
+/// the first render of a run pays for the JIT. A render that outlasts the time limit (60 s, or LAB_TIME_LIMIT_S
+/// seconds) stops the run with the rows it had finished, instead of leaving it silent.
 /// </summary>
 internal static class Program
 {
@@ -33,14 +34,15 @@ internal static class Program
 #endif
 
         Directory.CreateDirectory("out");
-        var renderer = new Renderer();
+        var progress = new RenderProgress(); // the rows each render has finished, for the time limit below
+        var renderer = new Renderer { Progress = progress };
 
         // The first render of a run pays for the JIT: a small one with each camera and method first, timed apart and named.
         var warmUp = Stopwatch.StartNew();
         foreach (Camera camera in new Camera[] { TwoSpheres.Orthographic, TwoSpheres.Perspective })
         {
             renderer.Render(scene, camera, adaptive, new Image(80, 60));
-            renderer.Render(scene, camera, mine, new Image(80, 60));
+            Watched($"the warm-up's {camera.Name} mymethod", progress, () => renderer.Render(scene, camera, mine, new Image(80, 60)));
         }
 
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"warm-up (80×60, both cameras, both methods, not counted) {warmUp.Elapsed.TotalMilliseconds:F1} ms"));
@@ -55,7 +57,7 @@ internal static class Program
             foreach ((string name, RenderMethod method) in new[] { ("adaptive", adaptive), ("mymethod", mine) })
             {
                 var image = new Image(width, height);
-                RenderStatistics stats = renderer.Render(scene, camera, method, image);
+                RenderStatistics stats = Watched($"{camera.Name} {name}", progress, () => renderer.Render(scene, camera, method, image));
                 ImageError error = ImageError.Measure(image, exact);
                 string path = $"out/two-spheres-{camera.Name}-{name}.png";
                 image.Save(path);
@@ -70,5 +72,23 @@ internal static class Program
         }
 
         Console.WriteLine("wrote out/obrazkoncowy.jpg");
+    }
+
+    /// <summary>
+    /// Runs <paramref name="render"/> with the time limit: past it, the run stops (exit code 1) and says how many
+    /// rows <paramref name="progress"/> had counted, so a method that never returns is named, not silent.
+    /// </summary>
+    private static RenderStatistics Watched(string what, RenderProgress progress, Func<RenderStatistics> render)
+    {
+        TimeSpan limit = double.TryParse(Environment.GetEnvironmentVariable("LAB_TIME_LIMIT_S"), NumberStyles.Float, CultureInfo.InvariantCulture, out double seconds) && seconds > 0
+            ? TimeSpan.FromSeconds(seconds)
+            : TimeSpan.FromSeconds(60);
+        using var watchdog = new Timer(_ =>
+        {
+            Console.Error.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"Time limit of {limit.TotalSeconds:0.#} s passed: {what} did not finish (an endless loop in MyMethod?). {progress.RowsCompleted} of {progress.TotalRows} rows were done; dotnet test names the pixel."));
+            Environment.Exit(1);
+        }, null, limit, Timeout.InfiniteTimeSpan);
+        return render();
     }
 }

@@ -74,8 +74,8 @@ internal static class Program
 
         // The first render of a run pays for the JIT: a small one first, timed apart and named.
         var warmUp = Stopwatch.StartNew();
-        LabRenderer.Render(scene, TwoSpheres.Orthographic(), adaptive, new LabImage(80, 60));
-        LabRenderer.Render(scene, TwoSpheres.Perspective(), adaptive, new LabImage(80, 60));
+        Watched("80×60", () => LabRenderer.Render(scene, TwoSpheres.Orthographic(), adaptive, new LabImage(80, 60)));
+        Watched("80×60", () => LabRenderer.Render(scene, TwoSpheres.Perspective(), adaptive, new LabImage(80, 60)));
 #if (en)
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"warm-up (80×60, both cameras, not counted) {warmUp.Elapsed.TotalMilliseconds:F1} ms"));
 #else
@@ -86,7 +86,7 @@ internal static class Program
         {
             var image = new LabImage(nx, ny);
             var clock = Stopwatch.StartNew();
-            long rays = LabRenderer.Render(scene, camera, adaptive, image);
+            long rays = Watched(name, () => LabRenderer.Render(scene, camera, adaptive, image));
             double ms = clock.Elapsed.TotalMilliseconds;
             string path = Path.Combine("out", $"two-spheres-{name}.png");
             image.Bitmap.SaveAsPng(path);
@@ -102,5 +102,26 @@ internal static class Program
 #else
         Console.WriteLine("zapisano out/obrazkoncowy.jpg");
 #endif
+    }
+
+    /// <summary>
+    /// Runs one render with the time limit (60 s, or LAB_TIME_LIMIT_S seconds): past it the run stops with exit code 1
+    /// and says which render did not finish, instead of going silent.
+    /// </summary>
+    private static long Watched(string what, Func<long> render)
+    {
+        TimeSpan limit = double.TryParse(Environment.GetEnvironmentVariable("LAB_TIME_LIMIT_S"), NumberStyles.Float, CultureInfo.InvariantCulture, out double seconds) && seconds > 0
+            ? TimeSpan.FromSeconds(seconds)
+            : TimeSpan.FromSeconds(60);
+        using var watchdog = new Timer(_ =>
+        {
+#if (en)
+            Console.Error.WriteLine(string.Create(CultureInfo.InvariantCulture, $"Time limit of {limit.TotalSeconds:0.#} s passed: the {what} render did not finish (an endless loop?). dotnet test names the pixel."));
+#else
+            Console.Error.WriteLine(string.Create(CultureInfo.InvariantCulture, $"Przekroczony limit czasu {limit.TotalSeconds:0.#} s: renderowanie {what} się nie skończyło (zapętlenie?). dotnet test wskaże piksel."));
+#endif
+            Environment.Exit(1);
+        }, null, limit, Timeout.InfiniteTimeSpan);
+        return render();
     }
 }
