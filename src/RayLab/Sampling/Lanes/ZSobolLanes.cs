@@ -78,10 +78,53 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
             codes[lane] = ZSobolSampler.Morton(x0 + lane, row);
         }
 
-        // An aligned packet's pixels share their digits from level log₂(count) up (x's higher bits, y's); a lower
-        // level k has one permutation per 2ᵏ⁺¹ lanes, the code above the digit: count − 1 of them in all.
         bool aligned = (x0 & (count - 1)) == 0;
         int levels = BitOperations.Log2((uint)count), sampleGroups = _groups * count;
+        HashInputs(codes, higher, m, aligned);
+
+        Span<uint> permutations = MemoryMarshal.Cast<float, uint>(_permutations.AsSpan());
+        int permuted = sampleGroups + (aligned ? count - 1 : 0);
+        _sampler.PermutationsOf(higher[..permuted], permutations);
+        _sampler.FlipBits(higher[(sampleGroups + count)..], permutations[(sampleGroups + count)..]);
+        if (aligned)
+        {
+            ulong low = ((1ul << (2 * levels)) - 1) << m;
+            ulong shared = _sampler.Prefix(codes[0] << m, _digits) & ~low;
+            for (int lane = 0; lane < count; lane++)
+            {
+                ulong prefix = shared;
+                for (int k = 0, first = sampleGroups; k < levels; first += count >> (k + 1), k++)
+                {
+                    uint permutation = permutations[first + (lane >> (k + 1))];
+                    int digit = (int)(codes[lane] >> (2 * k)) & 3;
+                    prefix |= (ulong)((permutation >> (2 * digit)) & 3u) << (m + (2 * k));
+                }
+
+                prefixes[lane] = (uint)prefix;
+            }
+        }
+        else
+        {
+            for (int lane = 0; lane < count; lane++)
+            {
+                prefixes[lane] = _sampler.Prefix(codes[lane] << m, _digits);
+            }
+        }
+
+        Assemble(m);
+    }
+
+    /// <summary>
+    /// The inputs of every digit permutation the packet needs, into <paramref name="higher"/>: the sample levels'
+    /// groups per lane, an aligned packet's shared low pixel levels, and the flips of an odd 2ᵐ.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private readonly void HashInputs(ReadOnlySpan<ulong> codes, Span<ulong> higher, int m, bool aligned)
+    {
+        int count = TL.Count;
+        int levels = BitOperations.Log2((uint)count), sampleGroups = _groups * count;
+        // An aligned packet's pixels share their digits from level log₂(count) up (x's higher bits, y's); a lower
+        // level k has one permutation per 2ᵏ⁺¹ lanes, the code above the digit: count − 1 of them in all.
         if (aligned)
         {
             for (int k = 0, slot = sampleGroups; k < levels; k++)
@@ -119,37 +162,6 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
                 }
             }
         }
-
-        Span<uint> permutations = MemoryMarshal.Cast<float, uint>(_permutations.AsSpan());
-        int permuted = sampleGroups + (aligned ? count - 1 : 0);
-        _sampler.PermutationsOf(higher[..permuted], permutations);
-        _sampler.FlipBits(higher[(sampleGroups + count)..], permutations[(sampleGroups + count)..]);
-        if (aligned)
-        {
-            ulong low = ((1ul << (2 * levels)) - 1) << m;
-            ulong shared = _sampler.Prefix(codes[0] << m, _digits) & ~low;
-            for (int lane = 0; lane < count; lane++)
-            {
-                ulong prefix = shared;
-                for (int k = 0, first = sampleGroups; k < levels; first += count >> (k + 1), k++)
-                {
-                    uint permutation = permutations[first + (lane >> (k + 1))];
-                    int digit = (int)(codes[lane] >> (2 * k)) & 3;
-                    prefix |= (ulong)((permutation >> (2 * digit)) & 3u) << (m + (2 * k));
-                }
-
-                prefixes[lane] = (uint)prefix;
-            }
-        }
-        else
-        {
-            for (int lane = 0; lane < count; lane++)
-            {
-                prefixes[lane] = _sampler.Prefix(codes[lane] << m, _digits);
-            }
-        }
-
-        Assemble(m);
     }
 
     /// <summary>Every sample's Sobol' index from the prefixes, the permutations and the flips, all lanes at once.</summary>
