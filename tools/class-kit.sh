@@ -134,7 +134,7 @@ dotnet new uninstall RayLab.Templates >/dev/null
 dotnet new uninstall RayLab.Templates.Instructor >/dev/null
 
 if [ $full = 1 ]; then
-  # The native tool package holds what tools/publish-native.sh makes (raylab for x86-64-v2, its -v3 and -v4 siblings,
+  # The native tool package holds what tools/publish-native.sh makes (raylab, the launcher; raylab-x86-64-v2, -v3, -v4;
   # scenes/): unpacked from it rather than compiled three times more.
   echo "== the native raylab (linux-x64, from RayLab.Tool.linux-x64) -> $kit/raylab-linux-x64"
   mkdir -p "$work/native"

@@ -22,7 +22,6 @@ public static class Program
     /// <returns>0 on success, 1 for bad input or a failed render, 2 for a bad command line, 130 when cancelled.</returns>
     public static int Main(string[] args)
     {
-        NativeDispatch.ExecWidest(args); // the native build: a wider sibling build, when there is one this CPU runs
         using var cancel = new CancellationTokenSource();
         // The first Ctrl+C asks the render to stop (rows in flight finish, then the job cleans up); a second one,
         // once cancellation is under way, ends the process at once as usual.

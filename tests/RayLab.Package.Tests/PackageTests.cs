@@ -19,7 +19,7 @@ namespace RayLab.Package.Tests;
 [Trait("Category", "Packaging")]
 public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<PackedFeed>
 {
-    /// <summary>The environment variable that keeps the native tool in the binary that was started (NativeDispatch).</summary>
+    /// <summary>The environment variable that makes the native tool's launcher start the x86-64-v2 build whatever the CPU.</summary>
     private const string NoDispatchVariable = "RAYLAB_NO_DISPATCH";
 
     /// <summary>The core-only app's build output must stay under this (587 MB when the core carried SkiaSharp).</summary>
@@ -315,16 +315,22 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
             Assert.Equal(new byte[] { 0x7F, (byte)'E', (byte)'L', (byte)'F' }, head);
             Assert.Equal("raylab", target.Name);
 
-            // The entry is the x86-64-v2 build; the wider builds it execs on a CPU that runs them lie beside it.
+            // The entry is the launcher (samples/RayLab.Launcher); the console builds it execs, one per x86-64 level, lie
+            // beside it.
             string folder = Path.GetDirectoryName(target.FullName)!;
             string[] siblings = [.. Directory.GetFiles(folder, "raylab-*").Select(f => Path.GetFileName(f)!).Order(StringComparer.Ordinal)];
-            Assert.Equal(["raylab-x86-64-v3", "raylab-x86-64-v4"], siblings);
-            byte[][] builds = [File.ReadAllBytes(target.FullName), .. siblings.Select(s => File.ReadAllBytes(Path.Combine(folder, s)))];
+            Assert.Equal(["raylab-x86-64-v2", "raylab-x86-64-v3", "raylab-x86-64-v4"], siblings);
+            byte[][] builds = [.. siblings.Select(s => File.ReadAllBytes(Path.Combine(folder, s)))];
             foreach (byte[] build in builds)
             {
                 Assert.Equal(head, build.AsSpan(0, 4).ToArray());
                 Assert.Single(builds, other => other.AsSpan().SequenceEqual(build)); // three different compilations
             }
+
+            // The launcher holds no renderer: a fraction of a console build's size.
+            long launcher = new FileInfo(target.FullName).Length;
+            Assert.True(launcher * 3 < builds.Min(b => b.Length),
+                $"the installed raylab ({launcher:N0} bytes) is not the small launcher beside console builds of {string.Join(", ", builds.Select(b => $"{b.Length:N0}"))} bytes");
         }
         else
         {
@@ -357,11 +363,11 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
     }
 
     /// <summary>
-    /// The installed native tool takes the widest render kernel this CPU runs: its x86-64-v2 entry execs the v3 (AVX2)
-    /// or v4 (AVX-512) build beside it when the CPU has that level, which <c>--stats</c> shows as the kernel; with
-    /// <see cref="NoDispatchVariable"/> set it stays in the entry, the <c>vector128</c> kernel, and writes the same PNG
-    /// bytes. The build it takes has lost its execute permission first (as a package extractor may leave it): the
-    /// entry gives it back and still takes it.
+    /// The installed native tool takes the widest render kernel this CPU runs: its launcher execs the v3 (AVX2) or v4
+    /// (AVX-512) build beside it when the CPU has that level, which <c>--stats</c> shows as the kernel; with
+    /// <see cref="NoDispatchVariable"/> set it execs the x86-64-v2 build, the <c>vector128</c> kernel, which writes the
+    /// same PNG bytes. The build it takes has lost its execute permission first (as a package extractor may leave it):
+    /// the launcher gives it back and still takes it.
     /// </summary>
     private static async Task AssertDispatchAsync(string work, string packages, string raylab)
     {
@@ -392,7 +398,7 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
         Assert.Equal(expected, Kernel(Path.Combine(work, "widest.json")));
         Assert.Equal("vector128", Kernel(Path.Combine(work, "entry.json")));
         Assert.True(File.ReadAllBytes(widestPng).AsSpan().SequenceEqual(File.ReadAllBytes(entryPng)),
-            "the native tool's widest build and its entry (RAYLAB_NO_DISPATCH) wrote different PNG bytes");
+            "the native tool's widest build and its x86-64-v2 build (RAYLAB_NO_DISPATCH) wrote different PNG bytes");
 
         static string Kernel(string stats)
         {
