@@ -29,6 +29,9 @@ methods = {"jittered16": ["--sampler", "jittered", "--samples", "16"], "adaptive
            "guard": ["--sampler", "adaptive", "--guard"], "exact": ["--sampler", "exact"]}
 dll = lambda d: os.path.join(d, "samples", "RayLab.Console", "bin", "Release", "net10.0", "raylab.dll")
 builds = [("this", dll(root))] + ([("before", dll(args.before))] if args.before else [])
+# A build from before --warmup existed ran its warm-up render with --stats by itself.
+warmup = {b: (["--warmup"] if "--warmup" in subprocess.run(["dotnet", d, "render", "--help"], capture_output=True, text=True).stdout else [])
+          for b, d in builds}
 cases = args.cases.split(",")
 cells = [(c, b, t) for c in cases for b, _ in builds for t in (1, 2)]
 times = {cell: [] for cell in cells}
@@ -39,7 +42,7 @@ for _ in range(args.rounds):
         scene, method = case.split("-")
         stats = os.path.join(tmp, "s.json")
         subprocess.run(["dotnet", dict(builds)[build], "render", scenes[scene], "-o", os.path.join(tmp, "x.png"), "--width", "1920",
-                        "--height", "1080", "--threads", str(threads), "--stats", stats, "--warmup"] + methods[method],
+                        "--height", "1080", "--threads", str(threads), "--stats", stats] + warmup[build] + methods[method],
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         with open(stats) as f:
             times[(case, build, threads)].append(json.load(f)["renderMs"])
