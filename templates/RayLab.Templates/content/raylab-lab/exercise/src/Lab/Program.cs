@@ -74,8 +74,8 @@ internal static class Program
 
         // The first render of a run pays for the JIT: a small one first, timed apart and named.
         var warmUp = Stopwatch.StartNew();
-        Watched("80×60", () => LabRenderer.Render(scene, TwoSpheres.Orthographic(), adaptive, new LabImage(80, 60)));
-        Watched("80×60", () => LabRenderer.Render(scene, TwoSpheres.Perspective(), adaptive, new LabImage(80, 60)));
+        Watched("80×60", "orthographic", () => LabRenderer.Render(scene, TwoSpheres.Orthographic(), adaptive, new LabImage(80, 60)));
+        Watched("80×60", "perspective", () => LabRenderer.Render(scene, TwoSpheres.Perspective(), adaptive, new LabImage(80, 60)));
 #if (en)
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"warm-up (80×60, both cameras, not counted) {warmUp.Elapsed.TotalMilliseconds:F1} ms"));
 #else
@@ -86,7 +86,7 @@ internal static class Program
         {
             var image = new LabImage(nx, ny);
             var clock = Stopwatch.StartNew();
-            long rays = Watched(name, () => LabRenderer.Render(scene, camera, adaptive, image));
+            long rays = Watched($"{nx}×{ny}", name, () => LabRenderer.Render(scene, camera, adaptive, image));
             double ms = clock.Elapsed.TotalMilliseconds;
             string path = Path.Combine("out", $"two-spheres-{name}.png");
             image.Bitmap.SaveAsPng(path);
@@ -105,10 +105,11 @@ internal static class Program
     }
 
     /// <summary>
-    /// Runs one render with the time limit (60 s, or LAB_TIME_LIMIT_S seconds): past it the run stops with exit code 1
-    /// and says which render did not finish, instead of going silent.
+    /// Runs one render (<paramref name="size"/>, with the <paramref name="camera"/> camera) with the time limit (60 s,
+    /// or LAB_TIME_LIMIT_S seconds): past it the run stops with exit code 1 and says which render did not finish,
+    /// instead of going silent.
     /// </summary>
-    private static long Watched(string what, Func<long> render)
+    private static long Watched(string size, string camera, Func<long> render)
     {
         TimeSpan limit = double.TryParse(Environment.GetEnvironmentVariable("LAB_TIME_LIMIT_S"), NumberStyles.Float, CultureInfo.InvariantCulture, out double seconds) && seconds > 0
             ? TimeSpan.FromSeconds(seconds)
@@ -116,9 +117,10 @@ internal static class Program
         using var watchdog = new Timer(_ =>
         {
 #if (en)
-            Console.Error.WriteLine(string.Create(CultureInfo.InvariantCulture, $"Time limit of {limit.TotalSeconds:0.#} s passed: the {what} render did not finish (an endless loop?). dotnet test names the pixel."));
+            Console.Error.WriteLine(string.Create(CultureInfo.InvariantCulture, $"Time limit of {limit.TotalSeconds:0.#} s passed: the {size} render with the {camera} camera did not finish (an endless loop?). dotnet test names the pixel."));
 #else
-            Console.Error.WriteLine(string.Create(CultureInfo.InvariantCulture, $"Przekroczony limit czasu {limit.TotalSeconds:0.#} s: renderowanie {what} się nie skończyło (zapętlenie?). dotnet test wskaże piksel."));
+            string kamera = camera == "orthographic" ? "ortogonalną" : "perspektywiczną";
+            Console.Error.WriteLine(string.Create(CultureInfo.InvariantCulture, $"Przekroczony limit czasu {limit.TotalSeconds:0.#} s: renderowanie {size} kamerą {kamera} się nie skończyło (zapętlenie?). dotnet test wskaże piksel."));
 #endif
             Environment.Exit(1);
         }, null, limit, Timeout.InfiniteTimeSpan);
