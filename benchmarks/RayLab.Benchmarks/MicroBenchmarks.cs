@@ -1,6 +1,7 @@
 using System.Runtime.Intrinsics;
 using BenchmarkDotNet.Attributes;
 using RayLab.Cameras;
+using RayLab.Rendering;
 using RayLab.Rendering.Packets;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
@@ -51,14 +52,14 @@ public class IntersectionBenchmarks
     public int Packet512RowPerSample()
     {
         var sampler = new JitteredLanes<Lanes512>(_jittered);
-        return PacketKernel.RenderRow<Lanes512, JitteredLanes<Lanes512>, PerspectiveProjection>(_frame, ref sampler, 16, 540, _row);
+        return PacketKernel.RenderRow<Lanes512, JitteredLanes<Lanes512>, PerspectiveProjection>(_frame, ref sampler, 16, 540, new TargetRow(_row));
     }
 
     [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
     public int Packet256RowPerSample()
     {
         var sampler = new JitteredLanes<Lanes256>(_jittered);
-        return PacketKernel.RenderRow<Lanes256, JitteredLanes<Lanes256>, PerspectiveProjection>(_frame, ref sampler, 16, 540, _row);
+        return PacketKernel.RenderRow<Lanes256, JitteredLanes<Lanes256>, PerspectiveProjection>(_frame, ref sampler, 16, 540, new TargetRow(_row));
     }
 }
 

@@ -79,6 +79,7 @@ public sealed class LayerTests
         ["RayLab.RenderKernel"] = "Rendering",
         ["RayLab.RenderProgress"] = "Rendering",
         ["RayLab.RenderStatistics"] = "Rendering",
+        ["RayLab.TracedPoint"] = "Rendering",
         ["RayLab.UnsupportedSceneException"] = "Rendering.Exact",
         ["RayLab.Sampling.AdaptiveSampler"] = "Rendering.Adaptive",
         ["RayLab.Sampling.IPixelMethod`1"] = "Rendering.PixelMethods",
@@ -88,6 +89,7 @@ public sealed class LayerTests
         ["RayLab.Rendering.Adaptive.AdaptiveDiagram"] = "Facade",
         ["RayLab.Renderer"] = "Facade",
         ["RayLab.RenderMethod"] = "Facade",
+        ["RayLab.PixelTrace"] = "Facade",
     };
 
     private static readonly Lazy<ArchUnitNET.Domain.Architecture> Core = new(() => new ArchLoader().LoadAssemblies(typeof(Scene).Assembly).Build());

@@ -1,6 +1,5 @@
 using RayLab.Cameras;
 using RayLab.Sampling;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering.Exact;
 
@@ -37,7 +36,7 @@ public class ExactBruteForceTests
         const int n = 64;
         ImagePlane plane = camera.GetImagePlane(w, h);
 
-        Intensity[] exact = new ExactRenderer().RenderLinear(scene, camera, w, h);
+        Intensity[] exact = ExactLinear.Of(scene, camera, w, h);
         int[] touched = GridErrorBound.TouchedCells(scene, plane, n);
         Intensity spread = GridErrorBound.LargestColourDifference(scene);
 
