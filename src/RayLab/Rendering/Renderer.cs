@@ -1,6 +1,5 @@
 using RayLab.Rendering;
 using RayLab.Cameras;
-using RayLab.Rendering.Point;
 using RayLab.Sampling;
 
 namespace RayLab;
@@ -247,19 +246,4 @@ public sealed class Renderer
     /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
     public RenderStatistics Render(Scene scene, Camera camera, AdaptiveSampler sampler, Image image, float[]? raysPerPixel = null) =>
         Render(scene, camera, RenderMethod.Adaptive(sampler), image, raysPerPixel);
-
-    /// <summary>The mean of a pixel's samples, in linear intensity (before the 8-bit rule).</summary>
-    /// <param name="scene">The scene.</param>
-    /// <param name="plane">The camera's image plane.</param>
-    /// <param name="sampler">The sampler.</param>
-    /// <param name="x">The pixel column.</param>
-    /// <param name="row">The pixel row, 0 at the top.</param>
-    /// <returns>The pixel's value.</returns>
-    public static Intensity RenderPixel(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row)
-    {
-        ArgumentNullException.ThrowIfNull(scene);
-        ArgumentNullException.ThrowIfNull(plane);
-        ArgumentNullException.ThrowIfNull(sampler);
-        return PointRenderer.RenderPixel(scene, plane, sampler, x, row);
-    }
 }
