@@ -148,7 +148,7 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
         string app = feed.NewProject("reports-app", ["RayLab", "RayLab.Reports"]);
         File.WriteAllText(Path.Combine(app, "Program.cs"), """
             using RayLab;
-            using RayLab.Comparison;
+            using RayLab.Reports.Comparison;
             using RayLab.Imaging;
             using RayLab.Sampling;
 

@@ -1,5 +1,5 @@
 using RayLab.Sampling;
-using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Inspection;
 using RayLab.Scenes;
 
 namespace RayLab.Tests.Rendering.Adaptive;
