@@ -149,7 +149,7 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
         File.WriteAllText(Path.Combine(app, "Program.cs"), """
             using RayLab;
             using RayLab.Reports.Comparison;
-            using RayLab.Imaging;
+            using RayLab.Reports.Imaging;
             using RayLab.Sampling;
 
             ReportsImageFormats.Register();

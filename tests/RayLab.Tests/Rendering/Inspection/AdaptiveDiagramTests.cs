@@ -2,7 +2,7 @@ using RayLab.Sampling;
 using RayLab.Rendering.Inspection;
 using RayLab.Scenes;
 
-namespace RayLab.Tests.Rendering.Adaptive;
+namespace RayLab.Tests.Rendering.Inspection;
 
 public class AdaptiveDiagramTests
 {
