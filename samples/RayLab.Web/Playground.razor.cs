@@ -4,7 +4,7 @@ using System.Reflection;
 using Microsoft.AspNetCore.Components;
 using Microsoft.JSInterop;
 using RayLab.Cameras;
-using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Inspection;
 using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Web.Lab;

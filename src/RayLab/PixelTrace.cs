@@ -1,4 +1,4 @@
-using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Inspection;
 
 namespace RayLab;
 

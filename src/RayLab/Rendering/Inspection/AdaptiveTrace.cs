@@ -1,8 +1,9 @@
 using System.Numerics;
 using RayLab.Cameras;
+using RayLab.Rendering.Adaptive;
 using RayLab.Sampling;
 
-namespace RayLab.Rendering.Adaptive;
+namespace RayLab.Rendering.Inspection;
 
 /// <summary>
 /// One pixel of the lab's adaptive recursion, traced as the renderer traces it (<see cref="AdaptivePixel"/>): the

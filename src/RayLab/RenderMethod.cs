@@ -2,6 +2,7 @@ using RayLab.Rendering;
 using RayLab.Cameras;
 using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
+using RayLab.Rendering.Inspection;
 using RayLab.Rendering.PixelMethods;
 using RayLab.Rendering.Point;
 using RayLab.Sampling;

@@ -1,7 +1,8 @@
 using RayLab.Sampling;
 using RayLab.Cameras;
+using RayLab.Rendering.Exact;
 
-namespace RayLab.Rendering.Adaptive;
+namespace RayLab.Rendering.Inspection;
 
 /// <summary>A point the lab's adaptive recursion traced in one pixel, labelled as the lab labels them.</summary>
 /// <param name="Label">A, B, C, D (the corners), E (the centre), then F, G, H, J, … in trace order (the lab skips I and O).</param>
@@ -22,7 +23,7 @@ public sealed record AdaptiveSquare(double X, double Y, double Size, int Depth, 
 /// <summary>
 /// The lab's adaptive antialiasing diagram (section 4.1.4) for one pixel of a real scene: the squares the recursion
 /// made, each traced point labelled in trace order, the weight the combination rule gives it, and the pixel's value
-/// against its exact area-weighted colour. It runs the renderer's own recursion (<see cref="AdaptiveSampler"/>), traced as <see cref="Renderer.TracePixel"/> traces it.
+/// against its exact area-weighted colour. It runs the renderer's own recursion (<see cref="AdaptiveSampler"/>), traced as <see cref="Renderer.TracePixel"/> traces it (<see cref="AdaptiveTrace"/>).
 /// </summary>
 public sealed class AdaptiveDiagram
 {
@@ -105,7 +106,9 @@ public sealed class AdaptiveDiagram
         ArgumentOutOfRangeException.ThrowIfNegative(py);
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(py, height);
         ImagePlane plane = camera.GetImagePlane(width, height);
-        Intensity exact = Renderer.TracePixel(scene, camera, width, height, RenderMethod.Exact, px, py).Value;
+        // The pixel's row alone: a row's exact values do not depend on the rows rendered with it.
+        var row = new RenderOptions(1, RenderKernel.Scalar, null, default) { FirstRow = py, EndRow = py + 1 };
+        Intensity exact = ExactRenderer.RenderLinear(scene, plane, row)[px];
         return Build(scene, plane, sampler, px, py, exact);
     }
 
@@ -129,8 +132,7 @@ public sealed class AdaptiveDiagram
         ArgumentNullException.ThrowIfNull(camera);
         ArgumentNullException.ThrowIfNull(sampler);
         ImagePlane plane = camera.GetImagePlane(width, height);
-        var exact = new Intensity[(long)width * height];
-        new Renderer { MaxDegreeOfParallelism = 1 }.Render(scene, camera, RenderMethod.Exact, exact, width, height);
+        Intensity[] exact = ExactRenderer.RenderLinear(scene, plane, new RenderOptions(1, RenderKernel.Scalar, null, default));
         var colours = Enumerable.Range(-1, scene.Spheres.Count + 1).Select(scene.ColourOf).ToHashSet();
         AdaptiveDiagram? best = null;
         for (int i = 0; i < exact.Length; i++)

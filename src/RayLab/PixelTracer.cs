@@ -1,6 +1,6 @@
 using RayLab.Cameras;
 
-namespace RayLab.Sampling;
+namespace RayLab;
 
 /// <summary>
 /// One pixel as an <see cref="IPixelMethod{TScratch}"/> sees it: its coordinates, the trace function for a point
