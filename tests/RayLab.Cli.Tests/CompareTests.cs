@@ -83,7 +83,7 @@ public sealed partial class CompareTests : IDisposable
         string[] lines = stdout.TrimEnd('\n').Split('\n');
         Assert.StartsWith("| sampler | setting |", lines[0], StringComparison.Ordinal);
         Assert.Equal(rows.Length + 4, lines.Length);
-        Assert.All(lines[2..^2], l => Assert.Equal(13, l.Count(c => c == '|')));
+        Assert.All(lines[2..^2], l => Assert.Equal(15, l.Count(c => c == '|')));
         Assert.All(rows.Select((r, i) => (r, i)), p => Assert.StartsWith($"| {p.r.Series} | {p.r.Setting} |", lines[2 + p.i], StringComparison.Ordinal));
         Assert.Contains("index.html", lines[^2], StringComparison.Ordinal);
         Assert.Matches(@"^total time \d+\.\d s$", lines[^1]);
