@@ -1,3 +1,4 @@
+using RayLab.Sampling.Lanes;
 namespace RayLab.Sampling;
 
 /// <summary>
@@ -6,7 +7,7 @@ namespace RayLab.Sampling;
 /// into [0, 1). The shift keeps the set's low discrepancy and stops every pixel using the same pattern, which
 /// would alias. Any number of samples.
 /// </summary>
-public sealed class HammersleySampler : PixelSampler
+public sealed class HammersleySampler : PixelSampler, ILaneSampled
 {
     /// <summary>Xored into the pixel key for the pixel's random shift (the lanes use the same).</summary>
     internal const uint ShiftSalt = 0x68e31da4u;
@@ -50,4 +51,8 @@ public sealed class HammersleySampler : PixelSampler
     /// </summary>
     /// <param name="v">A value in [0, 2).</param>
     private static double Wrap(double v) => v >= 1.0 ? v - 1.0 : v;
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        user.Run(() => new HammersleyLanes<TL>(this));
 }

@@ -1,9 +1,10 @@
+using RayLab.Sampling.Lanes;
 namespace RayLab.Sampling;
 
 /// <summary>
 /// The lab's jittered (stratified) sampling: an n×n grid with one uniformly random point in each cell.
 /// </summary>
-public sealed class JitteredSampler : GridSampler
+public sealed class JitteredSampler : GridSampler, ILaneSampled
 {
     /// <summary>Creates an n×n jittered sampler.</summary>
     /// <param name="samplesPerPixel">n², a perfect square ≥ 1.</param>
@@ -24,4 +25,8 @@ public sealed class JitteredSampler : GridSampler
             ((index % n) + CounterHash.ToUnit(h1)) / n,
             ((index / n) + CounterHash.ToUnit(h2)) / n);
     }
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        user.Run(() => new JitteredLanes<TL>(this));
 }

@@ -1,3 +1,4 @@
+using RayLab.Sampling.Lanes;
 namespace RayLab.Sampling;
 
 /// <summary>
@@ -12,7 +13,7 @@ namespace RayLab.Sampling;
 /// which shares one permutation). Each permutation is a stateless hash permutation
 /// (<see cref="Permutation.PermutationElement"/>) keyed on the pixel, so no table is stored.
 /// </remarks>
-public sealed class MultiJitteredSampler : GridSampler
+public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
 {
     /// <summary>Xored into the pixel key for the shuffles of the fine columns (the lanes use the same).</summary>
     internal const uint ColumnSalt = 0x2f5a1c37u;
@@ -48,4 +49,11 @@ public sealed class MultiJitteredSampler : GridSampler
             (column + ((subColumn + CounterHash.ToUnit(h1)) / n)) / n,
             (row + ((subRow + CounterHash.ToUnit(h2)) / n)) / n);
     }
+
+    /// <inheritdoc />
+    /// <remarks>Above <see cref="PatternLimits.MaxSamples"/> samples the lanes would not be exact: the buffered lanes then ask <see cref="GetSample"/>.</remarks>
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        SamplesPerPixel <= PatternLimits.MaxSamples
+            ? user.Run(() => new MultiJitteredLanes<TL>(this))
+            : user.Run(() => new BufferedLanes<TL>(this));
 }

@@ -1,3 +1,4 @@
+using RayLab.Sampling.Lanes;
 namespace RayLab.Sampling;
 
 /// <summary>
@@ -10,7 +11,7 @@ namespace RayLab.Sampling;
 /// π_y(i) and column π_x(i) of two independent hash permutations (<see cref="Permutation.PermutationElement"/>)
 /// keyed on the pixel, which gives the same distribution with no stored table.
 /// </remarks>
-public sealed class NRooksSampler : PixelSampler
+public sealed class NRooksSampler : PixelSampler, ILaneSampled
 {
     /// <summary>Creates an n-rooks sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1.</param>
@@ -41,4 +42,11 @@ public sealed class NRooksSampler : PixelSampler
         uint h2 = CounterHash.Hash(h1);
         return new SamplePoint((column + CounterHash.ToUnit(h1)) / count, (row + CounterHash.ToUnit(h2)) / count);
     }
+
+    /// <inheritdoc />
+    /// <remarks>Above <see cref="PatternLimits.MaxSamples"/> samples the lanes would not be exact: the buffered lanes then ask <see cref="GetSample"/>.</remarks>
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        SamplesPerPixel <= PatternLimits.MaxSamples
+            ? user.Run(() => new NRooksLanes<TL>(this))
+            : user.Run(() => new BufferedLanes<TL>(this));
 }

@@ -1,10 +1,11 @@
+using RayLab.Sampling.Lanes;
 namespace RayLab.Sampling;
 
 /// <summary>
 /// The lab's random sampling (Suffern's <c>rand()</c> in the pixel): uniform, independent points. Any
 /// number of samples; points may clump.
 /// </summary>
-public sealed class RandomSampler : PixelSampler
+public sealed class RandomSampler : PixelSampler, ILaneSampled
 {
     /// <summary>Creates a random sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1.</param>
@@ -24,4 +25,8 @@ public sealed class RandomSampler : PixelSampler
         uint h1 = CounterHash.SampleHash(CounterHash.PixelKey(x, y, Seed), index);
         return new SamplePoint(CounterHash.ToUnit(h1), CounterHash.ToUnit(CounterHash.Hash(h1)));
     }
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        user.Run(() => new RandomLanes<TL>(this));
 }

@@ -1,10 +1,11 @@
+using RayLab.Sampling.Lanes;
 namespace RayLab.Sampling;
 
 /// <summary>
 /// The lab's regular sampling: an n×n grid, one sample at the centre of each cell, the same pattern in every
 /// pixel. Cheap, but it still aliases. One sample is the pixel centre.
 /// </summary>
-public sealed class RegularSampler : GridSampler
+public sealed class RegularSampler : GridSampler, ILaneSampled
 {
     /// <summary>Creates an n×n regular sampler.</summary>
     /// <param name="samplesPerPixel">n², a perfect square ≥ 1.</param>
@@ -20,4 +21,8 @@ public sealed class RegularSampler : GridSampler
         int n = GridSize;
         return new SamplePoint(((index % n) + 0.5) / n, ((index / n) + 0.5) / n);
     }
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        user.Run(() => new RegularLanes<TL>(this));
 }

@@ -1,3 +1,4 @@
+using RayLab.Sampling.Lanes;
 namespace RayLab.Sampling;
 
 /// <summary>
@@ -13,7 +14,7 @@ namespace RayLab.Sampling;
 /// all three seeds come from the pixel's <see cref="CounterHash.PixelKey"/>. Coordinates keep the top 24 bits,
 /// like <see cref="CounterHash.ToUnit"/>.
 /// </remarks>
-public sealed class SobolSampler : PixelSampler
+public sealed class SobolSampler : PixelSampler, ILaneSampled
 {
     /// <summary>Xored into the pixel key for the seed of the index scramble (the lanes use the same).</summary>
     internal const uint IndexSalt = 0x1b873593u;
@@ -41,4 +42,8 @@ public sealed class SobolSampler : PixelSampler
         uint sy = LowDiscrepancy.NestedUniformScramble(LowDiscrepancy.SobolDimension1(i), ySeed);
         return new SamplePoint(CounterHash.ToUnit(sx), CounterHash.ToUnit(sy));
     }
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        user.Run(() => new SobolLanes<TL>(this));
 }

@@ -15,32 +15,31 @@ public sealed class LayerTests
 {
     /// <summary>
     /// The layers, bottom up, each with the layers it may use (itself always). Simd is lane arithmetic over the
-    /// model alone; the lane samplers (Sampling.Lanes) sit over Sampling and Simd, packet tracing
+    /// model alone; the samplers (Sampling, their lane forms and the lanes' helpers in Sampling.Lanes among them) sit
+    /// over Simd, packet tracing
     /// (Rendering.Packets) over the cameras and Simd, and the renderers over both.
     /// </summary>
     private static readonly Dictionary<string, string[]> Allowed = new()
     {
         ["Model"] = [],
         ["Simd"] = ["Model"],
-        ["Sampling"] = ["Model"],
-        ["Sampling.Lanes"] = ["Model", "Sampling", "Simd"],
+        ["Sampling"] = ["Model", "Simd"],
         ["Cameras"] = ["Model", "Simd"],
         ["Imaging"] = ["Model", "Simd"],
         ["Metrics"] = ["Model", "Imaging"],
         ["Rendering.Packets"] = ["Model", "Simd", "Cameras"],
         ["Rendering"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets"],
-        ["Rendering.Point"] = ["Model", "Sampling", "Sampling.Lanes", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Rendering.Point"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.Adaptive"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.Exact"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.PixelMethods"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
-        ["Facade"] = ["Model", "Sampling", "Sampling.Lanes", "Simd", "Cameras", "Imaging", "Metrics", "Rendering.Packets", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods"],
+        ["Facade"] = ["Model", "Sampling", "Simd", "Cameras", "Imaging", "Metrics", "Rendering.Packets", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods"],
     };
 
     /// <summary>Namespace (and its sub-namespaces) → layer.</summary>
     private static readonly (string Namespace, string Layer)[] Namespaces =
     [
         ("RayLab.Geometry", "Model"),
-        ("RayLab.Sampling.Lanes", "Sampling.Lanes"),
         ("RayLab.Sampling", "Sampling"),
         ("RayLab.Simd", "Simd"),
         ("RayLab.Cameras", "Cameras"),
@@ -128,7 +127,7 @@ public sealed class LayerTests
         Assert.Empty(FindCycle([.. Allowed.SelectMany(pair => pair.Value.Select(to => (pair.Key, to)))]));
         Assert.Contains(LayerDependencies(), d => d.From == "Rendering.Point" && d.To == "Simd");
         Assert.Contains(LayerDependencies(), d => d.From == "Cameras" && d.To == "Simd");
-        Assert.Contains(LayerDependencies(), d => d.From == "Sampling.Lanes" && d.To == "Simd");
+        Assert.Contains(LayerDependencies(), d => d.From == "Sampling" && d.To == "Simd");
         Assert.Contains(LayerDependencies(), d => d.From == "Rendering.Packets" && d.To == "Cameras");
     }
 

@@ -81,6 +81,16 @@ public class LaneSamplerTests
     }
 
     [Fact]
+    public void EveryBuiltInSamplerHasALaneForm()
+    {
+        foreach (string name in Samplers.Names)
+        {
+            IPixelSampler sampler = Samplers.Create(name, 16, 1);
+            Assert.True(sampler is ILaneSampled, $"{name} ({sampler.GetType().Name}) has no lane form: the packet kernel would take the buffered path.");
+        }
+    }
+
+    [Fact]
     public void TheSecondSobolDimensionIsTheReversedSupersetXor()
     {
         var random = new Random(21);

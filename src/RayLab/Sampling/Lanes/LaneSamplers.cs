@@ -27,6 +27,34 @@ internal interface ILaneSampler<TL>
     void Sample(int index, out TL sx, out TL sy);
 }
 
+/// <summary>
+/// A sampler with a lane form: the packet kernel asks it for the form at a register width instead of knowing its
+/// type. Every built-in sampler implements it (a test holds that); a sampler that does not, such as a student's own
+/// <see cref="IPixelSampler"/>, takes the buffered path (<see cref="BufferedLanes{TL}"/>).
+/// </summary>
+internal interface ILaneSampled
+{
+    /// <summary>Hands <paramref name="user"/> this sampler's lane form at width <typeparamref name="TL"/>.</summary>
+    /// <typeparam name="TL">The lane type.</typeparam>
+    /// <typeparam name="TU">What uses the lane form.</typeparam>
+    /// <typeparam name="TResult">What the user returns.</typeparam>
+    TResult WithLanes<TL, TU, TResult>(ref TU user)
+        where TL : struct, ILanes<TL>
+        where TU : struct, ILaneSamplerUser<TL, TResult>;
+}
+
+/// <summary>Something that runs on a lane sampler: given a way to make one (one per thread), its result.</summary>
+/// <typeparam name="TL">The lane type.</typeparam>
+/// <typeparam name="TResult">The result.</typeparam>
+internal interface ILaneSamplerUser<TL, TResult>
+    where TL : struct, ILanes<TL>
+{
+    /// <summary>Runs on the lane sampler that <paramref name="create"/> makes.</summary>
+    /// <typeparam name="TS">The lane sampler.</typeparam>
+    TResult Run<TS>(Func<TS> create)
+        where TS : struct, ILaneSampler<TL>;
+}
+
 /// <summary><see cref="CounterHash"/> in lanes: one pixel per lane.</summary>
 internal static class LaneHash
 {
