@@ -1,4 +1,7 @@
+using System.Runtime.CompilerServices;
 using RayLab.Sampling.Lanes;
+using RayLab.Simd;
+
 namespace RayLab.Sampling;
 
 /// <summary>
@@ -23,6 +26,40 @@ public sealed class RegularSampler : GridSampler, ILaneSampled
     }
 
     /// <inheritdoc />
-    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
-        user.Run(() => new RegularLanes<TL>(this));
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) => user.Run(() => new LaneForm<TL>(this));
+
+    /// <summary>The points in lanes: <see cref="GetSample"/>'s (the same in every pixel) in float, from a table made once.</summary>
+    private readonly struct LaneForm<TL>(RegularSampler sampler) : ILaneSampler<TL>
+        where TL : struct, ILanes<TL>
+    {
+        private readonly (float X, float Y)[] _points = Points(sampler);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void BeginPacket(int x0, int row)
+        {
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public int Prepare(int start, int end) => end;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Sample(int index, out TL sx, out TL sy)
+        {
+            (float x, float y) = _points[index];
+            sx = TL.Broadcast(x);
+            sy = TL.Broadcast(y);
+        }
+
+        private static (float X, float Y)[] Points(RegularSampler sampler)
+        {
+            var points = new (float, float)[sampler.SamplesPerPixel];
+            for (int i = 0; i < points.Length; i++)
+            {
+                SamplePoint p = sampler.GetSample(0, 0, i);
+                points[i] = ((float)p.X, (float)p.Y);
+            }
+
+            return points;
+        }
+    }
 }

@@ -55,120 +55,18 @@ internal interface ILaneSamplerUser<TL, TResult>
         where TS : struct, ILaneSampler<TL>;
 }
 
-/// <summary><see cref="CounterHash"/> in lanes: one pixel per lane.</summary>
+/// <summary><see cref="CounterHash"/> in lanes: one pixel per lane (<see cref="PointHash"/> at a lane type).</summary>
 internal static class LaneHash
 {
     /// <summary><see cref="CounterHash.PixelKey"/> of pixels x0 … x0 + Count − 1 of a row; <paramref name="salt"/> is the hashed, salted seed.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static TL PixelKeys<TL>(int x0, int row, uint salt)
-        where TL : struct, ILanes<TL> =>
-        TL.Hash(TL.Xor(TL.BroadcastBits(((uint)row << 16) ^ salt), TL.SequenceBits((uint)x0)));
+        where TL : struct, ILanes<TL> => PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, salt);
 
     /// <summary><see cref="CounterHash.SampleHash"/> of sample <paramref name="index"/> in every lane.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static TL SampleHash<TL>(TL keys, int index)
-        where TL : struct, ILanes<TL> =>
-        TL.Hash(TL.Xor(keys, TL.BroadcastBits((uint)index * CounterHash.Golden)));
-}
-
-/// <summary><see cref="JitteredSampler"/> in lanes: the counter hash runs in SIMD, one lane per pixel.</summary>
-/// <remarks>
-/// Sample i is ((i mod n) + u)/n across, computed as one multiply-add: u·2²⁴ (the hash's top 24 bits, exact)
-/// times 2⁻²⁴/n, plus (i mod n)/n from a table.
-/// </remarks>
-internal struct JitteredLanes<TL>(JitteredSampler sampler) : ILaneSampler<TL>
-    where TL : struct, ILanes<TL>
-{
-    private readonly uint _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
-    private readonly TL _scale = TL.Broadcast(1f / sampler.GridSize / 16777216f);
-    private readonly (float Column, float Row)[] _cells = Cells(sampler.GridSize);
-    private TL _keys;
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public void BeginPacket(int x0, int row) => _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public readonly int Prepare(int start, int end) => end;
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public readonly void Sample(int index, out TL sx, out TL sy)
-    {
-        TL h1 = LaneHash.SampleHash(_keys, index);
-        TL h2 = TL.Hash(h1);
-        (float column, float row) = _cells[index];
-        sx = TL.MultiplyAdd(TL.Top24(h1), _scale, TL.Broadcast(column));
-        sy = TL.MultiplyAdd(TL.Top24(h2), _scale, TL.Broadcast(row));
-    }
-
-    /// <summary>Sample i's cell corner ((i mod n)/n, (i div n)/n), looked up rather than divided for in the hot loop.</summary>
-    private static (float Column, float Row)[] Cells(int n)
-    {
-        var cells = new (float, float)[n * n];
-        for (int i = 0; i < cells.Length; i++)
-        {
-            cells[i] = ((float)(i % n) / n, (float)(i / n) / n);
-        }
-
-        return cells;
-    }
-}
-
-/// <summary><see cref="RandomSampler"/> in lanes: the counter hash runs in SIMD, one lane per pixel.</summary>
-internal struct RandomLanes<TL>(RandomSampler sampler) : ILaneSampler<TL>
-    where TL : struct, ILanes<TL>
-{
-    private readonly uint _salt = CounterHash.Hash(sampler.Seed + CounterHash.Golden);
-    private TL _keys;
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public void BeginPacket(int x0, int row) => _keys = LaneHash.PixelKeys<TL>(x0, row, _salt);
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public readonly int Prepare(int start, int end) => end;
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public readonly void Sample(int index, out TL sx, out TL sy)
-    {
-        TL h1 = LaneHash.SampleHash(_keys, index);
-        sx = TL.ToUnit(h1);
-        sy = TL.ToUnit(TL.Hash(h1));
-    }
-}
-
-/// <summary><see cref="RegularSampler"/> in lanes: the same point in every pixel, from a table made once.</summary>
-internal readonly struct RegularLanes<TL>(RegularSampler sampler) : ILaneSampler<TL>
-    where TL : struct, ILanes<TL>
-{
-    private readonly (float X, float Y)[] _points = Points(sampler);
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public void BeginPacket(int x0, int row)
-    {
-    }
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public int Prepare(int start, int end) => end;
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public void Sample(int index, out TL sx, out TL sy)
-    {
-        (float x, float y) = _points[index];
-        sx = TL.Broadcast(x);
-        sy = TL.Broadcast(y);
-    }
-
-    /// <summary>The sampler's points (the same for every pixel), so the hot loop makes no call for them.</summary>
-    private static (float X, float Y)[] Points(RegularSampler sampler)
-    {
-        var points = new (float, float)[sampler.SamplesPerPixel];
-        for (int i = 0; i < points.Length; i++)
-        {
-            SamplePoint p = sampler.GetSample(0, 0, i);
-            points[i] = ((float)p.X, (float)p.Y);
-        }
-
-        return points;
-    }
+        where TL : struct, ILanes<TL> => PointHash.SampleHash<TL, LaneMath<TL>>(keys, index);
 }
 
 /// <summary>
