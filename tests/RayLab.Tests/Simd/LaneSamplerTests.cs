@@ -261,6 +261,20 @@ public class LaneSamplerTests
     }
 
     [Fact]
+    public void TheWorkedExamplesSamplerRendersTheSameBytesOnItsLaneFormAsOnTheBufferedPath()
+    {
+        // docs/architecture.md, "Adding a sampler": one file, and the packet kernel takes its lane form. With N = 16
+        // the lanes' float is the scalar double exactly, so the two paths give the same bytes.
+        var scene = new Scene([new Sphere(new Double3(0, 0, 0), 1, new Intensity(0.9, 0.2, 0.2))], new Intensity(0.1, 0.1, 0.15), Intensity.White);
+        var camera = new PerspectiveCamera { Position = new Double3(0, 0.5, 6), Target = Double3.Zero, Fov = 40, NearPlane = 0.1, FarPlane = 100 };
+        var diagonal = new RayLab.Tests.Sampling.DiagonalSampler(16, 5);
+        Image lanes = new(83, 61), buffered = new(83, 61);
+        Assert.Equal(RenderKernel.Vector128, new Renderer { Kernel = RenderKernel.Vector128 }.Render(scene, camera, diagonal, lanes).Kernel);
+        new Renderer { Kernel = RenderKernel.Vector128 }.Render(scene, camera, new StudentSampler(diagonal), buffered);
+        Assert.True(lanes.PixelBytes.SequenceEqual(buffered.PixelBytes), "The worked example's lane form differs from its scalar points.");
+    }
+
+    [Fact]
     public void TheBufferedPathAsksForAPixelsSamplesInOneCall()
     {
         var scene = new Scene([new Sphere(new Double3(0, 0, 0), 1, new Intensity(0.9, 0.2, 0.2))], new Intensity(0.1, 0.1, 0.15), Intensity.White);
