@@ -26,6 +26,9 @@ internal interface IPointMath<TV>
     /// <summary>Bitwise and.</summary>
     static abstract TV And(TV a, TV b);
 
+    /// <summary>Bitwise or.</summary>
+    static abstract TV Or(TV a, TV b);
+
     /// <summary>Sum of the bits as 32-bit unsigned integers (wrapping).</summary>
     static abstract TV AddBits(TV a, TV b);
 
@@ -94,6 +97,10 @@ internal readonly struct ScalarMath : IPointMath<ScalarLane>
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane Or(ScalarLane a, ScalarLane b) => new(a.Bits | b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static ScalarLane AddBits(ScalarLane a, ScalarLane b) => new(a.Bits + b.Bits, 0);
 
     /// <inheritdoc />
@@ -154,6 +161,10 @@ internal readonly struct LaneMath<TL> : IPointMath<TL>
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static TL And(TL a, TL b) => a & b;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Or(TL a, TL b) => a | b;
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
