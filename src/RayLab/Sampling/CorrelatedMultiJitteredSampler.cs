@@ -1,4 +1,3 @@
-using RayLab.Sampling.Lanes;
 using System.Runtime.CompilerServices;
 
 namespace RayLab.Sampling;

@@ -1,5 +1,4 @@
 using System.Runtime.CompilerServices;
-using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Sampling;

@@ -1,4 +1,3 @@
-using RayLab.Sampling.Lanes;
 namespace RayLab.Sampling;
 
 /// <summary>

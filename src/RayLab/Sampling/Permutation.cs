@@ -1,5 +1,4 @@
 using System.Runtime.CompilerServices;
-using RayLab.Sampling.Lanes;
 
 namespace RayLab.Sampling;
 

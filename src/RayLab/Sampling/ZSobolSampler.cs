@@ -1,4 +1,3 @@
-using RayLab.Sampling.Lanes;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 

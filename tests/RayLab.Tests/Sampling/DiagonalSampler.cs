@@ -1,6 +1,5 @@
 using System.Runtime.CompilerServices;
 using RayLab.Sampling;
-using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Tests.Sampling;

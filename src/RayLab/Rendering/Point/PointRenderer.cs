@@ -2,7 +2,6 @@ using RayLab.Cameras;
 using RayLab.Rendering.Packets;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
-using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Point;

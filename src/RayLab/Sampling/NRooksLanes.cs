@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
 using RayLab.Simd;
 
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// <see cref="NRooksSampler"/> in lanes: both of a pixel's permutations (column and row) walk in SIMD and the

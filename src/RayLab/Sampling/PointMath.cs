@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
 using RayLab.Simd;
 
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// The arithmetic a sampler's point formula is written in, once, over <typeparamref name="TV"/>: one pixel's number

@@ -3,7 +3,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Simd;
 
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// <see cref="ZSobolSampler"/> in lanes. At the start of a packet the digit permutations it needs are hashed together

@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
 using RayLab.Simd;
 
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// Where the samples of a packet's pixels go, lane by lane: sample <c>index</c> of pixels

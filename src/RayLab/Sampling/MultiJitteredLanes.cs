@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
 using RayLab.Simd;
 
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// <see cref="MultiJitteredSampler"/> in lanes: the n column and n row permutations of each pixel get their
