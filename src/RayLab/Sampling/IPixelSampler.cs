@@ -7,8 +7,9 @@ namespace RayLab.Sampling;
 /// <remarks>
 /// The SIMD packet kernel traces one pixel per lane. Every built-in sampler gives it a lane form of its own point
 /// formula. A sampler of your own has none: the kernel then takes the buffered path, which asks
-/// <see cref="GetSamples"/> for each pixel of a packet and loads the points into lanes. That is the same bytes, but
-/// slower than a built-in sampler's lanes; <c>raylab compare</c> shows each row's kernel and rays per millisecond.
+/// <see cref="GetSamples"/> for each pixel of a packet and loads the points into lanes: the image is the one its points
+/// give, but a packet costs a <see cref="GetSamples"/> call per pixel where a built-in sampler computes its points in
+/// the lanes themselves.
 /// </remarks>
 public interface IPixelSampler
 {
