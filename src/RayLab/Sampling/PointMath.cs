@@ -62,6 +62,29 @@ internal interface IPointMath<TV>
     /// <paramref name="scale"/> = 1f / n / 2²⁴.
     /// </summary>
     static abstract TV InCell(TV bits, int cell, int n, float corner, float scale);
+
+    /// <summary>
+    /// <c>(cell + ToUnit(bits)) / n</c> for each lane's own cell (its bits a whole number below 2²⁴), in double; a
+    /// lane type gives the float of that double.
+    /// </summary>
+    static abstract TV InCellExactly(TV cell, TV bits, in CellDivisor n);
+}
+
+/// <summary>The divisor n of <see cref="IPointMath{TV}.InCellExactly"/> and what the lanes need of it, made once.</summary>
+/// <param name="n">n, ≥ 1.</param>
+internal readonly struct CellDivisor(int n)
+{
+    /// <summary>n.</summary>
+    public readonly int N = n;
+
+    /// <summary>True when n is a power of two: one float rounding of cell + u, then an exact scaling, gives the float.</summary>
+    public readonly bool IsPowerOfTwo = int.IsPow2(n);
+
+    /// <summary>1/n in float (exact when n is a power of two).</summary>
+    public readonly float Inverse = 1f / n;
+
+    /// <summary>The formula in double, for the lanes when n is not a power of two.</summary>
+    public readonly CellFormula Formula = new(CellFormula.UnitScale, n, 1);
 }
 
 /// <summary>One pixel's value for <see cref="IPointMath{TV}"/>: 32 bits or a double, as the formula's step needs.</summary>
@@ -139,6 +162,11 @@ internal readonly struct ScalarMath : IPointMath<ScalarLane>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static ScalarLane InCell(ScalarLane bits, int cell, int n, float corner, float scale) =>
         new(0, (cell + CounterHash.ToUnit(bits.Bits)) / n);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane InCellExactly(ScalarLane cell, ScalarLane bits, in CellDivisor n) =>
+        new(0, ((int)cell.Bits + CounterHash.ToUnit(bits.Bits)) / n.N);
 }
 
 /// <summary><see cref="IPointMath{TV}"/> in the lanes of <typeparamref name="TL"/>, one pixel per lane, reals in float.</summary>
@@ -202,6 +230,20 @@ internal readonly struct LaneMath<TL> : IPointMath<TL>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static TL InCell(TL bits, int cell, int n, float corner, float scale) =>
         TL.MultiplyAdd(TL.Top24(bits), TL.Broadcast(scale), TL.Broadcast(corner));
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL InCellExactly(TL cell, TL bits, in CellDivisor n)
+    {
+        TL c = TL.BitsToFloat(cell);
+        if (n.IsPowerOfTwo)
+        {
+            // (c + u)/N with N = 2ᵏ: c + u rounded once (u·2²⁴ is exact), then an exact scaling.
+            return TL.MultiplyAdd(TL.Top24(bits), TL.Broadcast(1f / 16777216f), c) * TL.Broadcast(n.Inverse);
+        }
+
+        return TL.InDouble(n.Formula, c, TL.Top24(bits), default, default);
+    }
 }
 
 /// <summary><see cref="CounterHash"/> in <see cref="IPointMath{TV}"/>: the pixel keys and sample hashes of every sampler.</summary>
