@@ -20,7 +20,7 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
     /// <param name="seed">The seed; different seeds give different points.</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="samplesPerPixel"/> is less than 1.</exception>
     public NRooksSampler(int samplesPerPixel, uint seed)
-        : base(samplesPerPixel, seed) => _divisor = new CellDivisor(samplesPerPixel);
+        : base(samplesPerPixel, seed) => _divisor = new CellDivisor(samplesPerPixel, 1);
 
     private readonly CellDivisor _divisor;
 

@@ -68,23 +68,36 @@ internal interface IPointMath<TV>
     /// lane type gives the float of that double.
     /// </summary>
     static abstract TV InCellExactly(TV cell, TV bits, in CellDivisor n);
+
+    /// <summary>
+    /// <c>(cell + (sub + ToUnit(bits)) / n) / n</c>: a cell inside coarse cell <paramref name="cell"/>, each lane's
+    /// <paramref name="sub"/> a whole number below 2²⁴, in double; a lane type gives the float of that double.
+    /// </summary>
+    static abstract TV InSubCell(int cell, TV sub, TV bits, in CellDivisor n);
 }
 
-/// <summary>The divisor n of <see cref="IPointMath{TV}.InCellExactly"/> and what the lanes need of it, made once.</summary>
-/// <param name="n">n, ≥ 1.</param>
-internal readonly struct CellDivisor(int n)
+/// <summary>
+/// The divisors of <see cref="IPointMath{TV}.InCellExactly"/> (n) and <see cref="IPointMath{TV}.InSubCell"/> (n and
+/// n again), and what the lanes need of them, made once.
+/// </summary>
+/// <param name="inner">The inner divisor n, ≥ 1.</param>
+/// <param name="outer">The outer divisor: 1, or n for a cell inside a cell.</param>
+internal readonly struct CellDivisor(int inner, int outer)
 {
-    /// <summary>n.</summary>
-    public readonly int N = n;
+    /// <summary>The inner divisor.</summary>
+    public readonly int Inner = inner;
 
-    /// <summary>True when n is a power of two: one float rounding of cell + u, then an exact scaling, gives the float.</summary>
-    public readonly bool IsPowerOfTwo = int.IsPow2(n);
+    /// <summary>The outer divisor.</summary>
+    public readonly int Outer = outer;
 
-    /// <summary>1/n in float (exact when n is a power of two).</summary>
-    public readonly float Inverse = 1f / n;
+    /// <summary>True when the inner divisor is a power of two: one float rounding of the sum, then an exact scaling, gives the float.</summary>
+    public readonly bool IsPowerOfTwo = int.IsPow2(inner);
 
-    /// <summary>The formula in double, for the lanes when n is not a power of two.</summary>
-    public readonly CellFormula Formula = new(CellFormula.UnitScale, n, 1);
+    /// <summary>1/(inner·outer) in float (exact when they are powers of two).</summary>
+    public readonly float Inverse = 1f / (inner * outer);
+
+    /// <summary>The formula in double, for the lanes when the divisors are not powers of two.</summary>
+    public readonly CellFormula Formula = new(CellFormula.UnitScale, inner, outer);
 }
 
 /// <summary>One pixel's value for <see cref="IPointMath{TV}"/>: 32 bits or a double, as the formula's step needs.</summary>
@@ -166,7 +179,12 @@ internal readonly struct ScalarMath : IPointMath<ScalarLane>
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static ScalarLane InCellExactly(ScalarLane cell, ScalarLane bits, in CellDivisor n) =>
-        new(0, ((int)cell.Bits + CounterHash.ToUnit(bits.Bits)) / n.N);
+        new(0, ((int)cell.Bits + CounterHash.ToUnit(bits.Bits)) / n.Inner);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane InSubCell(int cell, ScalarLane sub, ScalarLane bits, in CellDivisor n) =>
+        new(0, (cell + (((int)sub.Bits + CounterHash.ToUnit(bits.Bits)) / n.Inner)) / n.Outer);
 }
 
 /// <summary><see cref="IPointMath{TV}"/> in the lanes of <typeparamref name="TL"/>, one pixel per lane, reals in float.</summary>
@@ -243,6 +261,20 @@ internal readonly struct LaneMath<TL> : IPointMath<TL>
         }
 
         return TL.InDouble(n.Formula, c, TL.Top24(bits), default, default);
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL InSubCell(int cell, TL sub, TL bits, in CellDivisor n)
+    {
+        TL s = TL.BitsToFloat(sub);
+        if (n.IsPowerOfTwo)
+        {
+            // (cell + (sub + u)/n)/n = (cell·n + sub + u)/n² with n = 2ᵏ: one rounding of the sum, an exact scaling.
+            return TL.MultiplyAdd(TL.Top24(bits), TL.Broadcast(1f / 16777216f), TL.Broadcast(cell * n.Inner) + s) * TL.Broadcast(n.Inverse);
+        }
+
+        return TL.InDouble(n.Formula, s, TL.Top24(bits), TL.Broadcast(cell), default);
     }
 }
 
