@@ -2,7 +2,6 @@ using RayLab.Cameras;
 using RayLab.Rendering.Packets;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
-using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Point;
@@ -46,25 +45,18 @@ internal static class PointRenderer
         return 0;
     }
 
+    /// <summary>
+    /// The packet kernel with the sampler's own lane form (<see cref="ILaneSampled"/>), or, for a sampler without one,
+    /// the buffered lanes that ask it for each pixel's points.
+    /// </summary>
     private static long RenderPackets<TL>(ImagePlane plane, PacketFrame frame, IPixelSampler sampler, PixelTarget image, RowLoop loop)
-        where TL : struct, ILanes<TL> => sampler switch
-        {
-            JitteredSampler jittered => RenderPackets<TL, JitteredLanes<TL>>(plane, frame, () => new(jittered), sampler.SamplesPerPixel, image, loop),
-            RandomSampler random => RenderPackets<TL, RandomLanes<TL>>(plane, frame, () => new(random), sampler.SamplesPerPixel, image, loop),
-            RegularSampler regular => RenderPackets<TL, RegularLanes<TL>>(plane, frame, () => new(regular), sampler.SamplesPerPixel, image, loop),
-            SobolSampler sobol => RenderPackets<TL, SobolLanes<TL>>(plane, frame, () => new(sobol), sampler.SamplesPerPixel, image, loop),
-            ZSobolSampler zsobol => RenderPackets<TL, ZSobolLanes<TL>>(plane, frame, () => new(zsobol), sampler.SamplesPerPixel, image, loop),
-            Pmj02Sampler pmj02 => RenderPackets<TL, Pmj02Lanes<TL>>(plane, frame, () => new(pmj02), sampler.SamplesPerPixel, image, loop),
-            Pmj02BNSampler pmj02bn => RenderPackets<TL, Pmj02Lanes<TL>>(plane, frame, () => new(pmj02bn), sampler.SamplesPerPixel, image, loop),
-            HammersleySampler hammersley => RenderPackets<TL, HammersleyLanes<TL>>(plane, frame, () => new(hammersley), sampler.SamplesPerPixel, image, loop),
-            CorrelatedMultiJitteredSampler cmj when cmj.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, CorrelatedMultiJitteredLanes<TL>>(plane, frame, () => new(cmj), sampler.SamplesPerPixel, image, loop),
-            MultiJitteredSampler multiJittered when multiJittered.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, MultiJitteredLanes<TL>>(plane, frame, () => new(multiJittered), sampler.SamplesPerPixel, image, loop),
-            NRooksSampler nrooks when nrooks.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, NRooksLanes<TL>>(plane, frame, () => new(nrooks), sampler.SamplesPerPixel, image, loop),
-            _ => RenderPackets<TL, BufferedLanes<TL>>(plane, frame, () => new(sampler), sampler.SamplesPerPixel, image, loop),
-        };
+        where TL : struct, ILanes<TL>
+    {
+        var packets = new PacketStart<TL>(plane, frame, sampler.SamplesPerPixel, image, loop);
+        return sampler is ILaneSampled sampled
+            ? sampled.WithLanes<TL, PacketStart<TL>, long>(ref packets)
+            : packets.Run(() => new BufferedLanes<TL>(sampler));
+    }
 
     private static long RenderPackets<TL, TS>(ImagePlane plane, PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, PixelTarget image, RowLoop loop)
         where TL : struct, ILanes<TL>
@@ -148,6 +140,14 @@ internal static class PointRenderer
     {
         public long Run<TP>(ImagePlane<TP> plane)
             where TP : struct, IProjection => RenderScalar<TP>(scene, plane, sampler, image, loop);
+    }
+
+    /// <summary>The packet loop, started with the lane sampler the sampler hands it.</summary>
+    private readonly struct PacketStart<TL>(ImagePlane plane, PacketFrame frame, int samplesPerPixel, PixelTarget image, RowLoop loop) : ILaneSamplerUser<TL, long>
+        where TL : struct, ILanes<TL>
+    {
+        public long Run<TS>(Func<TS> create)
+            where TS : struct, ILaneSampler<TL> => RenderPackets<TL, TS>(plane, frame, create, samplesPerPixel, image, loop);
     }
 
     /// <summary>The packet loop over the image's rows, compiled for the plane's projection.</summary>

@@ -2,7 +2,7 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
 using RayLab.Rendering.Packets;
-using RayLab.Sampling.Lanes;
+using RayLab.Sampling;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Point.Packets;
