@@ -1,6 +1,6 @@
 using System.Globalization;
 using System.Runtime.Intrinsics;
-using RayLab.Comparison;
+using RayLab.Reports.Comparison;
 using RayLab.OwnMethod;
 
 namespace RayLab.Cli.Tests.OwnMethod;
