@@ -22,7 +22,7 @@ internal static class PngEncoder
 {
     /// <summary>
     /// About how many filtered bytes one band holds (whole rows, at least one): 512 KiB, 12 bands for a 1920×1080
-    /// picture — enough to share among cores, while each band's restart costs the file well under 1 % (docs/performance.md).
+    /// picture — enough to share among cores (each band restarts DEFLATE's window, which costs a flat-coloured picture little).
     /// </summary>
     internal const int BandBytes = 1 << 19;
 
@@ -40,7 +40,7 @@ internal static class PngEncoder
     /// <param name="level">
     /// The DEFLATE compression level. <see cref="CompressionLevel.Optimal"/>, the balance of speed and size, is zlib
     /// level 4 here rather than the runtime's 6: on the rendered 1080p two-sphere pictures (jittered and exact) level 6
-    /// took 1.5–1.6× the time for 1–2 % fewer bytes (docs/performance.md, "PNG encoding": ZlibLevelBenchmarks).
+    /// took 1.2–1.6× the time for 1–2 % fewer bytes (docs/performance.md, "PNG": ZlibLevelBenchmarks).
     /// <see cref="CompressionLevel.Fastest"/> is level 1, <see cref="CompressionLevel.SmallestSize"/> level 9.
     /// </param>
     /// <param name="filter">

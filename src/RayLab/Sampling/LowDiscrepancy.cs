@@ -59,7 +59,7 @@ internal static class LowDiscrepancy
     /// <summary>
     /// <see cref="SobolDimension1"/> a byte at a time: entry 256·k + b is the XOR of the generator columns for the
     /// set bits of byte b in position k. Four lookups instead of a loop over up to 32 bits: scrambled indices use all
-    /// 32, and a loop with a branch per bit is far slower (docs/performance.md).
+    /// 32, and a loop over them takes a step per set bit.
     /// </summary>
     private static readonly uint[] Dimension1Bytes = BuildDimension1Bytes();
 
