@@ -1,6 +1,6 @@
 using BenchmarkDotNet.Attributes;
 using RayLab.ImageSharp;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 using RayLab.Scenes;
 using SixLabors.ImageSharp;
 using SkiaSharp;

@@ -1,5 +1,5 @@
 using BenchmarkDotNet.Attributes;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 using SkiaSharp;
 
 namespace RayLab.Benchmarks;

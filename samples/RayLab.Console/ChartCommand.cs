@@ -1,6 +1,6 @@
 using System.CommandLine;
 using System.Globalization;
-using RayLab.Comparison;
+using RayLab.Reports.Comparison;
 
 namespace RayLab.Cli;
 

@@ -1,5 +1,5 @@
 using System.CommandLine;
-using RayLab.Comparison;
+using RayLab.Reports.Comparison;
 
 namespace RayLab.Cli;
 

@@ -1,6 +1,6 @@
 using System.Globalization;
 using RayLab.Sampling;
-using RayLab.Comparison;
+using RayLab.Reports.Comparison;
 using RayLab.Scenes;
 
 namespace RayLab.Cli;

@@ -1,4 +1,4 @@
-using RayLab.Comparison;
+using RayLab.Reports.Comparison;
 using Spectre.Console;
 
 namespace RayLab.Cli;

@@ -1,6 +1,6 @@
 using System.CommandLine;
 using System.Globalization;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 using RayLab.Metrics;
 
 namespace RayLab.Cli;

@@ -3,7 +3,7 @@ using System.Globalization;
 using System.Text;
 using System.Text.RegularExpressions;
 using System.Xml.Linq;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 using RayLab.Metrics;
 using RayLab.Scenes;
 

@@ -1,5 +1,5 @@
 using System.CommandLine;
-using RayLab.Patterns;
+using RayLab.Reports.Patterns;
 using RayLab.Sampling;
 
 namespace RayLab.Cli;

@@ -1,5 +1,5 @@
 using System.Globalization;
-using RayLab.Patterns;
+using RayLab.Reports.Patterns;
 
 namespace RayLab.Cli;
 

@@ -2,7 +2,7 @@ using System.CommandLine;
 using System.CommandLine.Help;
 using System.Globalization;
 using System.Runtime.InteropServices;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 using RayLab.Sampling;
 using RayLab.Scenes;
 

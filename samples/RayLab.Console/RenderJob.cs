@@ -2,7 +2,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Runtime.CompilerServices;
 using System.Text.Json;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 using RayLab.Scenes;
 
 namespace RayLab.Cli;

@@ -5,6 +5,7 @@ using Microsoft.AspNetCore.Components;
 using Microsoft.JSInterop;
 using RayLab.Cameras;
 using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Inspection;
 using RayLab.Rendering.Exact;
 using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;

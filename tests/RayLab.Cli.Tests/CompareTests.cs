@@ -1,7 +1,7 @@
 using System.Globalization;
 using System.Text.RegularExpressions;
 using System.Xml.Linq;
-using RayLab.Comparison;
+using RayLab.Reports.Comparison;
 using RayLab.Metrics;
 using RayLab.Sampling;
 using RayLab.Scenes;

@@ -1,6 +1,6 @@
 using System.Globalization;
 using System.Text.RegularExpressions;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 using RayLab.Metrics;
 using RayLab.Sampling;
 using RayLab.Scenes;

@@ -1,5 +1,5 @@
 using System.Text.RegularExpressions;
-using RayLab.Patterns;
+using RayLab.Reports.Patterns;
 using RayLab.Sampling;
 
 namespace RayLab.Cli.Tests;

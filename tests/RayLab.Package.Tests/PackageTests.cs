@@ -148,8 +148,8 @@ public sealed partial class PackageTests(PackedFeed feed) : IClassFixture<Packed
         string app = feed.NewProject("reports-app", ["RayLab", "RayLab.Reports"]);
         File.WriteAllText(Path.Combine(app, "Program.cs"), """
             using RayLab;
-            using RayLab.Comparison;
-            using RayLab.Imaging;
+            using RayLab.Reports.Comparison;
+            using RayLab.Reports.Imaging;
             using RayLab.Sampling;
 
             ReportsImageFormats.Register();

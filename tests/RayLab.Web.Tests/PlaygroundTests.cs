@@ -2,7 +2,7 @@ using System.Globalization;
 using System.Security.Cryptography;
 using Microsoft.Playwright;
 using Microsoft.Playwright.Xunit.v3;
-using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Inspection;
 using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 using RayLab.Scenes;

@@ -31,5 +31,5 @@ internal sealed record InspectedPoint(string Label, double X, double Y, Intensit
 
 /// <summary>What the pixel inspector shows for one pixel.</summary>
 internal sealed record Inspection(
-    int X, int Y, string Method, IReadOnlyList<InspectedPoint> Points, IReadOnlyList<RayLab.Rendering.Adaptive.AdaptiveSquare> Squares,
+    int X, int Y, string Method, IReadOnlyList<InspectedPoint> Points, IReadOnlyList<RayLab.Rendering.Inspection.AdaptiveSquare> Squares,
     Intensity Value, Intensity Exact, Rgb24 Rendered, string InsideDataUrl);

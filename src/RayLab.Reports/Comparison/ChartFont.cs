@@ -1,7 +1,7 @@
 using ScottPlot;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>
 /// The font RayLab's charts are labelled with: the DejaVu Sans the library embeds, so a chart's text draws on any

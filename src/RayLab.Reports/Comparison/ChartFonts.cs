@@ -1,8 +1,8 @@
 using ScottPlot;
 using SkiaSharp;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>
 /// Hands ScottPlot the embedded DejaVu Sans (<see cref="LabelFont"/>) when a chart asks for it by name: Skia's

@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>
 /// One setting a comparison renders, as a <see cref="RenderMethod"/>: a point sampler at one budget

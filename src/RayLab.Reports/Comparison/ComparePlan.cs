@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>The built-in settings a comparison renders, and the check that no two settings share image files.</summary>
 public static class ComparePlan

@@ -3,7 +3,7 @@ using System.Net;
 using System.Text;
 using RayLab.Metrics;
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>
 /// The speed-against-error report (<c>raylab compare</c>, <see cref="CompareRunner.Run"/>): the table (Markdown and CSV) with

@@ -1,5 +1,5 @@
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>What a comparison measured for one setting.</summary>
 /// <param name="Case">The setting.</param>

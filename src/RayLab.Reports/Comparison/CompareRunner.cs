@@ -1,8 +1,8 @@
 using System.Globalization;
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 using RayLab.Metrics;
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>
 /// Speed against error: renders a scene with each setting (built-in samplers or methods of your own), measures each

@@ -1,5 +1,5 @@
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>How <see cref="CompareRunner"/> renders and times the settings.</summary>
 /// <param name="Repeats">Renders per setting; the time is their median (more where they are too quick to time, see <see cref="CompareRunner.MinimumMeasured"/>).</param>

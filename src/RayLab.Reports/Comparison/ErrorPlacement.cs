@@ -1,6 +1,6 @@
 using RayLab.Metrics;
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>Where an image's error sits, by <see cref="ErrorLocation"/>'s two measures.</summary>
 /// <param name="LowPass1">The RMSE in levels after a Gaussian blur of σ = 1 pixel.</param>

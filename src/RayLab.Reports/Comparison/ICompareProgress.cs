@@ -1,5 +1,5 @@
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>Watches a comparison's renders one by one: a progress bar, a line per render, or nothing.</summary>
 public interface ICompareProgress

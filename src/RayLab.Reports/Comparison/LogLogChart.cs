@@ -2,7 +2,7 @@ using System.Globalization;
 using ScottPlot;
 using ScottPlot.TickGenerators;
 
-namespace RayLab.Comparison;
+namespace RayLab.Reports.Comparison;
 
 /// <summary>
 /// The compare report's line charts with logarithmic axes, drawn by ScottPlot: both axes labelled in decades with

@@ -1,6 +1,6 @@
 using RayLab.Metrics;
 
-namespace RayLab.Imaging;
+namespace RayLab.Reports.Imaging;
 
 /// <summary>
 /// A FLIP error map (<see cref="FlipResult"/>) as a picture, in the magma colour map NVIDIA's FLIP tool writes its

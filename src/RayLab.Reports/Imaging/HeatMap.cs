@@ -1,7 +1,7 @@
 using System.Globalization;
 using SkiaSharp;
 
-namespace RayLab.Imaging;
+namespace RayLab.Reports.Imaging;
 
 /// <summary>
 /// Draws a per-pixel quantity — the primary rays an adaptive render spent on each pixel — as a false-colour

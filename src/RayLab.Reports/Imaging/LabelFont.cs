@@ -1,6 +1,6 @@
 using SkiaSharp;
 
-namespace RayLab.Imaging;
+namespace RayLab.Reports.Imaging;
 
 /// <summary>
 /// The typeface every label RayLab draws is set in (heat-map legends, compare charts): DejaVu Sans, embedded in the
@@ -12,7 +12,7 @@ internal static class LabelFont
     /// <summary>The family name charts ask for.</summary>
     public const string FamilyName = "DejaVu Sans";
 
-    private const string ResourceName = "RayLab.Imaging.Fonts.DejaVuSans.ttf";
+    private const string ResourceName = "RayLab.Reports.Imaging.Fonts.DejaVuSans.ttf";
 
     private static readonly Lazy<SKTypeface> Face = new(Load, LazyThreadSafetyMode.ExecutionAndPublication);
 

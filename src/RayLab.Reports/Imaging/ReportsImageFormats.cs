@@ -1,4 +1,4 @@
-namespace RayLab.Imaging;
+namespace RayLab.Reports.Imaging;
 
 /// <summary>
 /// The image formats this package writes, for the core's <see cref="ImageFormats"/> registry: WebP (SkiaSharp).

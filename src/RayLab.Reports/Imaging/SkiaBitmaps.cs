@@ -1,7 +1,7 @@
 using System.Runtime.InteropServices;
 using SkiaSharp;
 
-namespace RayLab.Imaging;
+namespace RayLab.Reports.Imaging;
 
 /// <summary>
 /// The lab's image (<see cref="Image"/>) to and from SkiaSharp's <see cref="SKBitmap"/>, for a student who wants to

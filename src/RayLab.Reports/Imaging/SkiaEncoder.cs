@@ -1,6 +1,6 @@
 using SkiaSharp;
 
-namespace RayLab.Imaging;
+namespace RayLab.Reports.Imaging;
 
 /// <summary>
 /// Writes WebP (<see cref="ReportsImageFormats.Webp"/>) and JPEG (for the benchmarks' comparison with

@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Patterns;
+namespace RayLab.Reports.Patterns;
 
 /// <summary>
 /// How evenly a point set covers the unit square: the difference between the fraction of points in an

@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Patterns;
+namespace RayLab.Reports.Patterns;
 
 /// <summary>
 /// A test function on the pixel [0, 1]² with its exact integral, placed anew in each realisation (a random centre

@@ -1,11 +1,11 @@
 using System.Globalization;
 using System.Text.RegularExpressions;
-using RayLab.Comparison;
-using RayLab.Rendering.Adaptive;
+using RayLab.Reports.Comparison;
+using RayLab.Rendering.Inspection;
 using RayLab.Sampling;
 using ScottPlot;
 
-namespace RayLab.Patterns;
+namespace RayLab.Reports.Patterns;
 
 /// <summary>The figures of <c>raylab patterns</c>, drawn with ScottPlot and saved as PNG and SVG.</summary>
 internal static partial class PatternFigures

@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Patterns;
+namespace RayLab.Reports.Patterns;
 
 /// <summary>How many realisations (pixels) each measure of <see cref="PatternMeasures"/> averages over, and the seed.</summary>
 /// <param name="DiscrepancyRealisations">Pixels whose L2-star (and star) discrepancy is averaged, ≥ 1.</param>

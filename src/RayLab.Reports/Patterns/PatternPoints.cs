@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Patterns;
+namespace RayLab.Reports.Patterns;
 
 /// <summary>
 /// The points an <see cref="IPixelSampler"/> puts in one pixel (the lab's section 4, Rys. 12 and 13), as a point set

@@ -1,12 +1,12 @@
 using System.Globalization;
 using System.Net;
 using System.Text;
-using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Inspection;
 using RayLab.Sampling;
 using RayLab.Scenes;
 using ScottPlot;
 
-namespace RayLab.Patterns;
+namespace RayLab.Reports.Patterns;
 
 /// <summary>
 /// The sampling-patterns report (<c>raylab patterns</c>): the lab's sampling figures (Rys. 12, 13 a–c, the adaptive

@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Patterns;
+namespace RayLab.Reports.Patterns;
 
 /// <summary>A sampler for <c>raylab patterns</c>: its name and how to make it with N samples per pixel.</summary>
 /// <param name="Name">The name in file names, legends and tables (letters, digits, '-').</param>

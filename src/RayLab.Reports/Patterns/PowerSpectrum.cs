@@ -1,6 +1,6 @@
 using RayLab.Sampling;
 
-namespace RayLab.Patterns;
+namespace RayLab.Reports.Patterns;
 
 /// <summary>
 /// A sampler's Fourier power spectrum, averaged over many pixels (realisations), with Ulichney's radial mean and

@@ -1,4 +1,4 @@
-namespace RayLab.Patterns;
+namespace RayLab.Reports.Patterns;
 
 /// <summary>The closed forms the test functions' exact integrals need (.NET has no error function).</summary>
 internal static class SpecialFunctions

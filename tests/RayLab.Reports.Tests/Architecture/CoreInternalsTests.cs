@@ -1,7 +1,7 @@
 using ArchUnitNET.Domain;
 using ArchUnitNET.Domain.Dependencies;
 using ArchUnitNET.Loader;
-using RayLab.Comparison;
+using RayLab.Reports.Comparison;
 
 namespace RayLab.Reports.Tests.Architecture;
 

@@ -1,5 +1,5 @@
-using RayLab.Comparison;
-using RayLab.Imaging;
+using RayLab.Reports.Comparison;
+using RayLab.Reports.Imaging;
 using RayLab.OwnMethod;
 using RayLab.Sampling;
 using RayLab.Scenes;
@@ -161,7 +161,7 @@ public sealed class CompareRunnerTests : IDisposable
 
         string readme = File.ReadAllText(Path.Combine(repo, "docs", "own-method.md"));
         string sample = File.ReadAllText(Path.Combine(repo, "samples", "RayLab.OwnMethod", "SpeedAgainstError.cs"));
-        int start = readme.IndexOf("```csharp\nusing RayLab.Comparison;\n", StringComparison.Ordinal);
+        int start = readme.IndexOf("```csharp\nusing RayLab.Reports.Comparison;\n", StringComparison.Ordinal);
         Assert.True(start >= 0, "docs/own-method.md has no compare snippet");
         string[] lines = [.. readme[start..readme.IndexOf("\n```\n", start + 3, StringComparison.Ordinal)].Split('\n')
             .Skip(1).Select(l => l.Trim()).Where(l => l.StartsWith("CompareCase.", StringComparison.Ordinal) || l.StartsWith("using", StringComparison.Ordinal))];

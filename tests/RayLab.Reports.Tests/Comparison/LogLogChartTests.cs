@@ -1,5 +1,5 @@
 using System.Xml.Linq;
-using RayLab.Comparison;
+using RayLab.Reports.Comparison;
 using ScottPlot;
 using ScottPlot.Plottables;
 

@@ -1,4 +1,4 @@
-using RayLab.Imaging;
+using RayLab.Reports.Imaging;
 
 namespace RayLab.Reports.Tests.Imaging;
 

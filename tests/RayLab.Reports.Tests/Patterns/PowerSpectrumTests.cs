@@ -1,4 +1,4 @@
-using RayLab.Patterns;
+using RayLab.Reports.Patterns;
 using RayLab.Sampling;
 
 namespace RayLab.Reports.Tests.Patterns;

@@ -6,7 +6,7 @@ namespace RayLab.Rendering.Adaptive;
 /// The lab's combination rule for adaptive antialiasing (section 4.1.4): a quadrant that is not refined has the
 /// value (corner + centre) / 2, a square the mean of its four quadrants' values, and a flat pixel the mean of its
 /// four corners. Written once, generic over what is combined: the renderer (<see cref="AdaptivePixel"/>) combines
-/// intensities, the lab's diagram (<see cref="AdaptiveDiagram"/>) combines each traced point's weight.
+/// intensities, the lab's diagram (<see cref="Inspection.AdaptiveDiagram"/>) combines each traced point's weight.
 /// </summary>
 internal static class CombinationRule
 {

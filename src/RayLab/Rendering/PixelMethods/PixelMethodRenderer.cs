@@ -1,4 +1,3 @@
-using RayLab.Sampling;
 using RayLab.Cameras;
 
 namespace RayLab.Rendering.PixelMethods;

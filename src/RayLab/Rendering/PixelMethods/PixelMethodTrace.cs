@@ -1,4 +1,3 @@
-using RayLab.Sampling;
 
 namespace RayLab.Rendering.PixelMethods;
 

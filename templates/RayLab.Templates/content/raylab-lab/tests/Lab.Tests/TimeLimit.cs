@@ -1,7 +1,9 @@
 using System.Collections.Concurrent;
 using System.Globalization;
 using RayLab;
+#if (Sampler)
 using RayLab.Sampling;
+#endif
 
 namespace MyLab.Tests;
 

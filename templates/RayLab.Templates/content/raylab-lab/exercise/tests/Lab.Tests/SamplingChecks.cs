@@ -1,5 +1,5 @@
 using RayLab;
-using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Inspection;
 using RayLab.Sampling;
 using static MyLab.Tests.Check;
 

@@ -1,8 +1,8 @@
 using RayLab.Sampling;
-using RayLab.Rendering.Adaptive;
+using RayLab.Rendering.Inspection;
 using RayLab.Scenes;
 
-namespace RayLab.Tests.Rendering.Adaptive;
+namespace RayLab.Tests.Rendering.Inspection;
 
 public class AdaptiveDiagramTests
 {

@@ -1,7 +1,7 @@
 using RayLab.Cameras;
 using RayLab.Rendering.PixelMethods;
 
-namespace RayLab.Sampling;
+namespace RayLab;
 
 /// <summary>
 /// One pixel as an <see cref="IPixelMethod{TScratch}"/> sees it: its coordinates, the trace function for a point

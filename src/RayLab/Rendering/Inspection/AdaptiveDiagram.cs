@@ -1,9 +1,10 @@
 using System.Numerics;
 using RayLab.Sampling;
 using RayLab.Cameras;
+using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
 
-namespace RayLab.Rendering.Adaptive;
+namespace RayLab.Rendering.Inspection;
 
 /// <summary>A point the lab's adaptive recursion traced in one pixel, labelled as the lab labels them.</summary>
 /// <param name="Label">A, B, C, D (the corners), E (the centre), then F, G, H, J, … in trace order (the lab skips I and O).</param>

@@ -1,4 +1,4 @@
-namespace RayLab.Sampling;
+namespace RayLab;
 
 /// <summary>
 /// "A method of your own" (the lab's section 5) for deciding a pixel's value: the renderer hands the method each
