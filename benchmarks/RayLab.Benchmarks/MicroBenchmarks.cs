@@ -1,10 +1,10 @@
 using System.Runtime.Intrinsics;
 using BenchmarkDotNet.Attributes;
 using RayLab.Cameras;
+using RayLab.Rendering;
 using RayLab.Rendering.Packets;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
-using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Benchmarks;
@@ -50,15 +50,27 @@ public class IntersectionBenchmarks
     [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
     public int Packet512RowPerSample()
     {
-        var sampler = new JitteredLanes<Lanes512>(_jittered);
-        return PacketKernel.RenderRow<Lanes512, JitteredLanes<Lanes512>, PerspectiveProjection>(_frame, ref sampler, 16, 540, _row);
+        var row = new JitteredRow<Lanes512>(_frame, _row);
+        return ((ILaneSampled)_jittered).WithLanes<Lanes512, JitteredRow<Lanes512>, int>(ref row);
     }
 
     [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
     public int Packet256RowPerSample()
     {
-        var sampler = new JitteredLanes<Lanes256>(_jittered);
-        return PacketKernel.RenderRow<Lanes256, JitteredLanes<Lanes256>, PerspectiveProjection>(_frame, ref sampler, 16, 540, _row);
+        var row = new JitteredRow<Lanes256>(_frame, _row);
+        return ((ILaneSampled)_jittered).WithLanes<Lanes256, JitteredRow<Lanes256>, int>(ref row);
+    }
+}
+
+/// <summary>The packet kernel on one row with the jittered sampler's lane form.</summary>
+internal readonly struct JitteredRow<TL>(PacketFrame frame, Rgb24[] row) : ILaneSamplerUser<TL, int>
+    where TL : struct, ILanes<TL>
+{
+    public int Run<TS>(Func<TS> create)
+        where TS : struct, ILaneSampler<TL>
+    {
+        TS sampler = create();
+        return PacketKernel.RenderRow<TL, TS, PerspectiveProjection>(frame, ref sampler, 16, 540, new TargetRow(row));
     }
 }
 
@@ -111,18 +123,13 @@ public class LaneSamplerBenchmarks
     public void Setup() => _sampler = Samplers.Create(Sampler, 16, 1);
 
     [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
-    public float LanesPerSample() => _sampler switch
+    public float LanesPerSample()
     {
-        JitteredSampler s => Row(new JitteredLanes<Lanes256>(s)),
-        RandomSampler s => Row(new RandomLanes<Lanes256>(s)),
-        RegularSampler s => Row(new RegularLanes<Lanes256>(s)),
-        CorrelatedMultiJitteredSampler s => Row(new CorrelatedMultiJitteredLanes<Lanes256>(s)),
-        MultiJitteredSampler s => Row(new MultiJitteredLanes<Lanes256>(s)),
-        NRooksSampler s => Row(new NRooksLanes<Lanes256>(s)),
-        HammersleySampler s => Row(new HammersleyLanes<Lanes256>(s)),
-        SobolSampler s => Row(new SobolLanes<Lanes256>(s)),
-        _ => Row(new BufferedLanes<Lanes256>(_sampler)),
-    };
+        var row = default(LaneRow);
+        return _sampler is ILaneSampled sampled
+            ? sampled.WithLanes<Lanes256, LaneRow, float>(ref row)
+            : Row(new BufferedLanes<Lanes256>(_sampler));
+    }
 
     [Benchmark(OperationsPerInvoke = BenchScene.Width * 16)]
     public float BufferedPerSample() => Row(new BufferedLanes<Lanes256>(_sampler));
@@ -146,5 +153,12 @@ public class LaneSamplerBenchmarks
         }
 
         return sum.V.ToScalar();
+    }
+
+    /// <summary>A row of points from the lane form the sampler hands over.</summary>
+    private readonly struct LaneRow : ILaneSamplerUser<Lanes256, float>
+    {
+        public float Run<TS>(Func<TS> create)
+            where TS : struct, ILaneSampler<Lanes256> => Row(create());
     }
 }

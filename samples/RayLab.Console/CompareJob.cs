@@ -175,7 +175,7 @@ public static class CompareJob
         $"{Path.GetFileName(r.ScenePath)}, {scene.Description.Width}×{scene.Description.Height}, {scene.Camera.Name} camera, "
         + $"seed {r.Seed ?? scene.Description.Sampler.Seed}, {(r.Threads is { } t ? $"{t} threads" : $"all {Environment.ProcessorCount} cores")}, "
         + $"{CompareRunner.TimeRule(r.Repeats)}; "
-        + $"exact image (ExactRenderer) in {exact.RenderTime.TotalMilliseconds:F0} ms");
+        + $"exact image (RenderMethod.Exact) in {exact.RenderTime.TotalMilliseconds:F0} ms");
 
     /// <summary>The command line that reproduces the run, every list spelled out.</summary>
     private static string Command(CompareRequest r)

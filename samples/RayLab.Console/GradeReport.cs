@@ -2,7 +2,6 @@ using System.Globalization;
 using System.Net;
 using System.Text;
 using System.Text.Json;
-using RayLab.Rendering.Exact;
 using RayLab.Scenes;
 
 namespace RayLab.Cli;
@@ -27,7 +26,7 @@ internal sealed class GradeReference
         {
             PreparedScene prepared = (d with { Camera = d.Camera with { Type = camera } }).Prepare();
             var exact = new Image(d.Width, d.Height);
-            new ExactRenderer().Render(d.Scene, prepared.Camera, exact);
+            renderer.Render(d.Scene, prepared.Camera, RenderMethod.Exact, exact);
             reference.Exact[camera] = exact;
             var adaptive = new Image(d.Width, d.Height);
             RenderStatistics stats = renderer.Render(d.Scene, prepared.Camera, prepared.Method, adaptive);

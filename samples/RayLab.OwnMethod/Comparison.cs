@@ -1,4 +1,3 @@
-using RayLab.Rendering.Exact;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -18,7 +17,7 @@ public static class Comparison
         ArgumentNullException.ThrowIfNull(description);
         PreparedScene prepared = description.Prepare();
         Image exact = prepared.CreateImage();
-        new ExactRenderer().Render(prepared.Scene, prepared.Camera, exact);
+        new Renderer().Render(prepared.Scene, prepared.Camera, RenderMethod.Exact, exact);
 
         MethodResult Measure(string name, RenderMethod method)
         {

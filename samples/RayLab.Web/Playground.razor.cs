@@ -4,10 +4,7 @@ using System.Reflection;
 using Microsoft.AspNetCore.Components;
 using Microsoft.JSInterop;
 using RayLab.Cameras;
-using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Inspection;
-using RayLab.Rendering.Exact;
-using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 using RayLab.Scenes;
 using RayLab.Web.Lab;
@@ -57,7 +54,6 @@ public sealed partial class Playground : IDisposable
     private CancellationTokenSource? _cancel;
     private (string Key, Image Image)? _exact;
     private readonly Dictionary<(int Width, int Height), (Image Image, byte[] Bytes)> _previewImages = [];
-    private (string Key, Intensity[] Linear)? _exactLinear;
 
     /// <summary>The RayLab version the page runs (the core assembly's informational version).</summary>
     private static string Version { get; } =
@@ -421,7 +417,7 @@ public sealed partial class Playground : IDisposable
     {
         try
         {
-            ExactRenderer.Check(_prepared!.Scene, _prepared.Camera, _state.Width, _state.Height);
+            RenderMethod.Exact.Check(_prepared!.Scene, _prepared.Camera, _state.Width, _state.Height);
             return RenderMethod.Exact;
         }
         catch (UnsupportedSceneException)
@@ -462,7 +458,7 @@ public sealed partial class Playground : IDisposable
         StateHasChanged();
     }
 
-    /// <summary>Fills the inspector for pixel (<paramref name="x"/>, <paramref name="y"/>) with the current method's points.</summary>
+    /// <summary>Fills the inspector for pixel (<paramref name="x"/>, <paramref name="y"/>) with the points the current method traced there.</summary>
     private void Inspect(int x, int y)
     {
         if (_prepared is null || _plane is null || _frame is null)
@@ -470,57 +466,23 @@ public sealed partial class Playground : IDisposable
             return;
         }
 
-        Scene scene = _prepared.Scene;
-        ImagePlane plane = _plane;
-        SamplerSettings settings = _state.Sampler;
+        PreparedScene prepared = _prepared;
         Rgb24 rendered = _frame.Picture.GetPixel(x, y);
-        string inside = InsideDataUrl(scene, plane, x, y);
-        if (settings.IsAdaptive)
-        {
-            AdaptiveDiagram d = AdaptiveDiagram.Trace(scene, _prepared.Camera, _state.Width, _state.Height, settings.CreateAdaptive(), x, y);
-            _inspection = new Inspection(x, y, _prepared.SamplerDescription,
-                [.. d.Points.Select(p => new InspectedPoint(p.Label, p.X, p.Y, p.Value, p.Weight))], d.Squares, d.Value, d.Exact, rendered, inside);
-            return;
-        }
+        string inside = InsideDataUrl(prepared.Scene, _plane, x, y);
+        PixelTrace traced = Renderer.TracePixel(prepared.Scene, prepared.Camera, _state.Width, _state.Height, prepared.Method, x, y);
+        Intensity exact = prepared.IsExact ? traced.Value : ExactValue(x, y);
 
-        Intensity exact = ExactLinear()[((long)y * _state.Width) + x];
-        if (settings.IsExact)
-        {
-            _inspection = new Inspection(x, y, "exact", [], [], exact, exact, rendered, inside);
-            return;
-        }
-
-        if (OwnMethods.Trace(settings, scene, _prepared.Camera, _state.Width, _state.Height, x, y) is PixelMethodTrace traced)
-        {
-            // Mitchell's method decides its points pixel by pixel: the points its own code traced here, each an equal share of the mean.
-            double share = 1.0 / traced.Points.Count;
-            InspectedPoint[] own = [.. traced.Points.Select((p, i) => new InspectedPoint((i + 1).ToString(CultureInfo.InvariantCulture), p.X, p.Y, p.Value, share))];
-            _inspection = new Inspection(x, y, _prepared.SamplerDescription, own, [], traced.Value, exact, rendered, inside);
-            return;
-        }
-
-        IPixelSampler sampler = OwnMethods.Sampler(settings) ?? settings.CreateSampler();
-        var samples = new SamplePoint[sampler.SamplesPerPixel];
-        sampler.GetSamples(x, y, samples);
-        double weight = 1.0 / samples.Length;
-        InspectedPoint[] points = [.. samples.Select((s, i) => new InspectedPoint(
-            (i + 1).ToString(CultureInfo.InvariantCulture), s.X, s.Y, scene.Trace(plane.GetPixelRay(x, y, s.X, s.Y), plane.TMin, plane.TMax), weight))];
-        Intensity value = Renderer.RenderPixel(scene, plane, sampler, x, y);
-        _inspection = new Inspection(x, y, _prepared.SamplerDescription, points, [], value, exact, rendered, inside);
+        // The adaptive points carry the lab's letters (A, B, C, D the corners, E the centre, …); the others their number.
+        bool adaptive = _state.Sampler.IsAdaptive;
+        InspectedPoint[] points = [.. traced.Points.Select((p, i) => new InspectedPoint(
+            adaptive ? AdaptiveDiagram.Label(i) : (i + 1).ToString(CultureInfo.InvariantCulture), p.X, p.Y, p.Value, p.Weight))];
+        string method = prepared.IsExact ? "exact" : prepared.SamplerDescription;
+        _inspection = new Inspection(x, y, method, points, traced.Squares, traced.Value, exact, rendered, inside);
     }
 
-    /// <summary>The exact picture's linear values for the current view (cached: one exact render per view).</summary>
-    private Intensity[] ExactLinear()
-    {
-        string key = ExactKey;
-        if (_exactLinear is not (string k, Intensity[] linear) || k != key)
-        {
-            linear = new ExactRenderer { MaxDegreeOfParallelism = 1 }.RenderLinear(_prepared!.Scene, _prepared.Camera, _state.Width, _state.Height);
-            _exactLinear = (key, linear);
-        }
-
-        return linear;
-    }
+    /// <summary>The exact value of pixel (<paramref name="x"/>, <paramref name="y"/>): its row of the exact picture, traced alone.</summary>
+    private Intensity ExactValue(int x, int y) =>
+        Renderer.TracePixel(_prepared!.Scene, _prepared.Camera, _state.Width, _state.Height, RenderMethod.Exact, x, y).Value;
 
     /// <summary>What lies inside the pixel, traced at 24×24 points, as a PNG data URL for the inspector's background.</summary>
     private static string InsideDataUrl(Scene scene, ImagePlane plane, int x, int y)

@@ -1,5 +1,4 @@
 using RayLab.Cameras;
-using RayLab.Rendering.PixelMethods;
 
 namespace RayLab;
 
@@ -58,12 +57,12 @@ public sealed class PixelTracer
         CheckOffset(sy, nameof(sy));
         RaysTraced++;
         Intensity value = _plane.Trace(_scene, _plane.GetPixelRay(X, Row, sx, sy));
-        Recorded?.Add(new TracedPoint(sx, sy, value));
+        Recorded?.Add((sx, sy, value));
         return value;
     }
 
-    /// <summary>Where <see cref="Trace"/> records the current pixel's points (<see cref="PixelMethodTrace"/>); null when rendering.</summary>
-    internal List<TracedPoint>? Recorded { get; set; }
+    /// <summary>Where <see cref="Trace"/> records the current pixel's points (<see cref="Renderer.TracePixel"/>); null when rendering.</summary>
+    internal List<(double X, double Y, Intensity Value)>? Recorded { get; set; }
 
     /// <summary>Moves to pixel (<paramref name="x"/>, <paramref name="row"/>) with no rays traced yet.</summary>
     internal void Begin(int x, int row)

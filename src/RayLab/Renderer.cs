@@ -1,16 +1,16 @@
 using RayLab.Rendering;
 using RayLab.Cameras;
-using RayLab.Rendering.Point;
 using RayLab.Sampling;
 
 namespace RayLab;
 
 /// <summary>
-/// Renders a scene through a camera into an image (the lab's render loop): the front door to RayLab's three
+/// Renders a scene through a camera into an image (the lab's render loop): the one door to RayLab's three
 /// renderers, one room each — point sampling (<c>Rendering/Point</c>), the lab's adaptive antialiasing
 /// (<c>Rendering/Adaptive</c>) and the exact reference (<c>Rendering/Exact</c>). Rows are rendered in
 /// parallel; every pixel's value is independent of the thread that takes it, so the bytes are the same
-/// whatever <see cref="MaxDegreeOfParallelism"/> is.
+/// whatever <see cref="MaxDegreeOfParallelism"/> is. Every method renders 8-bit rows into an image, or linear
+/// intensities into a span, and <see cref="TracePixel"/> traces one pixel of any method.
 /// </summary>
 public sealed class Renderer
 {
@@ -71,7 +71,7 @@ public sealed class Renderer
     /// <exception cref="ArgumentException">The camera's settings do not form a valid view (see <see cref="Camera.GetImagePlane"/>), or <paramref name="raysPerPixel"/> has the wrong length.</exception>
     /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
     public RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, Image image, float[]? raysPerPixel = null) =>
-        Render(scene, camera, method, image, raysPerPixel, Options);
+        Render(scene, camera, method, (IPixelRows)image, raysPerPixel);
 
     /// <summary>
     /// Renders <paramref name="scene"/> by <paramref name="method"/> into any 8-bit picture that hands out its rows
@@ -87,15 +87,51 @@ public sealed class Renderer
     /// <returns>Rays traced, render time and the kernel that ran.</returns>
     /// <exception cref="ArgumentException">The camera's settings do not form a valid view, the picture's size is less than 1×1, or <paramref name="raysPerPixel"/> has the wrong length.</exception>
     /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
-    public RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, IPixelRows image, float[]? raysPerPixel = null) =>
-        Render(scene, camera, method, image, raysPerPixel, Options);
+    public RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, IPixelRows image, float[]? raysPerPixel = null)
+    {
+        ArgumentNullException.ThrowIfNull(image);
+        return Render(scene, camera, method, PixelTarget.Of(image), raysPerPixel, Options);
+    }
 
-    private static RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, IPixelRows image, float[]? raysPerPixel, RenderOptions options)
+    /// <summary>
+    /// Renders <paramref name="scene"/> by <paramref name="method"/> into linear intensities — each pixel's value before
+    /// the lab's 8-bit rule — for measuring error below one 8-bit level, or for a display of your own. Every method
+    /// renders this way; <see cref="Rgb24.FromIntensity"/> of each value gives the bytes a render into an
+    /// <see cref="Image"/> of the same size gives.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="method">Point sampling, adaptive, a pixel method of your own, or exact.</param>
+    /// <param name="pixels">Receives W·H values, row 0 (the top) first, W per row (an <see cref="Intensity"/> array will do).</param>
+    /// <param name="width">The image width W, ≥ 1; it and <paramref name="height"/> set the camera's window.</param>
+    /// <param name="height">The image height H, ≥ 1.</param>
+    /// <param name="raysPerPixel">Optional, W·H long, row 0 first: receives the rays charged to each pixel (as for an <see cref="Image"/>).</param>
+    /// <returns>Rays traced, render time and the kernel that ran.</returns>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="width"/> or <paramref name="height"/> is less than 1.</exception>
+    /// <exception cref="ArgumentException"><paramref name="pixels"/> does not hold W·H values, <paramref name="raysPerPixel"/> has the wrong length, or the camera's settings do not form a valid view.</exception>
+    /// <exception cref="UnsupportedSceneException">The exact method cannot draw the scene (see <see cref="RenderMethod.Exact"/>).</exception>
+    /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
+    public unsafe RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, Span<Intensity> pixels, int width, int height, float[]? raysPerPixel = null)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
+        ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
+        if (pixels.Length != (long)width * height)
+        {
+            throw new ArgumentException($"Expected {width}×{height} values, got {pixels.Length}.", nameof(pixels));
+        }
+
+        // The rows are written by several threads: the caller's memory stays pinned until the render returns.
+        fixed (Intensity* first = pixels)
+        {
+            return Render(scene, camera, method, PixelTarget.Linear(first, width, height), raysPerPixel, Options);
+        }
+    }
+
+    private static RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, PixelTarget image, float[]? raysPerPixel, RenderOptions options)
     {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
         ArgumentNullException.ThrowIfNull(method);
-        ArgumentNullException.ThrowIfNull(image);
         if (raysPerPixel is not null && raysPerPixel.LongLength != (long)image.Width * image.Height)
         {
             throw new ArgumentException($"Expected {image.Width}×{image.Height} entries, got {raysPerPixel.Length}.", nameof(raysPerPixel));
@@ -103,6 +139,36 @@ public sealed class Renderer
 
         ImagePlane plane = camera.GetImagePlane(image.Width, image.Height);
         return method.Render(scene, plane, image, options, raysPerPixel);
+    }
+
+    /// <summary>
+    /// Traces pixel (<paramref name="x"/>, <paramref name="y"/>) of a W×H render by <paramref name="method"/>, as the
+    /// render traces it: the pixel's linear value and every point traced in it with its share of the value (the
+    /// pixel inspector, the adaptive diagram). The value is the one a render into linear intensities gives the pixel
+    /// (for point sampling, with the scalar kernel, <see cref="RenderKernel.Scalar"/>; the packet kernels agree with
+    /// it except for samples within float resolution of a silhouette).
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="camera">The camera.</param>
+    /// <param name="width">The render's width W.</param>
+    /// <param name="height">The render's height H.</param>
+    /// <param name="method">Point sampling, adaptive, a pixel method of your own, or exact.</param>
+    /// <param name="x">The pixel's column, 0 ≤ x &lt; W.</param>
+    /// <param name="y">The pixel's row, 0 (the top) ≤ y &lt; H.</param>
+    /// <returns>The pixel's value and points.</returns>
+    /// <exception cref="ArgumentOutOfRangeException">The pixel is outside the image.</exception>
+    /// <exception cref="ArgumentException">The camera's settings do not form a valid view.</exception>
+    /// <exception cref="UnsupportedSceneException">The exact method cannot draw the scene.</exception>
+    public static PixelTrace TracePixel(Scene scene, Camera camera, int width, int height, RenderMethod method, int x, int y)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(camera);
+        ArgumentNullException.ThrowIfNull(method);
+        ArgumentOutOfRangeException.ThrowIfNegative(x);
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(x, width);
+        ArgumentOutOfRangeException.ThrowIfNegative(y);
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(y, height);
+        return method.TracePixel(scene, camera.GetImagePlane(width, height), x, y);
     }
 
     /// <summary>
@@ -149,7 +215,7 @@ public sealed class Renderer
         ArgumentOutOfRangeException.ThrowIfNegative(firstRow);
         ArgumentOutOfRangeException.ThrowIfNegative(rowCount);
         ArgumentOutOfRangeException.ThrowIfGreaterThan(rowCount, image.Height - firstRow);
-        return Render(scene, camera, method, image, raysPerPixel, Options with { FirstRow = firstRow, EndRow = firstRow + rowCount });
+        return Render(scene, camera, method, PixelTarget.Of(image), raysPerPixel, Options with { FirstRow = firstRow, EndRow = firstRow + rowCount });
     }
 
     /// <summary>Renders <paramref name="scene"/> into <paramref name="image"/> with a point sampler.</summary>
@@ -180,19 +246,4 @@ public sealed class Renderer
     /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
     public RenderStatistics Render(Scene scene, Camera camera, AdaptiveSampler sampler, Image image, float[]? raysPerPixel = null) =>
         Render(scene, camera, RenderMethod.Adaptive(sampler), image, raysPerPixel);
-
-    /// <summary>The mean of a pixel's samples, in linear intensity (before the 8-bit rule).</summary>
-    /// <param name="scene">The scene.</param>
-    /// <param name="plane">The camera's image plane.</param>
-    /// <param name="sampler">The sampler.</param>
-    /// <param name="x">The pixel column.</param>
-    /// <param name="row">The pixel row, 0 at the top.</param>
-    /// <returns>The pixel's value.</returns>
-    public static Intensity RenderPixel(Scene scene, ImagePlane plane, IPixelSampler sampler, int x, int row)
-    {
-        ArgumentNullException.ThrowIfNull(scene);
-        ArgumentNullException.ThrowIfNull(plane);
-        ArgumentNullException.ThrowIfNull(sampler);
-        return PointRenderer.RenderPixel(scene, plane, sampler, x, row);
-    }
 }

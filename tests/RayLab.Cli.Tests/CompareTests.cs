@@ -5,7 +5,6 @@ using RayLab.Reports.Comparison;
 using RayLab.Metrics;
 using RayLab.Sampling;
 using RayLab.Scenes;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Cli.Tests;
 
@@ -75,7 +74,7 @@ public sealed partial class CompareTests : IDisposable
         // The exact image is the exact renderer's, and jittered sampling gets closer to it with every budget.
         var expected = new Image(48, 32);
         PreparedScene prepared = SceneFile.Load(scene).Prepare();
-        new ExactRenderer().Render(prepared.Scene, prepared.Camera, expected);
+        new Renderer().Render(prepared.Scene, prepared.Camera, RenderMethod.Exact, expected);
         Assert.Equal(expected.PixelBytes.ToArray(), exact.PixelBytes.ToArray());
         double[] jittered = [.. rows.Where(r => r.Series == "jittered").Select(r => r.Rmse)];
         Assert.True(jittered[0] > jittered[1] && jittered[1] > jittered[2], string.Join(", ", jittered));
@@ -84,7 +83,7 @@ public sealed partial class CompareTests : IDisposable
         string[] lines = stdout.TrimEnd('\n').Split('\n');
         Assert.StartsWith("| sampler | setting |", lines[0], StringComparison.Ordinal);
         Assert.Equal(rows.Length + 4, lines.Length);
-        Assert.All(lines[2..^2], l => Assert.Equal(13, l.Count(c => c == '|')));
+        Assert.All(lines[2..^2], l => Assert.Equal(15, l.Count(c => c == '|')));
         Assert.All(rows.Select((r, i) => (r, i)), p => Assert.StartsWith($"| {p.r.Series} | {p.r.Setting} |", lines[2 + p.i], StringComparison.Ordinal));
         Assert.Contains("index.html", lines[^2], StringComparison.Ordinal);
         Assert.Matches(@"^total time \d+\.\d s$", lines[^1]);

@@ -1,6 +1,5 @@
 using System.Text.Json;
 using RayLab.Scenes;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Cli.Tests;
 
@@ -43,7 +42,7 @@ public sealed class ExactCliTests : IDisposable
 
         SceneDescription scene = SceneFile.Load(LabScene);
         var expected = new Image(80, 60);
-        new ExactRenderer().Render(scene.Scene, scene.Camera.CreateCamera(), expected);
+        new Renderer().Render(scene.Scene, scene.Camera.CreateCamera(), RenderMethod.Exact, expected);
         Assert.Equal(expected.PixelBytes.ToArray(), SkiaDecode.Load(image).Rgb);
     }
 

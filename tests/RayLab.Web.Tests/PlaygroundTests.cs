@@ -3,7 +3,6 @@ using System.Security.Cryptography;
 using Microsoft.Playwright;
 using Microsoft.Playwright.Xunit.v3;
 using RayLab.Rendering.Inspection;
-using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -153,17 +152,17 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
     {
         SceneDescription description = Scene("off-axis");
         PreparedScene prepared = description.Prepare();
-        var method = new RayLab.OwnMethod.MitchellMethod();
+        RenderMethod method = RenderMethod.Custom(new RayLab.OwnMethod.MitchellMethod());
         // A pixel where the contrast test passes (4 points) and one on an edge where it adds 12 more (16), in reading order.
-        PixelMethodTrace Find(int count) => Enumerable.Range(0, 360).SelectMany(y => Enumerable.Range(0, 640).Select(x => (x, y)))
+        PixelTrace Find(int count) => Enumerable.Range(0, 360).SelectMany(y => Enumerable.Range(0, 640).Select(x => (x, y)))
             .Where(p => p.x % 7 == 0 && p.y % 5 == 0)
-            .Select(p => PixelMethodTrace.Trace(prepared.Scene, prepared.Camera, 640, 360, method, p.x, p.y))
+            .Select(p => Renderer.TracePixel(prepared.Scene, prepared.Camera, 640, 360, method, p.x, p.y))
             .First(t => t.Points.Count == count);
 
         await using Session s = await OpenAsync("?scene=off-axis&m=mitchell");
-        foreach (PixelMethodTrace expected in new[] { Find(4), Find(16) })
+        foreach (PixelTrace expected in new[] { Find(4), Find(16) })
         {
-            await ClickPixel(s.Page, expected.PixelX, expected.PixelY);
+            await ClickPixel(s.Page, expected.X, expected.Y);
             await s.Page.WaitForSelectorAsync($"#inspector[data-points='{expected.Points.Count}']");
             IReadOnlyList<ILocator> circles = await s.Page.Locator("#inspector circle.sample").AllAsync();
             string[] shown = [.. await Task.WhenAll(circles.Select(async c => $"{await c.GetAttributeAsync("data-x")},{await c.GetAttributeAsync("data-y")}"))];

@@ -1,5 +1,4 @@
 using RayLab.OwnMethod;
-using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -26,11 +25,4 @@ internal static class OwnMethods
     /// <exception cref="ArgumentOutOfRangeException">A sample count the rotated grid cannot use.</exception>
     public static RenderMethod Create(SamplerSettings settings) =>
         Sampler(settings) is IPixelSampler sampler ? RenderMethod.Sampled(sampler) : RenderMethod.Custom(new MitchellMethod());
-
-    /// <summary>
-    /// The points a pixel method (Mitchell's) traced in pixel (<paramref name="x"/>, <paramref name="y"/>) and its value,
-    /// from the method's own code (<see cref="PixelMethodTrace"/>); null for a point sampler.
-    /// </summary>
-    public static PixelMethodTrace? Trace(SamplerSettings settings, Scene scene, Camera camera, int width, int height, int x, int y) =>
-        settings.Type == "mitchell" ? PixelMethodTrace.Trace(scene, camera, width, height, new MitchellMethod(), x, y) : null;
 }

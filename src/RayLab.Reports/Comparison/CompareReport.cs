@@ -24,7 +24,11 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         + "\"> 1 level\" = the fraction of pixels with some channel off by 2 or more. FLIP: the mean of the image's "
         + "LDR-FLIP map against the exact image (Andersson et al. 2020; 0 = indistinguishable, 1 = the largest "
         + "difference; 0.7 m from a 0.7 m wide display of 3840 pixels), the error a viewer sees. Time: median render time "
-        + "(the render loop only). Rays: primary rays traced per pixel. Where the error sits: low-pass σ=1 and σ=2 = the RMSE of "
+        + "(the render loop only). Rays: primary rays traced per pixel. Kernel: the render loop that ran, scalar (one ray at a time, "
+        + "in double precision, as every pixel method of your own runs) or a SIMD packet of 4, 8 or 16 rays (vector128, vector256, "
+        + "vector512). Rays/ms: the primary rays of one render divided by its time. The scalar and packet kernels differ in speed per "
+        + "ray, so compare rays/ms within one kernel: a method on the scalar kernel is not slow because a packet kernel traces more "
+        + "rays per millisecond. Where the error sits: low-pass σ=1 and σ=2 = the RMSE of "
         + "the signed error after a Gaussian blur of 1 and 2 pixels (what a viewer a step back sees; fine-grained error cancels, "
         + "patches survive); low share = the part of the error's power at frequencies up to 1/8 cycle per pixel (periods of 8 "
         + "pixels or more; white noise: 0.049), from its radially averaged power spectrum.";
@@ -82,10 +86,10 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     /// <summary>The table, as Markdown.</summary>
     public string Table()
     {
-        var md = new StringBuilder("| sampler | setting | rays/px | time (ms) | RMSE | mean FLIP | low-pass σ=1 | low-pass σ=2 | low share | mean abs. | max | > 1 level |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        var md = new StringBuilder("| sampler | setting | rays/px | time (ms) | kernel | rays/ms | RMSE | mean FLIP | low-pass σ=1 | low-pass σ=2 | low share | mean abs. | max | > 1 level |\n|---|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         foreach (CompareResult r in results)
         {
-            md.Append(Invariant($"| {r.Case.Series} | {r.Case.Setting} | {r.RaysPerPixel:F2} | {r.Time.TotalMilliseconds:F1} | {r.Error.Rmse:F3} | {FlipText(r.MeanFlip)} | {PlacementText(r.Placement)} | {r.Error.MeanAbsolute:F4} | {r.Error.Max} | {100 * r.Error.FractionOverOneLevel:F3}% |\n"));
+            md.Append(Invariant($"| {r.Case.Series} | {r.Case.Setting} | {r.RaysPerPixel:F2} | {r.Time.TotalMilliseconds:F1} | {KernelText(r)} | {RateText(r)} | {r.Error.Rmse:F3} | {FlipText(r.MeanFlip)} | {PlacementText(r.Placement)} | {r.Error.MeanAbsolute:F4} | {r.Error.Max} | {100 * r.Error.FractionOverOneLevel:F3}% |\n"));
         }
 
         return md.ToString();
@@ -466,7 +470,7 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         static string E(string s) => WebUtility.HtmlEncode(s);
         var html = new StringBuilder();
         html.Append($"<!DOCTYPE html>\n<html lang=\"en\">\n<head><meta charset=\"utf-8\"><title>raylab compare</title>\n")
-            .Append("<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}td,th{padding:2px 8px;border-bottom:1px solid #ddd;text-align:right}td:first-child,td:nth-child(2){text-align:left}</style></head>\n<body>\n")
+            .Append("<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}td,th{padding:2px 8px;border-bottom:1px solid #ddd;text-align:right}td:first-child,td:nth-child(2),td:nth-child(5){text-align:left}</style></head>\n<body>\n")
             .Append($"<h1>raylab compare</h1>\n<p>{E(heading)}</p>\n<p>{E(Definition)}</p>\n")
             .Append("<p><a href=\"results.md\">results.md</a> (table, slopes, times to reach an error) · <a href=\"results.csv\">results.csv</a> · <a href=\"images/exact.png\">the exact image</a></p>\n")
             .Append("<p><a href=\"error-vs-time.svg\"><img src=\"error-vs-time.png\" alt=\"RMSE against time, log-log\"></a>")
@@ -476,11 +480,11 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
             .Append(string.Concat(SpectrumGroups().Select(g => $"<a href=\"{SpectrumStem(g.Key)}.svg\"><img src=\"{SpectrumStem(g.Key)}.png\" alt=\"error spectrum at {g.Key} spp, log-log\"></a>")) is { Length: > 0 } spectra ? $"<p>{spectra}</p>\n" : "")
             .Append("<p>Each row: the picture, its error image (the largest channel error of each pixel, in levels: what the RMSE adds up) "
                     + "and its FLIP map (what a viewer sees flipping between it and the exact image, in NVIDIA's magma colours: black = no visible difference). Click one for its full size.</p>\n")
-            .Append("<table>\n<tr><th>sampler</th><th>setting</th><th>rays/px</th><th>time (ms)</th><th>RMSE</th><th>mean FLIP</th><th>low-pass σ=1</th><th>low-pass σ=2</th><th>low share</th><th>max</th><th>&gt; 1 level</th><th>image</th><th>error</th><th>FLIP map</th></tr>\n");
+            .Append("<table>\n<tr><th>sampler</th><th>setting</th><th>rays/px</th><th>time (ms)</th><th>kernel</th><th>rays/ms</th><th>RMSE</th><th>mean FLIP</th><th>low-pass σ=1</th><th>low-pass σ=2</th><th>low share</th><th>max</th><th>&gt; 1 level</th><th>image</th><th>error</th><th>FLIP map</th></tr>\n");
         foreach (CompareResult r in results)
         {
             string stem = E(r.Case.FileStem);
-            html.Append(Invariant($"<tr><td>{E(r.Case.Series)}</td><td>{E(r.Case.Setting)}</td><td>{r.RaysPerPixel:F2}</td><td>{r.Time.TotalMilliseconds:F1}</td><td>{r.Error.Rmse:F3}</td><td>{FlipText(r.MeanFlip)}</td><td>{PlacementText(r.Placement).Replace(" | ", "</td><td>", StringComparison.Ordinal)}</td><td>{r.Error.Max}</td><td>{100 * r.Error.FractionOverOneLevel:F3}%</td>"))
+            html.Append(Invariant($"<tr><td>{E(r.Case.Series)}</td><td>{E(r.Case.Setting)}</td><td>{r.RaysPerPixel:F2}</td><td>{r.Time.TotalMilliseconds:F1}</td><td>{KernelText(r)}</td><td>{RateText(r)}</td><td>{r.Error.Rmse:F3}</td><td>{FlipText(r.MeanFlip)}</td><td>{PlacementText(r.Placement).Replace(" | ", "</td><td>", StringComparison.Ordinal)}</td><td>{r.Error.Max}</td><td>{100 * r.Error.FractionOverOneLevel:F3}%</td>"))
                 .Append(Thumbnail($"images/{stem}.png", "image"))
                 .Append(Thumbnail($"errors/{stem}.png", "error image"))
                 .Append(r.MeanFlip is null ? "<td>not measured</td>" : Thumbnail($"flip/{stem}.png", "FLIP map"))
@@ -510,6 +514,25 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         0 => "0",
         { } f => f.ToString("F" + Math.Clamp(2 - (int)Math.Floor(Math.Log10(f)), 0, 9).ToString(CultureInfo.InvariantCulture), CultureInfo.InvariantCulture),
     };
+
+    /// <summary>The kernel that rendered a setting, as <c>raylab render --kernel</c> spells it: scalar, vector128, vector256 or vector512.</summary>
+    private static string KernelText(CompareResult r) => r.Kernel.ToString().ToLowerInvariant();
+
+    /// <summary>
+    /// Primary rays per millisecond of render time (the rays of one render over its median time): a whole number from
+    /// 100 up, three significant digits below; n/a for a time of 0.
+    /// </summary>
+    private static string RateText(CompareResult r)
+    {
+        double ms = r.Time.TotalMilliseconds;
+        if (ms <= 0)
+        {
+            return "n/a";
+        }
+
+        double rate = r.Rays / ms;
+        return rate >= 100 ? Invariant($"{rate:F0}") : Invariant($"{rate:G3}");
+    }
 
     private static string Format(double? slope) => slope is { } s ? s.ToString("F2", CultureInfo.InvariantCulture) : "n/a";
 

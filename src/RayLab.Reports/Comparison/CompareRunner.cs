@@ -52,7 +52,7 @@ public static class CompareRunner
         string threads = settings.Renderer is { MaxDegreeOfParallelism: > 0 and var t } ? $"{t} threads" : $"all {Environment.ProcessorCount} cores";
         string heading = string.Create(CultureInfo.InvariantCulture,
             $"{width}×{height}, {camera.Name} camera, {threads}, {TimeRule(settings.Repeats)}; "
-            + $"exact image (ExactRenderer) in {measured.Exact.RenderTime.TotalMilliseconds:F0} ms");
+            + $"exact image (RenderMethod.Exact) in {measured.Exact.RenderTime.TotalMilliseconds:F0} ms");
         var report = new CompareReport(heading, "", measured.Results, []);
         report.WriteTo(folder);
         return report;

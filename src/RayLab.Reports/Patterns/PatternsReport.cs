@@ -267,7 +267,7 @@ public static class PatternsReport
             + $"each with its weight in the pixel's value under the lab's combination rule ¼ Σ (corner + centre)/2, recursively: {weights}. "
             + $"The pixel's value is Σ weight × value: red {diagram.Value.R.ToString("0.0000", Inv)}, green {diagram.Value.G.ToString("0.0000", Inv)}, "
             + $"against the exact area-weighted colour {diagram.Exact.R.ToString("0.0000", Inv)}, {diagram.Exact.G.ToString("0.0000", Inv)} "
-            + "(ExactRenderer). The background is the scene inside the pixel, traced at 96×96."));
+            + "(RenderMethod.Exact). The background is the scene inside the pixel, traced at 96×96."));
     }
 
     private static string Html(PatternsRequest r, List<(string Heading, string[] Figures, string Text)> sections, string slopeTable)

@@ -14,7 +14,7 @@ namespace RayLab.Sampling;
 /// listing unchanged: the sample index is permuted, one permutation of the columns and one of the rows are
 /// shared by the whole pattern (the correlation), and Kensler's <c>randfloat</c> jitters within the fine cell.
 /// </remarks>
-public sealed class CorrelatedMultiJitteredSampler : PixelSampler
+public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
 {
     /// <summary>Creates a correlated multi-jittered sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1.</param>
@@ -77,4 +77,11 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler
         i *= 1u | (p >> 18);
         return i * Kensler.RandFloatScale;
     }
+
+    /// <inheritdoc />
+    /// <remarks>Above <see cref="PatternLimits.MaxSamples"/> samples the lanes would not be exact: the buffered lanes then ask <see cref="GetSample"/>.</remarks>
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        SamplesPerPixel <= PatternLimits.MaxSamples
+            ? user.Run(() => new CorrelatedMultiJitteredLanes<TL>(this))
+            : user.Run(() => new BufferedLanes<TL>(this));
 }

@@ -1,3 +1,6 @@
+using System.Runtime.CompilerServices;
+using RayLab.Simd;
+
 namespace RayLab.Sampling;
 
 /// <summary>
@@ -6,19 +9,19 @@ namespace RayLab.Sampling;
 /// into [0, 1). The shift keeps the set's low discrepancy and stops every pixel using the same pattern, which
 /// would alias. Any number of samples.
 /// </summary>
-public sealed class HammersleySampler : PixelSampler
+public sealed class HammersleySampler : PixelSampler, ILaneSampled
 {
-    /// <summary>Xored into the pixel key for the pixel's random shift (the lanes use the same).</summary>
-    internal const uint ShiftSalt = 0x68e31da4u;
+    /// <summary>Xored into the pixel key for the pixel's random shift.</summary>
+    private const uint ShiftSalt = 0x68e31da4u;
+
+    private readonly uint _salt;
 
     /// <summary>Creates a Hammersley sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1.</param>
     /// <param name="seed">The seed; different seeds give different shifts.</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="samplesPerPixel"/> is less than 1.</exception>
     public HammersleySampler(int samplesPerPixel, uint seed)
-        : base(samplesPerPixel, seed)
-    {
-    }
+        : base(samplesPerPixel, seed) => _salt = PointHash.Salt(seed);
 
     /// <inheritdoc />
     public override string Name => "hammersley";
@@ -26,28 +29,64 @@ public sealed class HammersleySampler : PixelSampler
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index)
     {
-        SamplePoint point = Unshifted(index), shift = Shift(x, y);
-        return new SamplePoint(Wrap(point.X + shift.X), Wrap(point.Y + shift.Y));
+        Shift<ScalarLane, ScalarMath>(PointHash.PixelKeys<ScalarLane, ScalarMath>(x, y, _salt), out ScalarLane shiftX, out ScalarLane shiftY);
+        SamplePoint point = Unshifted(index);
+        return new SamplePoint(ScalarMath.Shifted(point.X, shiftX).Value, ScalarMath.Shifted(point.Y, shiftY).Value);
     }
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) => user.Run(() => new LaneForm<TL>(this));
 
     /// <summary>Point <paramref name="index"/> of the unshifted Hammersley set: (index / N, φ₂(index)).</summary>
     /// <param name="index">The sample index.</param>
     internal SamplePoint Unshifted(int index) =>
         new((double)index / SamplesPerPixel, LowDiscrepancy.RadicalInverse2((uint)index));
 
-    /// <summary>The toroidal shift of pixel (x, y), each coordinate in [0, 1).</summary>
-    /// <param name="x">The pixel column.</param>
-    /// <param name="y">The pixel row.</param>
-    internal SamplePoint Shift(int x, int y)
+    /// <summary>
+    /// The toroidal shift of the pixels whose keys are <paramref name="keys"/>, each coordinate's top 24 bits; a
+    /// point is then <see cref="IPointMath{TV}.Shifted"/> by them.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void Shift<TV, TM>(TV keys, out TV shiftX, out TV shiftY)
+        where TV : struct
+        where TM : IPointMath<TV>
     {
-        uint h1 = CounterHash.Hash(CounterHash.PixelKey(x, y, Seed) ^ ShiftSalt);
-        return new SamplePoint(CounterHash.ToUnit(h1), CounterHash.ToUnit(CounterHash.Hash(h1)));
+        TV h1 = TM.Hash(TM.Xor(keys, TM.BroadcastBits(ShiftSalt)));
+        shiftX = TM.Top24(h1);
+        shiftY = TM.Top24(TM.Hash(h1));
     }
 
-    /// <summary>
-    /// Wraps a sum of two numbers in [0, 1) into [0, 1). If rounding lifts a sum just below 1 to 1 it wraps to 0,
-    /// and v − 1 is exact for v in [1, 2), so the result is always below 1.
-    /// </summary>
-    /// <param name="v">A value in [0, 2).</param>
-    private static double Wrap(double v) => v >= 1.0 ? v - 1.0 : v;
+    /// <summary>The points in lanes: the shift made once per packet, each point shifted in double and rounded to float.</summary>
+    private struct LaneForm<TL> : ILaneSampler<TL>
+        where TL : struct, ILanes<TL>
+    {
+        private readonly uint _salt;
+        private readonly double[] _unshifted;
+        private TL _shiftX, _shiftY;
+
+        public LaneForm(HammersleySampler sampler)
+        {
+            _salt = sampler._salt;
+            _unshifted = new double[2 * sampler.SamplesPerPixel];
+            for (int i = 0; i < sampler.SamplesPerPixel; i++)
+            {
+                SamplePoint point = sampler.Unshifted(i);
+                (_unshifted[2 * i], _unshifted[(2 * i) + 1]) = (point.X, point.Y);
+            }
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void BeginPacket(int x0, int row) =>
+            Shift<TL, LaneMath<TL>>(PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt), out _shiftX, out _shiftY);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public readonly int Prepare(int start, int end) => end;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public readonly void Sample(int index, out TL sx, out TL sy)
+        {
+            sx = LaneMath<TL>.Shifted(_unshifted[2 * index], _shiftX);
+            sy = LaneMath<TL>.Shifted(_unshifted[(2 * index) + 1], _shiftY);
+        }
+    }
 }

@@ -4,6 +4,13 @@ namespace RayLab.Sampling;
 /// Places a fixed number of sample points in each pixel (the lab's section 4). Implementations are stateless:
 /// a point depends only on (pixel, sample index, seed), so any thread may ask for any sample in any order.
 /// </summary>
+/// <remarks>
+/// The SIMD packet kernel traces one pixel per lane. Every built-in sampler gives it a lane form of its own point
+/// formula. A sampler of your own has none: the kernel then takes the buffered path, which asks
+/// <see cref="GetSamples"/> for each pixel of a packet and loads the points into lanes: the image is the one its points
+/// give, but a packet costs a <see cref="GetSamples"/> call per pixel where a built-in sampler computes its points in
+/// the lanes themselves.
+/// </remarks>
 public interface IPixelSampler
 {
     /// <summary>The sampler's name as the console and scene files spell it, e.g. <c>jittered</c>.</summary>

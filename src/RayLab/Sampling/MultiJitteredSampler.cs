@@ -1,3 +1,6 @@
+using System.Runtime.CompilerServices;
+using RayLab.Simd;
+
 namespace RayLab.Sampling;
 
 /// <summary>
@@ -12,9 +15,11 @@ namespace RayLab.Sampling;
 /// which shares one permutation). Each permutation is a stateless hash permutation
 /// (<see cref="Permutation.PermutationElement"/>) keyed on the pixel, so no table is stored.
 /// </remarks>
-public sealed class MultiJitteredSampler : GridSampler
+public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
 {
-    /// <summary>Xored into the pixel key for the shuffles of the fine columns (the lanes use the same).</summary>
+    private readonly CellDivisor _divisor;
+
+    /// <summary>Xored into the pixel key for the shuffles of the fine columns.</summary>
     internal const uint ColumnSalt = 0x2f5a1c37u;
 
     /// <summary>Xored into the pixel key for the shuffles of the fine rows.</summary>
@@ -24,7 +29,8 @@ public sealed class MultiJitteredSampler : GridSampler
     /// <param name="samplesPerPixel">n², a perfect square ≥ 1.</param>
     /// <param name="seed">The seed; different seeds give different points.</param>
     /// <exception cref="ArgumentException">Not a positive perfect square.</exception>
-    public MultiJitteredSampler(int samplesPerPixel, uint seed) : base(samplesPerPixel, seed) { }
+    public MultiJitteredSampler(int samplesPerPixel, uint seed)
+        : base(samplesPerPixel, seed) => _divisor = new CellDivisor(GridSize, GridSize);
 
     /// <inheritdoc />
     public override string Name => "multijittered";
@@ -42,10 +48,103 @@ public sealed class MultiJitteredSampler : GridSampler
         // Fine row of this sample inside its coarse row: a permutation (over columns) of that row.
         int subRow = Permutation.PermutationElement(column, n, CounterHash.SampleHash(key ^ RowSalt, row));
 
-        uint h1 = CounterHash.SampleHash(key, index);
-        uint h2 = CounterHash.Hash(h1);
-        return new SamplePoint(
-            (column + ((subColumn + CounterHash.ToUnit(h1)) / n)) / n,
-            (row + ((subRow + CounterHash.ToUnit(h2)) / n)) / n);
+        InSubCells<ScalarLane, ScalarMath>(new ScalarLane(key, 0), index, column, row, new ScalarLane((uint)subColumn, 0), new ScalarLane((uint)subRow, 0), _divisor, out ScalarLane sx, out ScalarLane sy);
+        return new SamplePoint(sx.Value, sy.Value);
+    }
+
+    /// <summary>
+    /// Sample <paramref name="index"/> in fine cell (subColumn, subRow) of its coarse cell (column, row):
+    /// ((column + (subColumn + u)/n)/n, (row + (subRow + v)/n)/n), u and v two hashes of the sample.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void InSubCells<TV, TM>(TV keys, int index, int column, int row, TV subColumn, TV subRow, in CellDivisor divisor, out TV sx, out TV sy)
+        where TV : struct
+        where TM : IPointMath<TV>
+    {
+        TV h1 = PointHash.SampleHash<TV, TM>(keys, index);
+        TV h2 = TM.Hash(h1);
+        sx = TM.InSubCell(column, subColumn, h1, divisor);
+        sy = TM.InSubCell(row, subRow, h2, divisor);
+    }
+
+    /// <inheritdoc />
+    /// <remarks>Above <see cref="PatternLimits.MaxSamples"/> samples the lanes would not be exact: the buffered lanes then ask <see cref="GetSample"/>.</remarks>
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        SamplesPerPixel <= PatternLimits.MaxSamples
+            ? user.Run(() => new LaneForm<TL>(this))
+            : user.Run(() => new BufferedLanes<TL>(this));
+
+    /// <summary>
+    /// The points in lanes: the n column and n row permutations of each pixel get their pattern numbers once per
+    /// packet and their elements walk in SIMD, made a block ahead (<see cref="PointBlock"/>); each point is the float
+    /// of the scalar one.
+    /// </summary>
+    private struct LaneForm<TL> : ILaneSampler<TL>, IStagedPoints<TL>
+        where TL : struct, ILanes<TL>
+    {
+        private readonly float[] _block = PointBlock.Create<TL>();
+        private readonly uint _salt;
+        private readonly int _n;
+        private readonly LaneLength<TL> _length;
+        private readonly CellDivisor _divisor;
+        private readonly uint[] _scratch = new uint[TL.Count];
+        private readonly LanePermutation<TL>[] _columns, _rows;
+        private readonly (int Column, int Row)[] _cells;
+        private TL _keys;
+
+        public LaneForm(MultiJitteredSampler sampler)
+        {
+            _salt = PointHash.Salt(sampler.Seed);
+            _n = sampler.GridSize;
+            _length = new LaneLength<TL>(_n);
+            _divisor = sampler._divisor;
+            _columns = new LanePermutation<TL>[_n];
+            _rows = new LanePermutation<TL>[_n];
+
+            // Sample i's coarse cell (i mod n, i div n), looked up rather than divided for in the hot loop.
+            _cells = new (int, int)[_n * _n];
+            for (int i = 0; i < _cells.Length; i++)
+            {
+                _cells[i] = (i % _n, i / _n);
+            }
+        }
+
+        public void BeginPacket(int x0, int row)
+        {
+            _keys = PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt);
+            TL columnKeys = TL.Xor(_keys, TL.BroadcastBits(ColumnSalt)), rowKeys = TL.Xor(_keys, TL.BroadcastBits(RowSalt));
+            for (int k = 0; k < _n; k++)
+            {
+                _columns[k].Set(PointHash.SampleHash<TL, LaneMath<TL>>(columnKeys, k), _length, _scratch);
+                _rows[k].Set(PointHash.SampleHash<TL, LaneMath<TL>>(rowKeys, k), _length, _scratch);
+            }
+        }
+
+        public int Prepare(int start, int end) => PointBlock.Fill<TL, LaneForm<TL>>(ref this, _block, start, end);
+
+        public static bool HasMiddle => false;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public readonly void Sample(int index, out TL sx, out TL sy) => PointBlock.Read(_block, index, out sx, out sy);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public readonly void First(int index, out TL a, out TL b, out TL c)
+        {
+            (int column, int row) = _cells[index];
+            (a, b) = LanePermutation<TL>.Pair(
+                _columns[column], TL.BroadcastBits((uint)row), _length, _rows[row], TL.BroadcastBits((uint)column), _length);
+            c = default;
+        }
+
+        public readonly void Middle(int index, ref TL a, ref TL b, ref TL c)
+        {
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy)
+        {
+            (int column, int row) = _cells[index];
+            InSubCells<TL, LaneMath<TL>>(_keys, index, column, row, a, b, _divisor, out sx, out sy);
+        }
     }
 }

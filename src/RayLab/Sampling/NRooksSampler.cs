@@ -1,3 +1,6 @@
+using System.Runtime.CompilerServices;
+using RayLab.Simd;
+
 namespace RayLab.Sampling;
 
 /// <summary>
@@ -10,16 +13,16 @@ namespace RayLab.Sampling;
 /// π_y(i) and column π_x(i) of two independent hash permutations (<see cref="Permutation.PermutationElement"/>)
 /// keyed on the pixel, which gives the same distribution with no stored table.
 /// </remarks>
-public sealed class NRooksSampler : PixelSampler
+public sealed class NRooksSampler : PixelSampler, ILaneSampled
 {
     /// <summary>Creates an n-rooks sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1.</param>
     /// <param name="seed">The seed; different seeds give different points.</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="samplesPerPixel"/> is less than 1.</exception>
     public NRooksSampler(int samplesPerPixel, uint seed)
-        : base(samplesPerPixel, seed)
-    {
-    }
+        : base(samplesPerPixel, seed) => _divisor = new CellDivisor(samplesPerPixel, 1);
+
+    private readonly CellDivisor _divisor;
 
     /// <summary>The pixel key's multiplier for the permutation of the columns.</summary>
     internal const uint ColumnSalt = 0xa511e9b3u;
@@ -37,8 +40,83 @@ public sealed class NRooksSampler : PixelSampler
         uint key = CounterHash.PixelKey(x, y, Seed);
         int column = Permutation.PermutationElement(index, count, key * ColumnSalt);
         int row = Permutation.PermutationElement(index, count, key * RowSalt);
-        uint h1 = CounterHash.SampleHash(key, index);
-        uint h2 = CounterHash.Hash(h1);
-        return new SamplePoint((column + CounterHash.ToUnit(h1)) / count, (row + CounterHash.ToUnit(h2)) / count);
+        InCells<ScalarLane, ScalarMath>(new ScalarLane(key, 0), index, new ScalarLane((uint)column, 0), new ScalarLane((uint)row, 0), _divisor, out ScalarLane sx, out ScalarLane sy);
+        return new SamplePoint(sx.Value, sy.Value);
+    }
+
+    /// <summary>
+    /// Sample <paramref name="index"/> in its cell (column, row) of the N × N grid: ((column + u)/N, (row + v)/N), u
+    /// and v two hashes of the sample.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void InCells<TV, TM>(TV keys, int index, TV column, TV row, in CellDivisor divisor, out TV sx, out TV sy)
+        where TV : struct
+        where TM : IPointMath<TV>
+    {
+        TV h1 = PointHash.SampleHash<TV, TM>(keys, index);
+        TV h2 = TM.Hash(h1);
+        sx = TM.InCellExactly(column, h1, divisor);
+        sy = TM.InCellExactly(row, h2, divisor);
+    }
+
+    /// <inheritdoc />
+    /// <remarks>Above <see cref="PatternLimits.MaxSamples"/> samples the lanes would not be exact: the buffered lanes then ask <see cref="GetSample"/>.</remarks>
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        SamplesPerPixel <= PatternLimits.MaxSamples
+            ? user.Run(() => new LaneForm<TL>(this))
+            : user.Run(() => new BufferedLanes<TL>(this));
+
+    /// <summary>
+    /// The points in lanes: both of a pixel's permutations (column and row) walk in SIMD, made a block ahead
+    /// (<see cref="PointBlock"/>), and each point is the float of the scalar one.
+    /// </summary>
+    private struct LaneForm<TL> : ILaneSampler<TL>, IStagedPoints<TL>
+        where TL : struct, ILanes<TL>
+    {
+        private readonly float[] _block = PointBlock.Create<TL>();
+        private readonly uint _salt;
+        private readonly LaneLength<TL> _length;
+        private readonly CellDivisor _divisor;
+        private readonly uint[] _scratch = new uint[TL.Count];
+        private LanePermutation<TL> _columns, _rows;
+        private TL _keys;
+
+        public LaneForm(NRooksSampler sampler)
+        {
+            _salt = PointHash.Salt(sampler.Seed);
+            _length = new LaneLength<TL>(sampler.SamplesPerPixel);
+            _divisor = sampler._divisor;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void BeginPacket(int x0, int row)
+        {
+            _keys = PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt);
+            _columns.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(ColumnSalt)), _length, _scratch);
+            _rows.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(RowSalt)), _length, _scratch);
+        }
+
+        public int Prepare(int start, int end) => PointBlock.Fill<TL, LaneForm<TL>>(ref this, _block, start, end);
+
+        public static bool HasMiddle => false;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public readonly void Sample(int index, out TL sx, out TL sy) => PointBlock.Read(_block, index, out sx, out sy);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public readonly void First(int index, out TL a, out TL b, out TL c)
+        {
+            TL i = TL.BroadcastBits((uint)index);
+            (a, b) = LanePermutation<TL>.Pair(_columns, i, _length, _rows, i, _length);
+            c = default;
+        }
+
+        public readonly void Middle(int index, ref TL a, ref TL b, ref TL c)
+        {
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy) =>
+            InCells<TL, LaneMath<TL>>(_keys, index, a, b, _divisor, out sx, out sy);
     }
 }

@@ -29,28 +29,12 @@ internal static class Permutation
     internal static int PermutationElement(int i, int l, uint p)
     {
         uint length = (uint)l;
-        uint w = Mask(length);
+        var w = new ScalarLane(Mask(length), 0);
+        var key = new PermutationKey<ScalarLane, ScalarMath>(new ScalarLane(p, 0));
         uint v = (uint)i;
         do
         {
-            v ^= p;
-            v *= Kensler.PermuteMultiplier1;
-            v ^= p >> 16;
-            v ^= (v & w) >> 4;
-            v ^= p >> 8;
-            v *= Kensler.PermuteMultiplier2;
-            v ^= p >> 23;
-            v ^= (v & w) >> 1;
-            v *= 1u | (p >> 27);
-            v *= Kensler.PermuteMultiplier3;
-            v ^= (v & w) >> 11;
-            v *= Kensler.PermuteMultiplier4;
-            v ^= (v & w) >> 2;
-            v *= Kensler.PermuteMultiplier5;
-            v ^= (v & w) >> 2;
-            v *= Kensler.PermuteMultiplier6;
-            v &= w;
-            v ^= v >> 5;
+            v = key.Round(new ScalarLane(v, 0), w).Bits;
         }
         while (v >= length);
 
@@ -72,5 +56,58 @@ internal static class Permutation
         w |= w >> 8;
         w |= w >> 16;
         return w;
+    }
+}
+
+/// <summary>
+/// A pattern number p of <see cref="Permutation.PermutationElement"/> and what every round of its cycle walk takes
+/// from it, made once: one permutation (<see cref="ScalarMath"/>) or one per lane (<see cref="LaneMath{TL}"/>).
+/// </summary>
+/// <typeparam name="TV">One pixel's value or one per lane.</typeparam>
+/// <typeparam name="TM">Its arithmetic.</typeparam>
+internal readonly struct PermutationKey<TV, TM>
+    where TV : struct
+    where TM : IPointMath<TV>
+{
+    private readonly TV _p, _p16, _p8, _p23, _multiplier;
+
+    /// <summary>The key of pattern number <paramref name="p"/>.</summary>
+    /// <param name="p">The pattern number.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public PermutationKey(TV p)
+    {
+        _p = p;
+        _p16 = TM.ShiftRightBits(p, 16);
+        _p8 = TM.ShiftRightBits(p, 8);
+        _p23 = TM.ShiftRightBits(p, 23);
+
+        // The listing multiplies by 1 | (p ≫ 27) and then by Kensler.PermuteMultiplier3; products modulo 2³²
+        // associate, so one multiplier does both.
+        _multiplier = TM.MultiplyBits(TM.Or(TM.ShiftRightBits(p, 27), TM.BroadcastBits(1)), TM.BroadcastBits(Kensler.PermuteMultiplier3));
+    }
+
+    /// <summary>One round of Kensler's hash of <paramref name="v"/> under mask <paramref name="w"/>: a bijection on 0 … w.</summary>
+    /// <param name="v">The value, ≤ w.</param>
+    /// <param name="w">The mask: the next power of two ≥ l, less one.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public TV Round(TV v, TV w)
+    {
+        v = TM.Xor(v, _p);
+        v = TM.MultiplyBits(v, TM.BroadcastBits(Kensler.PermuteMultiplier1));
+        v = TM.Xor(v, _p16);
+        v = TM.Xor(v, TM.ShiftRightBits(TM.And(v, w), 4));
+        v = TM.Xor(v, _p8);
+        v = TM.MultiplyBits(v, TM.BroadcastBits(Kensler.PermuteMultiplier2));
+        v = TM.Xor(v, _p23);
+        v = TM.Xor(v, TM.ShiftRightBits(TM.And(v, w), 1));
+        v = TM.MultiplyBits(v, _multiplier);
+        v = TM.Xor(v, TM.ShiftRightBits(TM.And(v, w), 11));
+        v = TM.MultiplyBits(v, TM.BroadcastBits(Kensler.PermuteMultiplier4));
+        v = TM.Xor(v, TM.ShiftRightBits(TM.And(v, w), 2));
+        v = TM.MultiplyBits(v, TM.BroadcastBits(Kensler.PermuteMultiplier5));
+        v = TM.Xor(v, TM.ShiftRightBits(TM.And(v, w), 2));
+        v = TM.MultiplyBits(v, TM.BroadcastBits(Kensler.PermuteMultiplier6));
+        v = TM.And(v, w);
+        return TM.Xor(v, TM.ShiftRightBits(v, 5));
     }
 }

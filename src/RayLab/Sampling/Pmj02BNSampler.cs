@@ -11,7 +11,7 @@ namespace RayLab.Sampling;
 /// set its <see cref="CounterHash.PixelKey"/> picks, unscrambled: a digital shift would keep the strata but tear
 /// the spacing apart at the shift's binary boundaries.
 /// </remarks>
-public sealed class Pmj02BNSampler : PixelSampler
+public sealed class Pmj02BNSampler : PixelSampler, ILaneSampled
 {
     /// <summary>Creates a pmj02bn sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1 (a power of two for the full net property).</param>
@@ -29,4 +29,8 @@ public sealed class Pmj02BNSampler : PixelSampler
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index) =>
         Pmj02Tables.Point(Sets, Pmj02Tables.Pixel(CounterHash.PixelKey(x, y, Seed), scramble: false), index);
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        user.Run(() => new Pmj02Lanes<TL>(this));
 }

@@ -12,7 +12,7 @@ namespace RayLab.Sampling;
 /// two; see docs/samplers.md for their size). A pixel takes the set its <see cref="CounterHash.PixelKey"/> picks,
 /// and XORs each coordinate with a key hashed from it (a random digital shift, which keeps every net a net).
 /// </remarks>
-public sealed class Pmj02Sampler : PixelSampler
+public sealed class Pmj02Sampler : PixelSampler, ILaneSampled
 {
     /// <summary>Creates a pmj02 sampler.</summary>
     /// <param name="samplesPerPixel">Samples per pixel, ≥ 1 (a power of two for the full net property).</param>
@@ -30,4 +30,8 @@ public sealed class Pmj02Sampler : PixelSampler
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index) =>
         Pmj02Tables.Point(Sets, Pmj02Tables.Pixel(CounterHash.PixelKey(x, y, Seed), scramble: true), index);
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        user.Run(() => new Pmj02Lanes<TL>(this));
 }

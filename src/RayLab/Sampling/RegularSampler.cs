@@ -1,10 +1,13 @@
+using System.Runtime.CompilerServices;
+using RayLab.Simd;
+
 namespace RayLab.Sampling;
 
 /// <summary>
 /// The lab's regular sampling: an n×n grid, one sample at the centre of each cell, the same pattern in every
 /// pixel. Cheap, but it still aliases. One sample is the pixel centre.
 /// </summary>
-public sealed class RegularSampler : GridSampler
+public sealed class RegularSampler : GridSampler, ILaneSampled
 {
     /// <summary>Creates an n×n regular sampler.</summary>
     /// <param name="samplesPerPixel">n², a perfect square ≥ 1.</param>
@@ -19,5 +22,43 @@ public sealed class RegularSampler : GridSampler
     {
         int n = GridSize;
         return new SamplePoint(((index % n) + 0.5) / n, ((index / n) + 0.5) / n);
+    }
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) => user.Run(() => new LaneForm<TL>(this));
+
+    /// <summary>The points in lanes: <see cref="GetSample"/>'s (the same in every pixel) in float, from a table made once.</summary>
+    private readonly struct LaneForm<TL>(RegularSampler sampler) : ILaneSampler<TL>
+        where TL : struct, ILanes<TL>
+    {
+        private readonly (float X, float Y)[] _points = Points(sampler);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void BeginPacket(int x0, int row)
+        {
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public int Prepare(int start, int end) => end;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Sample(int index, out TL sx, out TL sy)
+        {
+            (float x, float y) = _points[index];
+            sx = TL.Broadcast(x);
+            sy = TL.Broadcast(y);
+        }
+
+        private static (float X, float Y)[] Points(RegularSampler sampler)
+        {
+            var points = new (float, float)[sampler.SamplesPerPixel];
+            for (int i = 0; i < points.Length; i++)
+            {
+                SamplePoint p = sampler.GetSample(0, 0, i);
+                points[i] = ((float)p.X, (float)p.Y);
+            }
+
+            return points;
+        }
     }
 }

@@ -18,7 +18,7 @@ namespace RayLab.Sampling;
 /// samples of its block). The Sobol' index keeps the low 32 bits, so blocks repeat after 2³²⁻ᵐ pixels (a 1920 × 1080
 /// image at 16 samples uses 2²⁶ indices). Coordinates keep the top 24 bits, like the other samplers.
 /// </remarks>
-public sealed class ZSobolSampler : PixelSampler
+public sealed class ZSobolSampler : PixelSampler, ILaneSampled
 {
     /// <summary>The 24 permutations of (0, 1, 2, 3) in lexicographic order, each packed as four 2-bit images.</summary>
     private static readonly byte[] Permutations = BuildPermutations();
@@ -260,4 +260,8 @@ public sealed class ZSobolSampler : PixelSampler
 
         public ulong LastPrefix { get; set; }
     }
+
+    /// <inheritdoc />
+    TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
+        user.Run(() => new ZSobolLanes<TL>(this));
 }

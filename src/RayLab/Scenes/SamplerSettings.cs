@@ -15,7 +15,7 @@ public sealed record SamplerSettings(string Type, int Samples, uint Seed, int Mi
 {
     /// <summary>
     /// Every sampler name a scene file or the console accepts: the point samplers, <c>adaptive</c>, and <c>exact</c>
-    /// (the exact reference, <see cref="Rendering.Exact.ExactRenderer"/>, which integrates instead of sampling).
+    /// (the exact reference, <see cref="RenderMethod.Exact"/>, which integrates instead of sampling).
     /// </summary>
     public static IReadOnlyList<string> Types { get; } = [.. Samplers.Names, "adaptive", "exact"];
 
@@ -52,7 +52,7 @@ public sealed record SamplerSettings(string Type, int Samples, uint Seed, int Mi
     /// <summary>True for the lab's adaptive sampler.</summary>
     public bool IsAdaptive => Type == "adaptive";
 
-    /// <summary>True for the exact reference (<see cref="Rendering.Exact.ExactRenderer"/>): no samples, no seed.</summary>
+    /// <summary>True for the exact reference (<see cref="RenderMethod.Exact"/>): no samples, no seed.</summary>
     public bool IsExact => Type == "exact";
 
     /// <summary>Creates the point sampler.</summary>

@@ -1,5 +1,4 @@
 using RayLab.Cameras;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Scenes;
 
@@ -36,16 +35,14 @@ public sealed record SceneDescription(
             Camera camera = Camera.CreateCamera();
             ImagePlane plane = camera.GetImagePlane(Width, Height); // the camera's checks; the renderer builds its own from the camera it is given
             section = SceneSection.Sampler;
-            if (Sampler.IsExact)
-            {
-                ExactRenderer.Check(Scene, plane); // the outlines' checks, without the outlines
-            }
-            else if (!Sampler.IsAdaptive)
+            if (!Sampler.IsExact && !Sampler.IsAdaptive)
             {
                 CheckAtMost(Sampler.Samples, SceneFile.MaxSamples, "samples");
             }
 
-            return new PreparedScene(this, camera, Sampler.CreateMethod());
+            RenderMethod method = Sampler.CreateMethod();
+            method.Check(Scene, plane); // what a render would refuse (the exact outlines' checks), without rendering
+            return new PreparedScene(this, camera, method);
         }
         catch (UnsupportedSceneException e)
         {

@@ -1,3 +1,5 @@
+using System.Globalization;
+using System.Runtime.Intrinsics;
 using RayLab.Reports.Comparison;
 using RayLab.OwnMethod;
 
@@ -30,6 +32,27 @@ public sealed class CompareOwnMethodTests : IDisposable
         Assert.True(File.Exists(Path.Combine(report, "images", "rotated-grid-16.png")));
         Assert.True(File.Exists(Path.Combine(report, "images", "mitchell-4---16.png")));
         Assert.Contains("mitchell", File.ReadAllText(Path.Combine(report, "index.html")), StringComparison.Ordinal);
+
+        // The printed table names each row's kernel and its rays per millisecond, so the student's method (a pixel
+        // method: the scalar kernel) is not read as slow beside jittered (a packet kernel wherever the CPU has SIMD).
+        string[][] csv = [.. File.ReadAllLines(Path.Combine(report, "results.csv")).Skip(1).Select(line => line.Split(','))];
+        string[][] table = [.. stdout.ToString().Split('\n').Where(l => l.StartsWith("| ", StringComparison.Ordinal)).Skip(1)
+            .Select(l => l.Split('|').Select(cell => cell.Trim()).ToArray())];
+        Assert.Equal(csv.Length, table.Length);
+        for (int i = 0; i < csv.Length; i++)
+        {
+            (string name, long rays, double ms, string kernel) = (csv[i][0], long.Parse(csv[i][7], CultureInfo.InvariantCulture),
+                double.Parse(csv[i][9], CultureInfo.InvariantCulture), csv[i][15]);
+            Assert.Equal(name, table[i][1]);
+            Assert.Equal(kernel.ToLowerInvariant(), table[i][5]);
+            Assert.Equal(rays / ms, double.Parse(table[i][6], CultureInfo.InvariantCulture), rays / ms / 100);
+        }
+
+        Assert.All(table.Where(row => row[1] == "mitchell"), row => Assert.Equal("scalar", row[5]));
+        if (Vector128.IsHardwareAccelerated)
+        {
+            Assert.All(table.Where(row => row[1] == "jittered"), row => Assert.StartsWith("vector", row[5], StringComparison.Ordinal));
+        }
     }
 
     [Fact]

@@ -1,5 +1,6 @@
 using RayLab.Reports.Comparison;
 using RayLab.Metrics;
+using RayLab.OwnMethod;
 using RayLab.Sampling;
 
 namespace RayLab.Reports.Tests.Comparison;
@@ -143,8 +144,8 @@ public class CompareReportTests
         CompareReport report = new("heading", "raylab compare x --out y", results, []);
         string md = report.Markdown();
 
-        Assert.Contains("| sampler | setting | rays/px | time (ms) | RMSE | mean FLIP |", md, StringComparison.Ordinal);
-        Assert.Contains("| regular | 1 spp | 1.00 | 10.0 | 4.000 | 0.0500 |", md, StringComparison.Ordinal);
+        Assert.Contains("| sampler | setting | rays/px | time (ms) | kernel | rays/ms | RMSE | mean FLIP |", md, StringComparison.Ordinal);
+        Assert.Contains("| regular | 1 spp | 1.00 | 10.0 | scalar | 10 | 4.000 | 0.0500 |", md, StringComparison.Ordinal);
         Assert.Contains("| regular | -1.00 | -1.00 | -0.66 | 2 |", md, StringComparison.Ordinal);
         // Every line reaches FLIP 0.03 (jittered's best): regular between 1 and 4 spp, jittered at 4.
         Assert.Contains("## Time to mean FLIP ≤ 0.0300 (the lowest mean FLIP every line reaches)", md, StringComparison.Ordinal);
@@ -190,6 +191,50 @@ public class CompareReportTests
         {
             Directory.Delete(folder, recursive: true);
         }
+    }
+
+    [Fact]
+    public void EveryRowNamesItsKernelAndItsRaysPerMillisecond()
+    {
+        // The case that misleads: a pixel method of one's own (scalar kernel) at 5 rays/px and 27.2 ms beside jittered
+        // (a packet kernel) at 16 rays/px and 1.9 ms, on a 640×480 image.
+        CompareResult own = new(
+            CompareCase.Custom("mitchell", "4 → 16", RenderMethod.Custom(new MitchellMethod())),
+            5L * 640 * 480, 5, TimeSpan.FromMilliseconds(27.2), new ImageError(1, 1, 9, 0.01), RenderKernel.Scalar);
+        CompareResult jittered = Result("jittered", 16, 0.5, 1.9) with { Rays = 16L * 640 * 480, Kernel = RenderKernel.Vector256 };
+        CompareResult instant = Result("random", 1, 4, 0);
+
+        CompareReport report = new("heading", "", [own, jittered, instant], []);
+        string md = report.Markdown();
+
+        Assert.Contains("| sampler | setting | rays/px | time (ms) | kernel | rays/ms | RMSE |", md, StringComparison.Ordinal);
+        // 1 536 000 rays in 27.2 ms and 4 915 200 in 1.9 ms.
+        Assert.Contains("| mitchell | 4 → 16 | 5.00 | 27.2 | scalar | 56471 | 1.000 |", md, StringComparison.Ordinal);
+        Assert.Contains("| jittered | 16 spp | 16.00 | 1.9 | vector256 | 2586947 | 0.500 |", md, StringComparison.Ordinal);
+        Assert.Contains("| random | 1 spp | 1.00 | 0.0 | scalar | n/a | 4.000 |", md, StringComparison.Ordinal);
+        Assert.Contains("compare rays/ms within one kernel", md, StringComparison.Ordinal);
+        string folder = Directory.CreateTempSubdirectory("raylab-kernel").FullName;
+        try
+        {
+            report.WriteTo(folder);
+            string html = File.ReadAllText(Path.Combine(folder, "index.html"));
+            Assert.Contains("<th>time (ms)</th><th>kernel</th><th>rays/ms</th>", html, StringComparison.Ordinal);
+            Assert.Contains("<td>27.2</td><td>scalar</td><td>56471</td>", html, StringComparison.Ordinal);
+            Assert.Contains("<td>1.9</td><td>vector256</td><td>2586947</td>", html, StringComparison.Ordinal);
+            Assert.Contains("compare rays/ms within one kernel", html, StringComparison.Ordinal);
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void ASlowRateKeepsThreeSignificantDigits()
+    {
+        CompareResult slow = Result("random", 1, 4, 30) with { Rays = 370 };
+
+        Assert.Contains("| random | 1 spp | 1.00 | 30.0 | scalar | 12.3 | 4.000 |", new CompareReport("h", "", [slow], []).Table(), StringComparison.Ordinal);
     }
 
     private static CompareResult Result(string sampler, int spp, double rmse, double ms, int max = 9, double? flip = null) => new(

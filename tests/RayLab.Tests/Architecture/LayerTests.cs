@@ -18,7 +18,7 @@ public sealed class LayerTests
 
     /// <summary>
     /// The layers, bottom up, each with the layers it may use (itself always). Simd is lane arithmetic over the
-    /// geometry alone; the lane samplers (Sampling.Lanes) sit over Sampling and Simd, packet tracing
+    /// geometry alone; the samplers (Sampling, with their lane forms) sit over Simd, packet tracing
     /// (Rendering.Packets) over the cameras and Simd, the renderers over both, the adaptive diagram
     /// (Rendering.Inspection) over two renderers, and scene files (Scenes) over everything.
     /// </summary>
@@ -26,19 +26,18 @@ public sealed class LayerTests
     {
         ["Geometry"] = [],
         ["Simd"] = ["Geometry"],
-        ["Sampling"] = ["Geometry"],
-        ["Sampling.Lanes"] = ["Geometry", "Sampling", "Simd"],
+        ["Sampling"] = ["Geometry", "Simd"],
         ["Cameras"] = ["Geometry", "Simd"],
         ["Imaging"] = ["Geometry", "Simd"],
         ["Metrics"] = ["Geometry", "Imaging"],
         ["Rendering.Packets"] = ["Geometry", "Simd", "Cameras"],
         ["Rendering"] = ["Geometry", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets"],
-        ["Rendering.Point"] = ["Geometry", "Sampling", "Sampling.Lanes", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
+        ["Rendering.Point"] = ["Geometry", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.Adaptive"] = ["Geometry", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.Exact"] = ["Geometry", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.PixelMethods"] = ["Geometry", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering"],
         ["Rendering.Inspection"] = ["Geometry", "Sampling", "Simd", "Cameras", "Imaging", "Rendering.Packets", "Rendering", "Rendering.Adaptive", "Rendering.Exact"],
-        ["Scenes"] = ["Geometry", "Sampling", "Sampling.Lanes", "Simd", "Cameras", "Imaging", "Metrics", "Rendering.Packets", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods", "Rendering.Inspection"],
+        ["Scenes"] = ["Geometry", "Sampling", "Simd", "Cameras", "Imaging", "Metrics", "Rendering.Packets", "Rendering", "Rendering.Point", "Rendering.Adaptive", "Rendering.Exact", "Rendering.PixelMethods", "Rendering.Inspection"],
     };
 
     private static readonly Lazy<ArchUnitNET.Domain.Architecture> Core = new(() => new ArchLoader().LoadAssemblies(typeof(Scene).Assembly).Build());
@@ -84,7 +83,7 @@ public sealed class LayerTests
         Assert.Empty(FindCycle([.. Allowed.SelectMany(pair => pair.Value.Select(to => (pair.Key, to)))]));
         Assert.Contains(LayerDependencies(), d => d.From == "Rendering.Point" && d.To == "Simd");
         Assert.Contains(LayerDependencies(), d => d.From == "Cameras" && d.To == "Simd");
-        Assert.Contains(LayerDependencies(), d => d.From == "Sampling.Lanes" && d.To == "Simd");
+        Assert.Contains(LayerDependencies(), d => d.From == "Sampling" && d.To == "Simd");
         Assert.Contains(LayerDependencies(), d => d.From == "Rendering.Packets" && d.To == "Cameras");
 
         // The root types' levels are derived: the facade stands on the renderers, the model on nothing above the geometry.

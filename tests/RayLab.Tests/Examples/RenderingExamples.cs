@@ -4,7 +4,6 @@
 // the difference from another render. Run them here with: dotnet test --filter "FullyQualifiedName~Examples"
 using RayLab.Sampling;
 using RayLab.Scenes;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Examples;
 
@@ -103,7 +102,7 @@ public sealed class RenderingExamples
         // per pixel are close; the error left is noise along the two outlines (about 2·2π·8.3 ≈ 105 edge pixels
         // of 3072). Measured: 0.62 levels per channel for one sample, 0.13 for 16 jittered; the bounds keep a margin.
         var exact = new Image(Width, Height);
-        new ExactRenderer().Render(TwoSpheres, Camera, exact);
+        new Renderer().Render(TwoSpheres, Camera, RenderMethod.Exact, exact);
 
         (Image jaggies, _) = Render(new RegularSampler(1));
         (Image jittered, _) = Render(new JitteredSampler(16, seed: 1));

@@ -1,6 +1,5 @@
 using System.Security.Cryptography;
 using RayLab.Sampling;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Golden;
 
@@ -72,7 +71,7 @@ public class GoldenImageTests
             yield return ($"{cameraName} exact", () =>
             {
                 var image = new Image(Width, Height);
-                new ExactRenderer { MaxDegreeOfParallelism = 2 }.Render(scene, camera, image);
+                new Renderer { MaxDegreeOfParallelism = 2 }.Render(scene, camera, RenderMethod.Exact, image);
                 return image;
             });
         }

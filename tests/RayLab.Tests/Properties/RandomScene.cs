@@ -42,7 +42,7 @@ public sealed record RandomScene(Scene Scene, Camera Camera, IPixelSampler? Samp
     /// <summary>Point samplers and the adaptive one.</summary>
     public static Gen<RandomScene> Any { get; } = Build(adaptive: true);
 
-    /// <summary>Point samplers only (what <c>Renderer.RenderPixel</c> takes).</summary>
+    /// <summary>Point samplers only (<c>RenderMethod.Sampled</c>).</summary>
     public static Gen<RandomScene> WithPointSampler { get; } = Build(adaptive: false);
 
     private static Gen<double> Coordinate { get; } = Gen.Frequency(

@@ -1,5 +1,3 @@
-using RayLab.Cameras;
-
 namespace RayLab.Tests.Properties;
 
 /// <summary>Random valid scenes (<see cref="RandomScene"/>, fixed FsCheck seed): rendering is total and deterministic.</summary>
@@ -19,7 +17,8 @@ public class RenderPropertyTests
         int scenesWithASphere = 0;
         PropertyCheck.ForAll(RandomScene.WithPointSampler, 300, s =>
         {
-            ImagePlane plane = s.Camera.GetImagePlane(s.Width, s.Height);
+            var values = new Intensity[s.Width * s.Height];
+            new Renderer { Kernel = RenderKernel.Scalar }.Render(s.Scene, s.Camera, RenderMethod.Sampled(s.Sampler!), values, s.Width, s.Height);
             bool sphereSeen = false;
             (Intensity low, Intensity high) = s.Range;
             double slack = Math.ScaleB(s.Sampler!.SamplesPerPixel + 1, -53);
@@ -27,7 +26,7 @@ public class RenderPropertyTests
             {
                 for (int x = 0; x < s.Width; x++)
                 {
-                    Intensity v = Renderer.RenderPixel(s.Scene, plane, s.Sampler, x, row);
+                    Intensity v = values[(row * s.Width) + x];
                     sphereSeen |= v != s.Scene.Background;
                     foreach ((double value, double lo, double hi) in new[] { (v.R, low.R, high.R), (v.G, low.G, high.G), (v.B, low.B, high.B) })
                     {

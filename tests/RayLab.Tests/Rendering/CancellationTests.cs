@@ -1,4 +1,3 @@
-using RayLab.Rendering.Exact;
 using RayLab.Sampling;
 
 namespace RayLab.Tests.Rendering;
@@ -49,13 +48,13 @@ public sealed class CancellationTests
     }
 
     [Fact]
-    public void TheExactRendererOnItsOwnIsCancelledToo()
+    public void AnExactRenderIntoLinearValuesIsCancelledToo()
     {
         var progress = new RenderProgress();
         using var cancel = new CancellationTokenSource();
-        var renderer = new ExactRenderer { MaxDegreeOfParallelism = Threads, Progress = progress, CancellationToken = cancel.Token };
+        var renderer = new Renderer { MaxDegreeOfParallelism = Threads, Progress = progress, CancellationToken = cancel.Token };
 
-        int rowsAtCancel = CancelAfterFirstRow(progress, cancel, () => renderer.RenderLinear(Spheres, Camera, Width, ExactHeight));
+        int rowsAtCancel = CancelAfterFirstRow(progress, cancel, () => renderer.Render(Spheres, Camera, RenderMethod.Exact, new Intensity[Width * ExactHeight], Width, ExactHeight));
 
         AssertStoppedEarly(progress, rowsAtCancel, ExactHeight);
     }

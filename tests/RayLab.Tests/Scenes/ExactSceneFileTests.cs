@@ -1,5 +1,4 @@
 using RayLab.Scenes;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Scenes;
 
@@ -41,7 +40,7 @@ public class ExactSceneFileTests
         Assert.Equal(0, stats.PrimaryRays);
         Assert.All(rays, r => Assert.Equal(0f, r));
         var direct = new Image(64, 48);
-        new ExactRenderer().Render(prepared.Scene, prepared.Camera, direct);
+        new Renderer().Render(prepared.Scene, prepared.Camera, RenderMethod.Exact, direct);
         Assert.Equal(direct.PixelBytes.ToArray(), image.PixelBytes.ToArray());
     }
 

@@ -1,5 +1,4 @@
 using RayLab.Sampling;
-using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Tests.Simd;
@@ -81,6 +80,16 @@ public class LaneSamplerTests
     }
 
     [Fact]
+    public void EveryBuiltInSamplerHasALaneForm()
+    {
+        foreach (string name in Samplers.Names)
+        {
+            IPixelSampler sampler = Samplers.Create(name, 16, 1);
+            Assert.True(sampler is ILaneSampled, $"{name} ({sampler.GetType().Name}) has no lane form: the packet kernel would take the buffered path.");
+        }
+    }
+
+    [Fact]
     public void TheSecondSobolDimensionIsTheReversedSupersetXor()
     {
         var random = new Random(21);
@@ -92,7 +101,7 @@ public class LaneSamplerTests
                 bits[lane] = BitConverter.UInt32BitsToSingle(round < 8 ? (uint)(round * 8 + lane) : (uint)random.NextInt64(0, 1L << 32));
             }
 
-            SobolLanes<Lanes256>.Reverse(SobolLanes<Lanes256>.SupersetXor(Lanes256.Load(bits))).Store(result);
+            Lanes256.ReverseBits(SobolSampler.SupersetXor<Lanes256, LaneMath<Lanes256>>(Lanes256.Load(bits))).Store(result);
             for (int lane = 0; lane < bits.Length; lane++)
             {
                 Assert.Equal(LowDiscrepancy.SobolDimension1(BitConverter.SingleToUInt32Bits(bits[lane])), BitConverter.SingleToUInt32Bits(result[lane]));
@@ -115,21 +124,40 @@ public class LaneSamplerTests
         }
     }
 
-    private static void CheckNRooks<TL>(NRooksSampler s) where TL : struct, ILanes<TL> => Check<TL, NRooksLanes<TL>>(new(s), s);
+    private static void CheckNRooks<TL>(NRooksSampler s) where TL : struct, ILanes<TL> => CheckLaneForm<TL>(s);
 
-    private static void CheckCmj<TL>(CorrelatedMultiJitteredSampler s) where TL : struct, ILanes<TL> => Check<TL, CorrelatedMultiJitteredLanes<TL>>(new(s), s);
+    private static void CheckCmj<TL>(CorrelatedMultiJitteredSampler s) where TL : struct, ILanes<TL> => CheckLaneForm<TL>(s);
 
-    private static void CheckMultiJittered<TL>(MultiJitteredSampler s) where TL : struct, ILanes<TL> => Check<TL, MultiJitteredLanes<TL>>(new(s), s);
+    private static void CheckMultiJittered<TL>(MultiJitteredSampler s) where TL : struct, ILanes<TL> => CheckLaneForm<TL>(s);
 
-    private static void CheckHammersley<TL>(HammersleySampler s) where TL : struct, ILanes<TL> => Check<TL, HammersleyLanes<TL>>(new(s), s);
+    private static void CheckHammersley<TL>(HammersleySampler s) where TL : struct, ILanes<TL> => CheckLaneForm<TL>(s);
 
-    private static void CheckSobol<TL>(SobolSampler s) where TL : struct, ILanes<TL> => Check<TL, SobolLanes<TL>>(new(s), s);
+    private static void CheckSobol<TL>(SobolSampler s) where TL : struct, ILanes<TL> => CheckLaneForm<TL>(s);
 
-    private static void CheckPmj02<TL>(Pmj02Sampler s) where TL : struct, ILanes<TL> => Check<TL, Pmj02Lanes<TL>>(new(s), s);
+    private static void CheckPmj02<TL>(Pmj02Sampler s) where TL : struct, ILanes<TL> => CheckLaneForm<TL>(s);
 
-    private static void CheckPmj02BN<TL>(Pmj02BNSampler s) where TL : struct, ILanes<TL> => Check<TL, Pmj02Lanes<TL>>(new(s), s);
+    private static void CheckPmj02BN<TL>(Pmj02BNSampler s) where TL : struct, ILanes<TL> => CheckLaneForm<TL>(s);
 
-    private static void CheckZSobol<TL>(ZSobolSampler s) where TL : struct, ILanes<TL> => Check<TL, ZSobolLanes<TL>>(new(s), s);
+    private static void CheckZSobol<TL>(ZSobolSampler s) where TL : struct, ILanes<TL> => CheckLaneForm<TL>(s);
+
+    /// <summary>The sampler's own lane form, as the packet kernel gets it, against its scalar points.</summary>
+    private static void CheckLaneForm<TL>(IPixelSampler sampler)
+        where TL : struct, ILanes<TL>
+    {
+        var check = new LaneFormCheck<TL>(sampler);
+        Assert.True(((ILaneSampled)sampler).WithLanes<TL, LaneFormCheck<TL>, bool>(ref check));
+    }
+
+    private readonly struct LaneFormCheck<TL>(IPixelSampler sampler) : ILaneSamplerUser<TL, bool>
+        where TL : struct, ILanes<TL>
+    {
+        public bool Run<TS>(Func<TS> create)
+            where TS : struct, ILaneSampler<TL>
+        {
+            Check<TL, TS>(create(), sampler);
+            return true;
+        }
+    }
 
     private static void Check<TL, TS>(TS lanes, IPixelSampler sampler)
         where TL : struct, ILanes<TL>
@@ -229,6 +257,20 @@ public class LaneSamplerTests
                 points[i] = inner.GetSample(x, y, i);
             }
         }
+    }
+
+    [Fact]
+    public void TheWorkedExamplesSamplerRendersTheSameBytesOnItsLaneFormAsOnTheBufferedPath()
+    {
+        // docs/architecture.md, "Adding a sampler": one file, and the packet kernel takes its lane form. With N = 16
+        // the lanes' float is the scalar double exactly, so the two paths give the same bytes.
+        var scene = new Scene([new Sphere(new Double3(0, 0, 0), 1, new Intensity(0.9, 0.2, 0.2))], new Intensity(0.1, 0.1, 0.15), Intensity.White);
+        var camera = new PerspectiveCamera { Position = new Double3(0, 0.5, 6), Target = Double3.Zero, Fov = 40, NearPlane = 0.1, FarPlane = 100 };
+        var diagonal = new RayLab.Tests.Sampling.DiagonalSampler(16, 5);
+        Image lanes = new(83, 61), buffered = new(83, 61);
+        Assert.Equal(RenderKernel.Vector128, new Renderer { Kernel = RenderKernel.Vector128 }.Render(scene, camera, diagonal, lanes).Kernel);
+        new Renderer { Kernel = RenderKernel.Vector128 }.Render(scene, camera, new StudentSampler(diagonal), buffered);
+        Assert.True(lanes.PixelBytes.SequenceEqual(buffered.PixelBytes), "The worked example's lane form differs from its scalar points.");
     }
 
     [Fact]

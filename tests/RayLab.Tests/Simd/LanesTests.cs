@@ -1,5 +1,4 @@
 using RayLab.Sampling;
-using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Tests.Simd;

@@ -140,6 +140,9 @@ internal sealed class AdaptiveLattice
     /// <summary>The 8-bit colour of a flat pixel all of whose corners hit <paramref name="id"/>.</summary>
     public Rgb24 Level(int id) => _levels[id];
 
+    /// <summary>The linear colour of a flat pixel all of whose corners hit <paramref name="id"/>.</summary>
+    public Intensity Colour(int id) => _palette[id];
+
     /// <summary>
     /// Points on the horizontal pixel lines (other than corners) that both rows beside the line traced, where the two
     /// rows were not rendered one after the other by one thread: each thread's notes of a row's top-edge points

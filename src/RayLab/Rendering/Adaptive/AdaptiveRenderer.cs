@@ -46,19 +46,19 @@ internal static class AdaptiveRenderer
         return other < 0 ? line.Length : other;
     }
 
-    /// <summary>Writes a run of flat pixels of one colour (one ray each for the heat map); returns its length.</summary>
-    private static int Fill(Span<Rgb24> pixels, Span<float> counts, Rgb24 colour)
+    /// <summary>Writes a run of <paramref name="count"/> flat pixels of one colour from <paramref name="x"/> (one ray each for the heat map); returns its length.</summary>
+    private static int Fill(TargetRow pixels, Span<float> counts, int x, int count, Intensity colour, Rgb24 level)
     {
-        pixels.Fill(colour);
+        pixels.Fill(x, count, colour, level);
         counts.Fill(1);
-        return pixels.Length;
+        return count;
     }
 
     /// <summary>
     /// Writes the flat pixels of the run of <paramref name="run"/> from <paramref name="x"/> up to the first one a
     /// silhouette may cross (<see cref="MayCross"/>); returns how many it wrote.
     /// </summary>
-    private static int FillGuarded(ref GuardState state, Span<Rgb24> pixels, Span<float> counts, int x, int run, int row, Rgb24 colour)
+    private static int FillGuarded(ref GuardState state, TargetRow pixels, Span<float> counts, int x, int run, int row, Intensity colour, Rgb24 level)
     {
         int start = x, end = x + run;
         while (x < end)
@@ -70,7 +70,7 @@ internal static class AdaptiveRenderer
 
             // The rest of the pixel's block is clear too when the block is.
             int clear = state.BlockFree ? Math.Min(end, (state.Block + 1) * GuardBlock) : x + 1;
-            Fill(pixels[x..clear], counts.IsEmpty ? default : counts[x..clear], colour);
+            Fill(pixels, counts.IsEmpty ? default : counts[x..clear], x, clear - x, colour, level);
             x = clear;
         }
 
@@ -78,7 +78,7 @@ internal static class AdaptiveRenderer
     }
 
     /// <summary>Renders with <paramref name="sampler"/>'s settings; <paramref name="raysPerPixel"/>, if given, receives each pixel's rays.</summary>
-    public static RenderStatistics Render(Scene scene, ImagePlane plane, AdaptiveSampler sampler, IPixelRows image, RenderOptions options, float[]? raysPerPixel)
+    public static RenderStatistics Render(Scene scene, ImagePlane plane, AdaptiveSampler sampler, PixelTarget image, RenderOptions options, float[]? raysPerPixel)
     {
         var loop = RowLoop.Start(options, image.Height);
         var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, sampler.Quincunx, sampler.Guard, options);
@@ -88,7 +88,7 @@ internal static class AdaptiveRenderer
     }
 
     /// <summary>The adaptive rows, each thread with its lattice <see cref="AdaptiveLattice.Source"/>.</summary>
-    private sealed class Rows(AdaptiveLattice lattice, AdaptiveSampler sampler, IPixelRows image, float[]? raysPerPixel) : IRowRenderer<AdaptiveLattice.Source>
+    private sealed class Rows(AdaptiveLattice lattice, AdaptiveSampler sampler, PixelTarget image, float[]? raysPerPixel) : IRowRenderer<AdaptiveLattice.Source>
     {
         private readonly bool _flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
 
@@ -106,7 +106,7 @@ internal static class AdaptiveRenderer
 
         public void RenderRow(int row, ref AdaptiveLattice.Source source)
         {
-            Span<Rgb24> pixels = image.GetRowSpan(row);
+            TargetRow pixels = image.Row(row);
             source.BeginRow(row);
             Span<float> counts = raysPerPixel is null ? default : raysPerPixel.AsSpan((int)((long)row * pixels.Length), pixels.Length);
             var guard = new GuardState(lattice.Guard, lattice.Size, lattice.Guard is null ? default : source.GuardBlocks(row / GuardBlock, (pixels.Length / GuardBlock) + 1));
@@ -132,7 +132,7 @@ internal static class AdaptiveRenderer
                     value = AdaptivePixel.Evaluate(sampler, ref source, x, row, out samples);
                 }
 
-                pixels[x] = Rgb24.FromIntensity(value);
+                pixels.Set(x, value);
                 if (!counts.IsEmpty)
                 {
                     counts[x] = (float)samples;
@@ -147,7 +147,7 @@ internal static class AdaptiveRenderer
         /// pixels from x that hit what corner x hit ends where either corner line first hits something else; the
         /// pixel after the run is not flat. Writes the run (up to where the guard stops it); returns its length.
         /// </summary>
-        private int FlatRun(in AdaptiveLattice.Source source, Span<Rgb24> pixels, Span<float> counts, int x, int row, ref GuardState guard)
+        private int FlatRun(in AdaptiveLattice.Source source, TargetRow pixels, Span<float> counts, int x, int row, ref GuardState guard)
         {
             ReadOnlySpan<int> top = source.TopCorners, bottom = source.BottomCorners;
             int id = top[x];
@@ -158,21 +158,21 @@ internal static class AdaptiveRenderer
             }
 
             return guard.Guard is null
-                ? Fill(pixels.Slice(x, run), counts.IsEmpty ? default : counts.Slice(x, run), lattice.Level(id))
-                : FillGuarded(ref guard, pixels, counts, x, run, row, lattice.Level(id));
+                ? Fill(pixels, counts.IsEmpty ? default : counts.Slice(x, run), x, run, lattice.Colour(id), lattice.Level(id))
+                : FillGuarded(ref guard, pixels, counts, x, run, row, lattice.Colour(id), lattice.Level(id));
         }
 
         /// <summary>
         /// With a minimum depth: the run of pixels from x whose band points all hit one thing is refined no further;
         /// the pixel after the run is not uniform. Writes the run; returns its length.
         /// </summary>
-        private int UniformRun(in AdaptiveLattice.Source source, Span<Rgb24> pixels, Span<float> counts, int x, int row)
+        private int UniformRun(in AdaptiveLattice.Source source, TargetRow pixels, Span<float> counts, int x, int row)
         {
             int run = source.UniformRun(x, out int id);
             if (run > 0)
             {
                 source.Uniform(sampler, id, x, row, out Intensity uniform, out double charged);
-                pixels.Slice(x, run).Fill(Rgb24.FromIntensity(uniform));
+                pixels.Fill(x, run, uniform);
                 if (!counts.IsEmpty)
                 {
                     counts.Slice(x, run).Fill((float)charged);

@@ -29,153 +29,87 @@ namespace RayLab.Rendering.Exact;
 /// because it integrates rather than samples (it still traces one ray per piece to find its colour).</para>
 /// <para><b>Not supported.</b> With the perspective camera, a sphere that visible rays can reach must lie
 /// wholly in front of the eye (nearest point at a depth above 1e-4 of its radius): otherwise its outline is a
-/// parabola or a hyperbola, and <see cref="Render"/> throws an <see cref="UnsupportedSceneException"/> naming
+/// parabola or a hyperbola, and a render throws an <see cref="UnsupportedSceneException"/> naming
 /// the sphere rather than draw a wrong picture. The same happens at a zoom so extreme (pixels some 1e-10 of the
 /// distance to the sphere) that double rounding alone could move its picture by more than 1e-6 of a pixel.
 /// Spheres that cannot be seen (beyond the far plane, nearer than the near plane, outside the view pyramid) are
 /// simply left out, and the near and far planes cutting spheres are handled exactly for both cameras.</para>
+/// <para>It is reached through <see cref="Renderer"/> with <see cref="RenderMethod.Exact"/>, like every other method, and
+/// writes 8-bit rows or linear intensities through the same <see cref="PixelTarget"/>.</para>
 /// </remarks>
-public sealed class ExactRenderer
+internal static class ExactRenderer
 {
-    private readonly int _threads = -1;
-
-    /// <summary>The most threads to use; −1 (the default) means as many as the runtime likes.</summary>
-    /// <exception cref="ArgumentOutOfRangeException">The value is 0 or less than −1.</exception>
-    public int MaxDegreeOfParallelism
-    {
-        get => _threads;
-        init => _threads = ThreadCount.Check(value);
-    }
-
-    /// <summary>Optional: counts finished rows while a render runs, for a progress bar polled from another thread.</summary>
-    public RenderProgress? Progress { get; init; }
-
-    /// <summary>Cancels a render: checked before each row; a cancelled render throws <see cref="OperationCanceledException"/>.</summary>
-    public CancellationToken CancellationToken { get; init; }
-
-    private RenderOptions Options => new(MaxDegreeOfParallelism, RenderKernel.Scalar, Progress, CancellationToken);
-
     /// <summary>
-    /// Fills the 8-bit image with the exact pixel values, each converted by the lab's rule
-    /// (<see cref="Rgb24.FromIntensity"/>). The bytes do not depend on the thread count.
+    /// The exact render into <paramref name="target"/>: each row's exact values, 8-bit by the lab's rule
+    /// (<see cref="Rgb24.FromIntensity"/>) or linear. The bytes do not depend on the thread count.
     /// </summary>
     /// <param name="scene">The scene.</param>
-    /// <param name="camera">The camera.</param>
-    /// <param name="image">The image to fill; its size sets the camera's window.</param>
+    /// <param name="plane">The camera's image plane.</param>
+    /// <param name="target">Where the rows go.</param>
+    /// <param name="options">Threads, progress, cancellation and the rows to render.</param>
+    /// <param name="sweep">
+    /// The row sweep on (the renderer's way), or off: every strip of every row cut afresh, for tests that the sweep
+    /// changes nothing.
+    /// </param>
     /// <returns>Render time; <see cref="RenderStatistics.PrimaryRays"/> is 0 (nothing is sampled).</returns>
     /// <exception cref="UnsupportedSceneException">A sphere the exact reference cannot outline (see the remarks).</exception>
-    /// <exception cref="ArgumentException">The camera's settings do not form a valid view.</exception>
-    public RenderStatistics Render(Scene scene, Camera camera, Image image)
+    public static RenderStatistics Render(Scene scene, ImagePlane plane, PixelTarget target, RenderOptions options, bool sweep = true)
     {
-        ArgumentNullException.ThrowIfNull(scene);
-        ArgumentNullException.ThrowIfNull(camera);
-        ArgumentNullException.ThrowIfNull(image);
-        return RenderPlane(scene, camera.GetImagePlane(image.Width, image.Height), image, Options);
+        var loop = RowLoop.Start(options, plane.Height);
+        OutlineSet outlines = OutlineSet.Build(scene, plane, parallel: options.Parallel);
+        loop.Run(new Rows(scene, plane, outlines, sweep, target));
+        return loop.Finish(0, RenderKernel.Scalar);
     }
 
-    /// <summary>The exact render into an 8-bit image, for <see cref="RenderMethod.Exact"/>.</summary>
-    internal static RenderStatistics RenderPlane(Scene scene, ImagePlane plane, IPixelRows image, RenderOptions options) =>
-        Run(scene, plane, options, sweep: true, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (row, worker) =>
+    /// <summary>
+    /// The exact linear values of the rows <paramref name="options"/> names (all, or a band), W per row, the band's
+    /// first row first.
+    /// </summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="plane">The camera's image plane.</param>
+    /// <param name="options">Threads, progress, cancellation and the rows to render.</param>
+    /// <param name="sweep">The row sweep on, or off (see <see cref="Render"/>).</param>
+    /// <returns>The rows' values.</returns>
+    /// <exception cref="UnsupportedSceneException">A sphere the exact reference cannot outline (see the remarks).</exception>
+    public static unsafe Intensity[] RenderLinear(Scene scene, ImagePlane plane, RenderOptions options, bool sweep = true)
+    {
+        (int first, int end) = options.Rows(plane.Height);
+        var values = new Intensity[(long)plane.Width * Math.Max(0, end - first)];
+        fixed (Intensity* pixels = values)
         {
-            Span<Rgb24> pixels = image.GetRowSpan(row);
+            Render(scene, plane, PixelTarget.Linear(pixels, plane.Width, plane.Height, first), options, sweep);
+        }
+
+        return values;
+    }
+
+    /// <summary>Throws what a render would throw for <paramref name="scene"/> seen through <paramref name="plane"/>, without making the outlines.</summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="plane">The camera's image plane.</param>
+    /// <exception cref="UnsupportedSceneException">A sphere the exact reference cannot outline.</exception>
+    public static void Check(Scene scene, ImagePlane plane) => OutlineSet.Check(scene, plane);
+
+    /// <summary>The exact rows: each thread integrates rows with its own <see cref="ExactRow"/>, then writes them.</summary>
+    private sealed class Rows(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep, PixelTarget target) : IRowRenderer<ExactRow>
+    {
+        public ExactRow Rent() => new(scene, plane, outlines, sweep);
+
+        [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+        public void RenderRow(int row, ref ExactRow worker)
+        {
+            worker.Integrate(row);
+            TargetRow pixels = target.Row(row);
             if (worker.IsUniform)
             {
-                pixels.Fill(Rgb24.FromIntensity(worker.UniformColor));
+                pixels.Fill(0, pixels.Length, worker.UniformColor);
                 return;
             }
 
             double[] values = worker.Values;
             for (int x = 0; x < pixels.Length; x++)
             {
-                pixels[x] = Rgb24.FromIntensity(new Intensity(values[3 * x], values[(3 * x) + 1], values[(3 * x) + 2]));
+                pixels.Set(x, new Intensity(values[3 * x], values[(3 * x) + 1], values[(3 * x) + 2]));
             }
-        });
-
-    /// <summary>
-    /// The exact linear pixel values (before the 8-bit rule), row 0 (the top) first, W·H entries: for measuring
-    /// other renderers' error below one 8-bit level.
-    /// </summary>
-    /// <param name="scene">The scene.</param>
-    /// <param name="camera">The camera.</param>
-    /// <param name="width">The image width W, ≥ 1.</param>
-    /// <param name="height">The image height H, ≥ 1.</param>
-    /// <returns>W·H intensities.</returns>
-    /// <exception cref="UnsupportedSceneException">A sphere the exact reference cannot outline (see the remarks).</exception>
-    /// <exception cref="ArgumentException">The size is not positive or the camera's settings do not form a valid view.</exception>
-    public Intensity[] RenderLinear(Scene scene, Camera camera, int width, int height)
-    {
-        ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
-        ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
-        ArgumentNullException.ThrowIfNull(scene);
-        ArgumentNullException.ThrowIfNull(camera);
-        return RenderLinear(scene, camera, width, height, sweep: true);
-    }
-
-    /// <summary>
-    /// <see cref="RenderLinear(Scene, Camera, int, int)"/> with the row sweep on, or off (every strip of every row
-    /// cut afresh, as the row does without the sweep): for tests that the sweep changes nothing.
-    /// </summary>
-    internal Intensity[] RenderLinear(Scene scene, Camera camera, int width, int height, bool sweep)
-    {
-        var result = new Intensity[(long)width * height];
-        Run(scene, camera.GetImagePlane(width, height), Options, sweep, (row, worker) =>
-        {
-            Span<Intensity> pixels = result.AsSpan(row * width, width);
-            if (worker.IsUniform)
-            {
-                pixels.Fill(worker.UniformColor);
-                return;
-            }
-
-            double[] values = worker.Values;
-            for (int x = 0; x < width; x++)
-            {
-                pixels[x] = new Intensity(values[3 * x], values[(3 * x) + 1], values[(3 * x) + 2]);
-            }
-        });
-        return result;
-    }
-
-    /// <summary>
-    /// Checks that the exact reference can draw <paramref name="scene"/> through <paramref name="camera"/> at this
-    /// size, without drawing it (what <see cref="Render"/> would throw, it throws).
-    /// </summary>
-    /// <param name="scene">The scene.</param>
-    /// <param name="camera">The camera.</param>
-    /// <param name="width">The image width.</param>
-    /// <param name="height">The image height.</param>
-    /// <exception cref="UnsupportedSceneException">A sphere the exact reference cannot outline.</exception>
-    /// <exception cref="ArgumentException">The camera's settings do not form a valid view.</exception>
-    public static void Check(Scene scene, Camera camera, int width, int height)
-    {
-        ArgumentNullException.ThrowIfNull(scene);
-        ArgumentNullException.ThrowIfNull(camera);
-        Check(scene, camera.GetImagePlane(width, height));
-    }
-
-    /// <summary>Throws what <see cref="Render"/> would throw for <paramref name="scene"/> seen through <paramref name="plane"/>, without making the outlines.</summary>
-    /// <param name="scene">The scene.</param>
-    /// <param name="plane">The camera's image plane.</param>
-    /// <exception cref="UnsupportedSceneException">A sphere the exact reference cannot outline.</exception>
-    internal static void Check(Scene scene, ImagePlane plane) => OutlineSet.Check(scene, plane);
-
-    private static RenderStatistics Run(Scene scene, ImagePlane plane, RenderOptions options, bool sweep, Action<int, ExactRow> writeRow)
-    {
-        var loop = RowLoop.Start(options, plane.Height);
-        OutlineSet outlines = OutlineSet.Build(scene, plane, parallel: options.Parallel);
-        loop.Run(new Rows(scene, plane, outlines, sweep, writeRow));
-        return loop.Finish(0, RenderKernel.Scalar);
-    }
-
-    /// <summary>The exact rows: each thread integrates rows with its own <see cref="ExactRow"/>, then writes them.</summary>
-    private sealed class Rows(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep, Action<int, ExactRow> writeRow) : IRowRenderer<ExactRow>
-    {
-        public ExactRow Rent() => new(scene, plane, outlines, sweep);
-
-        public void RenderRow(int row, ref ExactRow worker)
-        {
-            worker.Integrate(row);
-            writeRow(row, worker);
         }
     }
 }

@@ -1,7 +1,5 @@
-using System.Numerics;
 using RayLab.Sampling;
 using RayLab.Cameras;
-using RayLab.Rendering.Adaptive;
 using RayLab.Rendering.Exact;
 
 namespace RayLab.Rendering.Inspection;
@@ -25,7 +23,7 @@ public sealed record AdaptiveSquare(double X, double Y, double Size, int Depth, 
 /// <summary>
 /// The lab's adaptive antialiasing diagram (section 4.1.4) for one pixel of a real scene: the squares the recursion
 /// made, each traced point labelled in trace order, the weight the combination rule gives it, and the pixel's value
-/// against its exact area-weighted colour. It runs the renderer's own recursion (<see cref="AdaptiveSampler"/>).
+/// against its exact area-weighted colour. It runs the renderer's own recursion (<see cref="AdaptiveSampler"/>), traced as <see cref="Renderer.TracePixel"/> traces it (<see cref="AdaptiveTrace"/>).
 /// </summary>
 public sealed class AdaptiveDiagram
 {
@@ -58,7 +56,7 @@ public sealed class AdaptiveDiagram
     /// <summary>The pixel's value by the lab's rule: Σ weight × value.</summary>
     public Intensity Value { get; }
 
-    /// <summary>The pixel's exact area-weighted colour (<see cref="ExactRenderer"/>).</summary>
+    /// <summary>The pixel's exact area-weighted colour (<see cref="RenderMethod.Exact"/>).</summary>
     public Intensity Exact { get; }
 
     /// <summary>The scene inside this diagram's pixel, traced at <paramref name="resolution"/>² points (cell centres): the diagram's background.</summary>
@@ -108,7 +106,9 @@ public sealed class AdaptiveDiagram
         ArgumentOutOfRangeException.ThrowIfNegative(py);
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(py, height);
         ImagePlane plane = camera.GetImagePlane(width, height);
-        Intensity exact = new ExactRenderer { MaxDegreeOfParallelism = 1 }.RenderLinear(scene, camera, width, height)[((long)py * width) + px];
+        // The pixel's row alone: a row's exact values do not depend on the rows rendered with it.
+        var row = new RenderOptions(1, RenderKernel.Scalar, null, default) { FirstRow = py, EndRow = py + 1 };
+        Intensity exact = ExactRenderer.RenderLinear(scene, plane, row)[px];
         return Build(scene, plane, sampler, px, py, exact);
     }
 
@@ -132,7 +132,7 @@ public sealed class AdaptiveDiagram
         ArgumentNullException.ThrowIfNull(camera);
         ArgumentNullException.ThrowIfNull(sampler);
         ImagePlane plane = camera.GetImagePlane(width, height);
-        Intensity[] exact = new ExactRenderer { MaxDegreeOfParallelism = 1 }.RenderLinear(scene, camera, width, height);
+        Intensity[] exact = ExactRenderer.RenderLinear(scene, plane, new RenderOptions(1, RenderKernel.Scalar, null, default));
         var colours = Enumerable.Range(-1, scene.Spheres.Count + 1).Select(scene.ColourOf).ToHashSet();
         AdaptiveDiagram? best = null;
         for (int i = 0; i < exact.Length; i++)
@@ -162,57 +162,17 @@ public sealed class AdaptiveDiagram
 
     private static AdaptiveDiagram Build(Scene scene, ImagePlane plane, AdaptiveSampler sampler, int px, int py, Intensity exact)
     {
-        var source = new Recorder(scene, plane, sampler);
-        AdaptivePixel.Evaluate(sampler, ref source, px, py, out _);
-        long size = source.Size, x0 = px * size, y0 = py * size;
-
-        // A square was refined exactly when its centre was traced; each point's weight is the renderer's
-        // combination rule applied to the points themselves.
-        var squares = new List<AdaptiveSquare>();
-        PointWeights weights;
-        if (source.Centres.Contains((x0 + (size / 2), y0 + (size / 2))))
-        {
-            weights = Square(x0, y0, size, 0);
-        }
-        else
-        {
-            squares.Add(new AdaptiveSquare(0, 0, 1, 0, false));
-            weights = CombinationRule.Mean(
-                PointWeights.Of(x0, y0), PointWeights.Of(x0 + size, y0), PointWeights.Of(x0, y0 + size), PointWeights.Of(x0 + size, y0 + size));
-        }
-
-        PointWeights Square(long sx, long sy, long side, int depth)
-        {
-            squares.Add(new AdaptiveSquare((sx - x0) / (double)size, (sy - y0) / (double)size, side / (double)size, depth, true));
-            long h = side / 2, q = side / 4;
-            PointWeights centre = PointWeights.Of(sx + h, sy + h);
-            return CombinationRule.Mean(
-                Quadrant(sx, sy, sx, sy), Quadrant(sx + h, sy, sx + side, sy), Quadrant(sx, sy + h, sx, sy + side), Quadrant(sx + h, sy + h, sx + side, sy + side));
-
-            // The quadrant at (qx, qy) whose corner (cx, cy) is a corner of the square.
-            PointWeights Quadrant(long qx, long qy, long cx, long cy)
-            {
-                if (q > 0 && source.Centres.Contains((qx + q, qy + q)))
-                {
-                    return Square(qx, qy, h, depth + 1);
-                }
-
-                squares.Add(new AdaptiveSquare((qx - x0) / (double)size, (qy - y0) / (double)size, h / (double)size, depth + 1, false));
-                return CombinationRule.Quadrant(PointWeights.Of(cx, cy), centre);
-            }
-        }
-
-        var points = new List<AdaptivePoint>(source.Order.Count);
+        AdaptiveTrace trace = AdaptiveTrace.Run(scene, plane, sampler, px, py);
+        var points = new List<AdaptivePoint>(trace.Points.Count);
         Intensity value = default;
-        for (int i = 0; i < source.Order.Count; i++)
+        for (int i = 0; i < trace.Points.Count; i++)
         {
-            ((long lx, long ly), Intensity v) = source.Order[i];
-            double w = weights.WeightOf((lx, ly));
-            value += w * v;
-            points.Add(new AdaptivePoint(Label(i), (lx - x0) / (double)size, (ly - y0) / (double)size, v, w));
+            TracedPoint p = trace.Points[i];
+            value += p.Weight * p.Value;
+            points.Add(new AdaptivePoint(Label(i), p.X, p.Y, p.Value, p.Weight));
         }
 
-        return new AdaptiveDiagram(px, py, sampler, points, squares, value, exact);
+        return new AdaptiveDiagram(px, py, sampler, points, trace.Squares, value, exact);
     }
 
     /// <summary>The lab's labels: A … Z without I and O, then AA, AB, ….</summary>
@@ -222,64 +182,5 @@ public sealed class AdaptiveDiagram
         ArgumentOutOfRangeException.ThrowIfNegative(index);
         const string Letters = "ABCDEFGHJKLMNPQRSTUVWXYZ";
         return index < Letters.Length ? Letters[index].ToString() : Label((index / Letters.Length) - 1) + Letters[index % Letters.Length];
-    }
-
-    // Each lattice point's share of the pixel's value: the combination rule's arithmetic on weights instead of intensities.
-    private readonly struct PointWeights(Dictionary<(long, long), double> shares)
-        : IAdditionOperators<PointWeights, PointWeights, PointWeights>, IMultiplyOperators<PointWeights, double, PointWeights>
-    {
-        public static PointWeights Of(long lx, long ly) => new(new() { [(lx, ly)] = 1 });
-
-        public static PointWeights operator +(PointWeights a, PointWeights b)
-        {
-            var sum = new Dictionary<(long, long), double>(a.Shares);
-            foreach (((long, long) point, double share) in b.Shares)
-            {
-                sum[point] = sum.GetValueOrDefault(point) + share;
-            }
-
-            return new PointWeights(sum);
-        }
-
-        public static PointWeights operator *(PointWeights a, double s) => new(a.Shares.ToDictionary(p => p.Key, p => p.Value * s));
-
-        private Dictionary<(long, long), double> Shares => shares;
-
-        public double WeightOf((long, long) point) => Shares.GetValueOrDefault(point);
-    }
-
-    // Traces lattice points straight through the camera, each once, and remembers the order.
-    private struct Recorder(Scene scene, ImagePlane plane, AdaptiveSampler sampler) : ILatticeSource
-    {
-        public readonly long Size = 1L << (sampler.MaxDepth + 1);
-        private readonly SilhouetteGuard? _guard = sampler.Guard ? new SilhouetteGuard(scene, plane, 1L << (sampler.MaxDepth + 1)) : null;
-        public readonly List<((long X, long Y) Point, Intensity Value)> Order = [];
-        public readonly HashSet<(long, long)> Centres = [];
-        private readonly Dictionary<(long, long), Intensity> _seen = [];
-
-        public readonly Intensity At(long lx, long ly, out double weight)
-        {
-            weight = 1;
-            if (!_seen.TryGetValue((lx, ly), out Intensity value))
-            {
-                value = Shoot(lx, ly);
-                _seen.Add((lx, ly), value);
-                Order.Add(((lx, ly), value));
-            }
-
-            return value;
-        }
-
-        public readonly bool MayCross(long x0, long y0, long size) => _guard?.MayCross(x0, y0, size) ?? false;
-
-        public readonly Intensity Centre(long lx, long ly)
-        {
-            Centres.Add((lx, ly));
-            return At(lx, ly, out _);
-        }
-
-        private readonly Intensity Shoot(long lx, long ly) => plane.Trace(
-            scene,
-            plane.GetRay(WindowMapping.Alpha(lx, plane.Width * (double)Size), WindowMapping.Beta(ly, plane.Height * (double)Size)));
     }
 }

@@ -2,7 +2,6 @@ using RayLab.Cameras;
 using RayLab.Rendering.Packets;
 using RayLab.Rendering.Point.Packets;
 using RayLab.Sampling;
-using RayLab.Sampling.Lanes;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Point;
@@ -17,7 +16,7 @@ namespace RayLab.Rendering.Point;
 internal static class PointRenderer
 {
     /// <summary>Renders the scene with <paramref name="sampler"/> into <paramref name="image"/>.</summary>
-    public static RenderStatistics Render(Scene scene, ImagePlane plane, IPixelSampler sampler, IPixelRows image, RenderOptions options)
+    public static RenderStatistics Render(Scene scene, ImagePlane plane, IPixelSampler sampler, PixelTarget image, RenderOptions options)
     {
         (int first, int end) = options.Rows(image.Height);
         long rays = (long)image.Width * (end - first) * sampler.SamplesPerPixel;
@@ -33,40 +32,33 @@ internal static class PointRenderer
         return loop.Finish(rays, kernel, retraced, reason);
     }
 
-    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, IPixelRows image, RowLoop loop)
+    private static long RenderScalar(Scene scene, ImagePlane plane, IPixelSampler sampler, PixelTarget image, RowLoop loop)
     {
         var rows = new ScalarLoop(scene, sampler, image, loop);
         return plane.Dispatch<ScalarLoop, long>(ref rows);
     }
 
-    private static long RenderScalar<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, IPixelRows image, RowLoop loop)
+    private static long RenderScalar<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, PixelTarget image, RowLoop loop)
         where TP : struct, IProjection
     {
         loop.Run(new ScalarRows<TP>(scene, plane, sampler, image));
         return 0;
     }
 
-    private static long RenderPackets<TL>(ImagePlane plane, PacketFrame frame, IPixelSampler sampler, IPixelRows image, RowLoop loop)
-        where TL : struct, ILanes<TL> => sampler switch
-        {
-            JitteredSampler jittered => RenderPackets<TL, JitteredLanes<TL>>(plane, frame, () => new(jittered), sampler.SamplesPerPixel, image, loop),
-            RandomSampler random => RenderPackets<TL, RandomLanes<TL>>(plane, frame, () => new(random), sampler.SamplesPerPixel, image, loop),
-            RegularSampler regular => RenderPackets<TL, RegularLanes<TL>>(plane, frame, () => new(regular), sampler.SamplesPerPixel, image, loop),
-            SobolSampler sobol => RenderPackets<TL, SobolLanes<TL>>(plane, frame, () => new(sobol), sampler.SamplesPerPixel, image, loop),
-            ZSobolSampler zsobol => RenderPackets<TL, ZSobolLanes<TL>>(plane, frame, () => new(zsobol), sampler.SamplesPerPixel, image, loop),
-            Pmj02Sampler pmj02 => RenderPackets<TL, Pmj02Lanes<TL>>(plane, frame, () => new(pmj02), sampler.SamplesPerPixel, image, loop),
-            Pmj02BNSampler pmj02bn => RenderPackets<TL, Pmj02Lanes<TL>>(plane, frame, () => new(pmj02bn), sampler.SamplesPerPixel, image, loop),
-            HammersleySampler hammersley => RenderPackets<TL, HammersleyLanes<TL>>(plane, frame, () => new(hammersley), sampler.SamplesPerPixel, image, loop),
-            CorrelatedMultiJitteredSampler cmj when cmj.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, CorrelatedMultiJitteredLanes<TL>>(plane, frame, () => new(cmj), sampler.SamplesPerPixel, image, loop),
-            MultiJitteredSampler multiJittered when multiJittered.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, MultiJitteredLanes<TL>>(plane, frame, () => new(multiJittered), sampler.SamplesPerPixel, image, loop),
-            NRooksSampler nrooks when nrooks.SamplesPerPixel <= PatternLimits.MaxSamples =>
-                RenderPackets<TL, NRooksLanes<TL>>(plane, frame, () => new(nrooks), sampler.SamplesPerPixel, image, loop),
-            _ => RenderPackets<TL, BufferedLanes<TL>>(plane, frame, () => new(sampler), sampler.SamplesPerPixel, image, loop),
-        };
+    /// <summary>
+    /// The packet kernel with the sampler's own lane form (<see cref="ILaneSampled"/>), or, for a sampler without one,
+    /// the buffered lanes that ask it for each pixel's points.
+    /// </summary>
+    private static long RenderPackets<TL>(ImagePlane plane, PacketFrame frame, IPixelSampler sampler, PixelTarget image, RowLoop loop)
+        where TL : struct, ILanes<TL>
+    {
+        var packets = new PacketStart<TL>(plane, frame, sampler.SamplesPerPixel, image, loop);
+        return sampler is ILaneSampled sampled
+            ? sampled.WithLanes<TL, PacketStart<TL>, long>(ref packets)
+            : packets.Run(() => new BufferedLanes<TL>(sampler));
+    }
 
-    private static long RenderPackets<TL, TS>(ImagePlane plane, PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, IPixelRows image, RowLoop loop)
+    private static long RenderPackets<TL, TS>(ImagePlane plane, PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, PixelTarget image, RowLoop loop)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
     {
@@ -74,29 +66,29 @@ internal static class PointRenderer
         return plane.Dispatch<PacketLoop<TL, TS>, long>(ref rows);
     }
 
-    private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, IPixelRows image, RowLoop loop)
+    private static long RenderPackets<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, PixelTarget image, RowLoop loop)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
         where TP : struct, IProjection => loop.Run(new PacketRows<TL, TS, TP>(frame, newSampler, samplesPerPixel, image)).Retraced;
 
     /// <summary>The scalar double loop's rows: each pixel the mean of its samples.</summary>
-    private sealed class ScalarRows<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, IPixelRows image) : IRowRenderer<NoScratch>
+    private sealed class ScalarRows<TP>(Scene scene, ImagePlane plane, IPixelSampler sampler, PixelTarget image) : IRowRenderer<NoScratch>
         where TP : struct, IProjection
     {
         public NoScratch Rent() => default;
 
         public void RenderRow(int row, ref NoScratch scratch)
         {
-            Span<Rgb24> pixels = image.GetRowSpan(row);
+            TargetRow pixels = image.Row(row);
             for (int x = 0; x < pixels.Length; x++)
             {
-                pixels[x] = Rgb24.FromIntensity(RenderPixel<TP>(scene, plane, sampler, x, row));
+                pixels.Set(x, RenderPixel<TP>(scene, plane, sampler, x, row));
             }
         }
     }
 
     /// <summary>The packet kernel's rows; each thread has its own lane sampler (the buffered one owns arrays).</summary>
-    private sealed class PacketRows<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, IPixelRows image) : IRowRenderer<PacketRows<TL, TS, TP>.Scratch>
+    private sealed class PacketRows<TL, TS, TP>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, PixelTarget image) : IRowRenderer<PacketRows<TL, TS, TP>.Scratch>
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
         where TP : struct, IProjection
@@ -104,7 +96,7 @@ internal static class PointRenderer
         public Scratch Rent() => new() { Sampler = newSampler() };
 
         public void RenderRow(int row, ref Scratch scratch) =>
-            scratch.Retraced += PacketKernel.RenderRow<TL, TS, TP>(frame, ref scratch.Sampler, samplesPerPixel, row, image.GetRowSpan(row));
+            scratch.Retraced += PacketKernel.RenderRow<TL, TS, TP>(frame, ref scratch.Sampler, samplesPerPixel, row, image.Row(row));
 
         public void Return(Scratch scratch, ref RowTotals totals) => totals.Retraced += scratch.Retraced;
 
@@ -144,14 +136,22 @@ internal static class PointRenderer
     }
 
     /// <summary>The scalar loop over the image's rows, compiled for the plane's projection.</summary>
-    private readonly struct ScalarLoop(Scene scene, IPixelSampler sampler, IPixelRows image, RowLoop loop) : IProjectionAction<long>
+    private readonly struct ScalarLoop(Scene scene, IPixelSampler sampler, PixelTarget image, RowLoop loop) : IProjectionAction<long>
     {
         public long Run<TP>(ImagePlane<TP> plane)
             where TP : struct, IProjection => RenderScalar<TP>(scene, plane, sampler, image, loop);
     }
 
+    /// <summary>The packet loop, started with the lane sampler the sampler hands it.</summary>
+    private readonly struct PacketStart<TL>(ImagePlane plane, PacketFrame frame, int samplesPerPixel, PixelTarget image, RowLoop loop) : ILaneSamplerUser<TL, long>
+        where TL : struct, ILanes<TL>
+    {
+        public long Run<TS>(Func<TS> create)
+            where TS : struct, ILaneSampler<TL> => RenderPackets<TL, TS>(plane, frame, create, samplesPerPixel, image, loop);
+    }
+
     /// <summary>The packet loop over the image's rows, compiled for the plane's projection.</summary>
-    private readonly struct PacketLoop<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, IPixelRows image, RowLoop loop) : IProjectionAction<long>
+    private readonly struct PacketLoop<TL, TS>(PacketFrame frame, Func<TS> newSampler, int samplesPerPixel, PixelTarget image, RowLoop loop) : IProjectionAction<long>
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
     {

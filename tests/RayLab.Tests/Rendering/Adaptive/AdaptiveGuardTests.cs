@@ -1,6 +1,5 @@
 using RayLab.Sampling;
 using RayLab.Cameras;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering.Adaptive;
 
@@ -40,7 +39,7 @@ public class AdaptiveGuardTests
     private static Image Exact(Scene scene, Camera camera, int w, int h)
     {
         var image = new Image(w, h);
-        new ExactRenderer().Render(scene, camera, image);
+        new Renderer().Render(scene, camera, RenderMethod.Exact, image);
         return image;
     }
 

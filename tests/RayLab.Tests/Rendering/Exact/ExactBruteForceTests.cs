@@ -1,6 +1,5 @@
 using RayLab.Cameras;
 using RayLab.Sampling;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering.Exact;
 
@@ -37,18 +36,19 @@ public class ExactBruteForceTests
         const int n = 64;
         ImagePlane plane = camera.GetImagePlane(w, h);
 
-        Intensity[] exact = new ExactRenderer().RenderLinear(scene, camera, w, h);
+        Intensity[] exact = ExactLinear.Of(scene, camera, w, h);
         int[] touched = GridErrorBound.TouchedCells(scene, plane, n);
         Intensity spread = GridErrorBound.LargestColourDifference(scene);
 
-        var sampler = new RegularSampler(n * n);
+        var grids = new Intensity[w * h];
+        new Renderer { Kernel = RenderKernel.Scalar }.Render(scene, camera, RenderMethod.Sampled(new RegularSampler(n * n)), grids, w, h);
         double worst = 0, worstShare = 0;
         int edges = 0;
         for (int row = 0; row < h; row++)
         {
             for (int x = 0; x < w; x++)
             {
-                Intensity grid = Renderer.RenderPixel(scene, plane, sampler, x, row);
+                Intensity grid = grids[(row * w) + x];
                 Intensity e = exact[(row * w) + x];
                 double cells = touched[(row * w) + x] / (double)(n * n);
                 edges += cells > 0 ? 1 : 0;

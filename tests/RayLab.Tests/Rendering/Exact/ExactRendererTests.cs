@@ -1,5 +1,5 @@
 using RayLab.Cameras;
-using RayLab.Rendering.Exact;
+using RayLab.Sampling;
 
 namespace RayLab.Tests.Rendering.Exact;
 
@@ -44,7 +44,7 @@ public class ExactRendererTests
         double pixel = 2.0 / H; // the window [−W/H, W/H] × [−1, 1] with square pixels, or taller ones
         OrthoCamera camera = Ortho(-W * pixel / 2, aspect, W, H, pixel, aspect * pixel);
 
-        Intensity[] values = new ExactRenderer().RenderLinear(White((new Double3(cx, cy, 0), r)), camera, W, H);
+        Intensity[] values = ExactLinear.Of(White((new Double3(cx, cy, 0), r)), camera, W, H);
 
         double area = values.Sum(v => v.R);
         double expected = Math.PI * r * r / (pixel * pixel * aspect); // in pixels
@@ -72,7 +72,7 @@ public class ExactRendererTests
         Assert.Equal(pixel, plane.Window.Height / H, 12); // square pixels
         double cx = -plane.Window.U0 / pixel, cy = plane.Window.V1 / pixel, rp = radiusOnWindow / pixel;
 
-        Intensity[] values = new ExactRenderer().RenderLinear(White((centre, r)), camera, W, H);
+        Intensity[] values = ExactLinear.Of(White((centre, r)), camera, W, H);
 
         double worst = 0;
         for (int row = 0; row < H; row++)
@@ -99,7 +99,7 @@ public class ExactRendererTests
         OrthoCamera camera = Ortho(-4, 4, 8, 8, 1, 1, far: 1e7);
         Scene scene = White((new Double3(-0.5 - R, 0.5, -R), R));
 
-        Intensity[] values = new ExactRenderer().RenderLinear(scene, camera, 8, 8);
+        Intensity[] values = ExactLinear.Of(scene, camera, 8, 8);
 
         _output.WriteLine($"cut pixel: coverage − (½ − 1/(24 R)) = {values[(3 * 8) + 3].R - (0.5 - (1 / (24 * R))):E2}");
         Assert.Equal(0.5 - (1 / (24 * R)), values[(3 * 8) + 3].R, 1e-9);
@@ -124,7 +124,7 @@ public class ExactRendererTests
         var centre = new Double3(x, y, -0.5);
         ImagePlane plane = camera.GetImagePlane(W, H);
 
-        Intensity[] values = new ExactRenderer().RenderLinear(White((centre, r)), camera, W, H);
+        Intensity[] values = ExactLinear.Of(White((centre, r)), camera, W, H);
 
         Double3 q = centre - plane.Eye;
         double k = q.LengthSquared - (r * r);
@@ -208,8 +208,8 @@ public class ExactRendererTests
         var image = new Image(W, H);
         var progress = new RenderProgress();
 
-        RenderStatistics stats = new ExactRenderer { Progress = progress }.Render(TwoSpheres(), LabCamera, image);
-        Intensity[] linear = new ExactRenderer().RenderLinear(TwoSpheres(), LabCamera, W, H);
+        RenderStatistics stats = new Renderer { Progress = progress }.Render(TwoSpheres(), LabCamera, RenderMethod.Exact, image);
+        Intensity[] linear = ExactLinear.Of(TwoSpheres(), LabCamera, W, H);
 
         Assert.Equal(0, stats.PrimaryRays);
         Assert.Equal((H, H), (progress.RowsCompleted, progress.TotalRows));
@@ -228,14 +228,13 @@ public class ExactRendererTests
         byte[] Render(int threads)
         {
             var image = new Image(97, 61);
-            new ExactRenderer { MaxDegreeOfParallelism = threads }.Render(TwoSpheres(), LabCamera, image);
+            new Renderer { MaxDegreeOfParallelism = threads }.Render(TwoSpheres(), LabCamera, RenderMethod.Exact, image);
             return image.PixelBytes.ToArray();
         }
 
         byte[] one = Render(1);
         Assert.Equal(one, Render(2));
         Assert.Equal(one, Render(-1));
-        Assert.Throws<ArgumentOutOfRangeException>(() => new ExactRenderer { MaxDegreeOfParallelism = 0 });
     }
 
     [Fact]
@@ -244,13 +243,14 @@ public class ExactRendererTests
         Scene scene = White((new Double3(-1.1, 0, 0), 1), (new Double3(0.3, 0.4, 5.5), 1));
         var camera = new PerspectiveCamera { Position = new Double3(0, 0, 6), Target = Double3.Zero, Fov = 40, NearPlane = 0.1 };
 
-        var e = Assert.Throws<UnsupportedSceneException>(() => new ExactRenderer().RenderLinear(scene, camera, 32, 24));
+        var e = Assert.Throws<UnsupportedSceneException>(() => ExactLinear.Of(scene, camera, 32, 24));
         Assert.IsAssignableFrom<ArgumentException>(e);
         Assert.Equal(1, e.SphereIndex);
         Assert.StartsWith("Sphere 1 reaches behind the perspective camera", e.Message);
         Assert.Contains("depth along the gaze runs from -0.5 to 1.5", e.Reason);
-        Assert.Throws<UnsupportedSceneException>(() => new ExactRenderer().Render(scene, camera, new Image(8, 6)));
-        Assert.Throws<UnsupportedSceneException>(() => ExactRenderer.Check(scene, camera, 8, 6));
+        Assert.Throws<UnsupportedSceneException>(() => new Renderer().Render(scene, camera, RenderMethod.Exact, new Image(8, 6)));
+        Assert.Throws<UnsupportedSceneException>(() => RenderMethod.Exact.Check(scene, camera, 8, 6));
+        RenderMethod.Sampled(new RegularSampler(1)).Check(scene, camera, 8, 6); // only the exact method refuses a scene
     }
 
     [Theory]
@@ -271,9 +271,9 @@ public class ExactRendererTests
             : new OrthoCamera { Position = eye, Target = centre, Up = new Double3(0.1, 1, 0.2), NearPlane = 0, FarPlane = 10 * r / ratio, Window = window };
         Scene scene = White((centre, r));
 
-        Intensity[] values = new ExactRenderer().RenderLinear(scene, Seen(new Window(-1.5 * rho, -1.3 * rho, 1.4 * rho, 1.6 * rho)), 32, 32);
+        Intensity[] values = ExactLinear.Of(scene, Seen(new Window(-1.5 * rho, -1.3 * rho, 1.4 * rho, 1.6 * rho)), 32, 32);
         var e = Assert.Throws<UnsupportedSceneException>(() =>
-            new ExactRenderer().RenderLinear(scene, Seen(new Window(rho * (1 - 1e-8), rho * -1.1e-8, rho * (1 + 1e-8), rho * 0.9e-8)), 32, 32));
+            ExactLinear.Of(scene, Seen(new Window(rho * (1 - 1e-8), rho * -1.1e-8, rho * (1 + 1e-8), rho * 0.9e-8)), 32, 32));
 
         _output.WriteLine($"{type}: coverage − π r² = {values.Sum(v => v.R) - (Math.PI * (32 / 2.9) * (32 / 2.9)):E2} pixels");
         Assert.Equal(Math.PI * (32 / 2.9) * (32 / 2.9), values.Sum(v => v.R), 1e-6);
@@ -288,8 +288,8 @@ public class ExactRendererTests
     {
         Scene with = new([.. TwoSpheres().Spheres, new Sphere(new Double3(x, y, z), 1, Intensity.White)], Background, Intensity.White);
 
-        Intensity[] expected = new ExactRenderer().RenderLinear(TwoSpheres(), LabCamera, 40, 30);
-        Intensity[] actual = new ExactRenderer().RenderLinear(with, LabCamera, 40, 30);
+        Intensity[] expected = ExactLinear.Of(TwoSpheres(), LabCamera, 40, 30);
+        Intensity[] actual = ExactLinear.Of(with, LabCamera, 40, 30);
 
         Assert.Equal(expected, actual);
     }
@@ -306,7 +306,7 @@ public class ExactRendererTests
         OrthoCamera camera = Ortho(-3, 3, W, H, 0.2, 0.2, far: 2.5);
         Scene scene = White((new Double3(0.1, 0.05, 9), 2));
 
-        Intensity[] values = new ExactRenderer().RenderLinear(scene, camera, W, H);
+        Intensity[] values = ExactLinear.Of(scene, camera, W, H);
 
         Assert.Equal(Math.PI * 2.25 / (0.2 * 0.2), values.Sum(v => v.R), 1e-6);
         Assert.Equal(0, values[(15 * W) + 15].R, 1e-12); // the middle: the far wall is beyond the far plane

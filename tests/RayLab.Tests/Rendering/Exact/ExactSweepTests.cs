@@ -1,5 +1,3 @@
-using RayLab.Rendering.Exact;
-
 namespace RayLab.Tests.Rendering.Exact;
 
 /// <summary>
@@ -67,12 +65,11 @@ public class ExactSweepTests
             "random perspective" => Perspective,
             _ => Orthographic,
         };
-        var renderer = new ExactRenderer { MaxDegreeOfParallelism = 2 };
         // 300 random spheres cross every row of a 48×36 picture many times over; at 96×72 the strip-by-strip reference
         // costs four times as much (most of the unit tests' time on 2 cores) for more of the same crossings.
         (int width, int height) = size >= 300 ? (48, 36) : (96, 72);
-        Intensity[] swept = renderer.RenderLinear(scene, camera, width, height, sweep: true);
-        Intensity[] strips = renderer.RenderLinear(scene, camera, width, height, sweep: false);
+        Intensity[] swept = ExactLinear.Of(scene, camera, width, height, threads: 2, sweep: true);
+        Intensity[] strips = ExactLinear.Of(scene, camera, width, height, threads: 2, sweep: false);
 
         double worst = 0;
         int at = -1;

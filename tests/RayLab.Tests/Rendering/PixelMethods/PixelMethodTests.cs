@@ -1,4 +1,3 @@
-using RayLab.Rendering.PixelMethods;
 using RayLab.Sampling;
 
 namespace RayLab.Tests.Rendering.PixelMethods;
@@ -144,8 +143,8 @@ public class PixelMethodTests
         int row = 18, edges = 0;
         for (int x = 0; x < 48; x++)
         {
-            PixelMethodTrace trace = PixelMethodTrace.Trace(TwoSpheres, Camera, 48, 36, new UnevenMethod(), x, row);
-            Assert.Equal((x, row), (trace.PixelX, trace.PixelY));
+            PixelTrace trace = Renderer.TracePixel(TwoSpheres, Camera, 48, 36, RenderMethod.Custom(new UnevenMethod()), x, row);
+            Assert.Equal((x, row), (trace.X, trace.Y));
             Assert.Equal(rays[(row * 48) + x], trace.Points.Count);
             int at = ((row * 48) + x) * 3;
             Assert.Equal(new Rgb24(bytes[at], bytes[at + 1], bytes[at + 2]), Rgb24.FromIntensity(trace.Value));
@@ -163,12 +162,12 @@ public class PixelMethodTests
     }
 
     [Theory]
-    [InlineData(-1, 0, "px")]
-    [InlineData(48, 0, "px")]
-    [InlineData(0, 36, "py")]
+    [InlineData(-1, 0, "x")]
+    [InlineData(48, 0, "x")]
+    [InlineData(0, 36, "y")]
     public void APixelOutsideTheImageIsRejectedNamingIt(int px, int py, string name)
     {
-        var e = Assert.Throws<ArgumentOutOfRangeException>(() => PixelMethodTrace.Trace(TwoSpheres, Camera, 48, 36, new CentreMethod(), px, py));
+        var e = Assert.Throws<ArgumentOutOfRangeException>(() => Renderer.TracePixel(TwoSpheres, Camera, 48, 36, RenderMethod.Custom(new CentreMethod()), px, py));
         Assert.Equal(name, e.ParamName);
     }
 }

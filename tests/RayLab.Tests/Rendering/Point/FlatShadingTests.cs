@@ -1,7 +1,7 @@
 using RayLab.Cameras;
-using RayLab.Rendering.Exact;
 using RayLab.Rendering.Packets;
 using RayLab.Sampling;
+using RayLab.Tests.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering.Point;
 
@@ -115,7 +115,7 @@ public class FlatShadingTests
         ImagePlane plane = cam.GetImagePlane(W, H);
         var adaptive = new Image(W, H);
         new Renderer().Render(scene, cam, new AdaptiveSampler(), adaptive);
-        Intensity[] exact = new ExactRenderer().RenderLinear(scene, cam, W, H);
+        Intensity[] exact = ExactLinear.Of(scene, cam, W, H);
         int[,] corner = new int[W + 1, H + 1];
         for (int j = 0; j <= H; j++)
         {

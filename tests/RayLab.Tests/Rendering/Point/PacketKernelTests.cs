@@ -1,5 +1,4 @@
 using RayLab.Sampling;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering.Point;
 
@@ -188,7 +187,7 @@ public class PacketKernelTests
         Assert.Equal(RenderKernel.Vector512, stats.Kernel);
         stats = new Renderer { Kernel = RenderKernel.Scalar }.Render(TwoSpheres(), Perspective, new AdaptiveSampler(), image);
         Assert.Equal(RenderKernel.Scalar, stats.Kernel);
-        Assert.Equal(RenderKernel.Scalar, new ExactRenderer().Render(TwoSpheres(), Perspective, image).Kernel);
+        Assert.Equal(RenderKernel.Scalar, new Renderer().Render(TwoSpheres(), Perspective, RenderMethod.Exact, image).Kernel);
     }
 
     [Fact]

@@ -3,7 +3,7 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
 using RayLab.Rendering.Packets;
-using RayLab.Sampling.Lanes;
+using RayLab.Sampling;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Point.Packets;
@@ -24,7 +24,7 @@ internal static partial class PacketKernel
     /// that call), so a packet is never summed twice. Returns the samples traced again.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
-    private static int RenderRowThroughHierarchy<TL, TS, TP>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int row, Span<Rgb24> pixels)
+    private static int RenderRowThroughHierarchy<TL, TS, TP>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int row, TargetRow pixels)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
         where TP : struct, ILaneRays
@@ -48,7 +48,7 @@ internal static partial class PacketKernel
 
             ReadOnlySpan<int> leaves = leafBuffer.AsSpan(0, hierarchy.FilterLeaves(x0, lanes, row, spanBuffer.AsSpan(0, spanCount), leafBuffer));
             LaneColour<TL> sum = SumPacketThroughHierarchy<TL, TS, TP>(frame, hierarchy, ref sampler, samplesPerPixel, x0, row, leaves, ref retraced);
-            EightBit.WriteLanes(sum.R, sum.G, sum.B, scale, pixels.Slice(x0, Math.Min(lanes, frame.Width - x0)));
+            pixels.WriteLanes(sum.R, sum.G, sum.B, scale, x0, Math.Min(lanes, frame.Width - x0));
         }
 
         ArrayPool<int>.Shared.Return(spanBuffer);

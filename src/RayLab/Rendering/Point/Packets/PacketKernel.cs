@@ -2,7 +2,7 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using RayLab.Cameras;
 using RayLab.Rendering.Packets;
-using RayLab.Sampling.Lanes;
+using RayLab.Sampling;
 using RayLab.Simd;
 
 namespace RayLab.Rendering.Point.Packets;
@@ -17,7 +17,7 @@ namespace RayLab.Rendering.Point.Packets;
 /// </summary>
 internal static partial class PacketKernel
 {
-    /// <summary>Renders one row of the image into <paramref name="pixels"/>; returns the samples traced again in double.</summary>
+    /// <summary>Renders one row of the image into <paramref name="pixels"/> (8-bit or linear); returns the samples traced again in double.</summary>
     /// <remarks>
     /// Compiled fully optimised at once: a render is often the process's only call, and the first tier's
     /// unoptimised SIMD code would run most of it. Each packet is summed in float first; only a packet with an
@@ -25,7 +25,7 @@ internal static partial class PacketKernel
     /// samples traced in double, so the bytes are those of tracing the uncertain samples in double.
     /// </remarks>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    public static int RenderRow<TL, TS, TP>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int row, Span<Rgb24> pixels)
+    public static int RenderRow<TL, TS, TP>(PacketFrame frame, ref TS sampler, int samplesPerPixel, int row, TargetRow pixels)
         where TL : struct, ILanes<TL>
         where TS : struct, ILaneSampler<TL>
         where TP : struct, ILaneRays
@@ -49,7 +49,7 @@ internal static partial class PacketKernel
             }
 
             // The lab's 8-bit rule of each pixel's mean, sum/n, as sum · (256/n).
-            EightBit.WriteLanes(sum.R, sum.G, sum.B, scale, pixels.Slice(x0, Math.Min(lanes, frame.Width - x0)));
+            pixels.WriteLanes(sum.R, sum.G, sum.B, scale, x0, Math.Min(lanes, frame.Width - x0));
         }
 
         return retraced;

@@ -1,7 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
 using RayLab;
-using RayLab.Rendering.Exact;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
@@ -51,7 +50,7 @@ internal static class Program
         {
             // The exact reference: each pixel's exact area-weighted colour, what every antialiasing method aims at.
             var exact = new Image(width, height);
-            new ExactRenderer().Render(scene, camera, exact);
+            renderer.Render(scene, camera, RenderMethod.Exact, exact);
             exact.Save($"out/two-spheres-{camera.Name}-exact.png");
 
             foreach ((string name, RenderMethod method) in new[] { ("adaptive", adaptive), ("mymethod", mine) })

@@ -1,6 +1,5 @@
 using System.Globalization;
 using RayLab;
-using RayLab.Rendering.Exact;
 using RayLab.Scenes;
 
 namespace MyLab.Tests;
@@ -32,7 +31,7 @@ public class MyMethodTests(ITestOutputHelper output)
     {
         Camera camera = cameraName == "orthographic" ? TwoSpheres.Orthographic : TwoSpheres.Perspective;
         var exact = new Image(File.Width, File.Height);
-        new ExactRenderer().Render(File.Scene, camera, exact);
+        new Renderer().Render(File.Scene, camera, RenderMethod.Exact, exact);
 
         var image = new Image(File.Width, File.Height);
         var limit = new TimeLimit();

@@ -2,7 +2,6 @@ using RayLab;
 using RayLab.Cameras;
 using RayLab.ImageSharp;
 using RayLab.Metrics;
-using RayLab.Rendering.Exact;
 using static MyLab.Tests.Check;
 
 namespace MyLab.Tests;
@@ -17,7 +16,7 @@ internal static class Pictures
     public static Image Exact(Camera camera, int width, int height)
     {
         var exact = new Image(width, height);
-        new ExactRenderer().Render(TwoSpheresFile.Scene, camera, exact);
+        new Renderer().Render(TwoSpheresFile.Scene, camera, RenderMethod.Exact, exact);
         return exact;
     }
 

@@ -2,7 +2,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Simd;
 
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// One of Kensler's permutations (<see cref="Permutation.PermutationElement"/>) per lane: the lane's pattern
@@ -12,7 +12,8 @@ namespace RayLab.Sampling.Lanes;
 internal struct LanePermutation<TL>
     where TL : struct, ILanes<TL>
 {
-    private TL _p, _p16, _p8, _p23, _multiplier, _rotation;
+    private PermutationKey<TL, LaneMath<TL>> _key;
+    private TL _rotation;
 
     /// <summary>Sets the lanes' pattern numbers.</summary>
     /// <param name="patterns">Each lane's pattern number p.</param>
@@ -20,24 +21,18 @@ internal struct LanePermutation<TL>
     /// <param name="scratch">Room for <see cref="ILanes{TSelf}.Count"/> values.</param>
     public void Set(TL patterns, in LaneLength<TL> length, Span<uint> scratch)
     {
-        _p = patterns;
-        _p16 = TL.ShiftRightBits(_p, 16);
-        _p8 = TL.ShiftRightBits(_p, 8);
-        _p23 = TL.ShiftRightBits(_p, 23);
-
-        // The listing multiplies by 1 | (p ≫ 27) and then by Kensler.PermuteMultiplier3; products modulo 2³² associate, so one
-        // multiplier per lane does both.
-        _multiplier = TL.MultiplyBits(TL.ShiftRightBits(_p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(Kensler.PermuteMultiplier3));
+        _key = new PermutationKey<TL, LaneMath<TL>>(patterns);
+        TL p = patterns;
 
         // The final rotation (v + p) mod l, with v < l, is v + (p mod l) less l if that reaches l: p mod l is
         // made here once per pixel, a mask when l is a power of two, else Lemire's multiply-only remainder.
         if (length.IsPowerOfTwo)
         {
-            _rotation = _p & length.Last;
+            _rotation = p & length.Last;
         }
         else
         {
-            _p.Store(MemoryMarshal.Cast<uint, float>(scratch));
+            p.Store(MemoryMarshal.Cast<uint, float>(scratch));
             for (int lane = 0; lane < scratch.Length; lane++)
             {
                 scratch[lane] = length.Remainder(scratch[lane]);
@@ -114,27 +109,9 @@ internal struct LanePermutation<TL>
         return TL.Select(TL.LessThanBits(last, rotated), TL.SubtractBits(rotated, length.Length), rotated);
     }
 
+    /// <summary>One round of the cycle walk, <see cref="PermutationKey{TV, TM}.Round"/>, in every lane.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private readonly TL Round(TL v, TL w)
-    {
-        v = TL.Xor(v, _p);
-        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier1));
-        v = TL.Xor(v, _p16);
-        v = TL.Xor(v, TL.ShiftRightBits(v & w, 4));
-        v = TL.Xor(v, _p8);
-        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier2));
-        v = TL.Xor(v, _p23);
-        v = TL.Xor(v, TL.ShiftRightBits(v & w, 1));
-        v = TL.MultiplyBits(v, _multiplier);
-        v = TL.Xor(v, TL.ShiftRightBits(v & w, 11));
-        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier4));
-        v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
-        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier5));
-        v = TL.Xor(v, TL.ShiftRightBits(v & w, 2));
-        v = TL.MultiplyBits(v, TL.BroadcastBits(Kensler.PermuteMultiplier6));
-        v &= w;
-        return TL.Xor(v, TL.ShiftRightBits(v, 5));
-    }
+    private readonly TL Round(TL v, TL w) => _key.Round(v, w);
 }
 
 /// <summary>A permutation length l in every lane, with l − 1 and Kensler's mask w (the next power of two ≥ l, less one).</summary>

@@ -3,7 +3,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Simd;
 
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// <see cref="ZSobolSampler"/> in lanes. At the start of a packet the digit permutations it needs are hashed together
@@ -12,7 +12,7 @@ namespace RayLab.Sampling.Lanes;
 /// higher levels are the same for the whole packet and come from <see cref="ZSobolSampler.Prefix"/>, recomputed only
 /// from the highest bit that changed since the last packet). The Sobol' indices of all samples are then assembled in
 /// <typeparamref name="TL"/> lanes: a sample's digit at each level is its permutation's 2-bit image, one shift and
-/// mask for all lanes. The two Owen-scrambled coordinates are <see cref="SobolLanes{TL}"/>' last stage with the
+/// mask for all lanes. The two Owen-scrambled coordinates are <see cref="SobolSampler"/>'s coordinates (<c>SobolSampler.Coordinates</c>) with the
 /// image's seeds in every lane.
 /// </summary>
 /// <remarks>
@@ -219,10 +219,6 @@ internal struct ZSobolLanes<TL> : ILaneSampler<TL>, IStagedPoints<TL>
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy)
-    {
-        // NUS(R(i)) = R(LK(i + seed)); NUS(D₁(i)) = R(LK(R(D₁(i)) + seed)), as in SobolLanes.
-        sx = TL.ToUnit(SobolLanes<TL>.Reverse(SobolLanes<TL>.LaineKarras(TL.AddBits(a, _xSeed))));
-        sy = TL.ToUnit(SobolLanes<TL>.Reverse(SobolLanes<TL>.LaineKarras(TL.AddBits(SobolLanes<TL>.SupersetXor(a), _ySeed))));
-    }
+    public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy) =>
+        SobolSampler.Coordinates<TL, LaneMath<TL>>(a, _xSeed, _ySeed, out sx, out sy);
 }

@@ -2,7 +2,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Simd;
 
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// <see cref="Pmj02Sampler"/> and <see cref="Pmj02BNSampler"/> in lanes: each lane's pixel reads its own generated

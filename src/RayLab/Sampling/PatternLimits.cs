@@ -1,4 +1,4 @@
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>Where the permutation samplers' lanes are exact.</summary>
 internal static class PatternLimits

@@ -1,7 +1,7 @@
 using System.Runtime.CompilerServices;
 using RayLab.Simd;
 
-namespace RayLab.Sampling.Lanes;
+namespace RayLab.Sampling;
 
 /// <summary>
 /// A lane sampler's point formula cut into stages that <see cref="PointBlock"/> runs one after another over a block

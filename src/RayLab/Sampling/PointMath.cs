@@ -1,0 +1,303 @@
+using System.Runtime.CompilerServices;
+using RayLab.Simd;
+
+namespace RayLab.Sampling;
+
+/// <summary>
+/// The arithmetic a sampler's point formula is written in, once, over <typeparamref name="TV"/>: one pixel's number
+/// (<see cref="ScalarLane"/>, whose reals are doubles: the scalar <see cref="IPixelSampler.GetSample"/>) or one number
+/// per lane (a lane type, whose reals are floats: the packet kernel). The bit operations are the same at every
+/// width. Each real-valued operation names the double expression it stands for: the scalar lane evaluates that
+/// expression as written, a lane type gives its float as each operation says.
+/// </summary>
+/// <typeparam name="TV">One pixel's value or one per lane.</typeparam>
+internal interface IPointMath<TV>
+    where TV : struct
+{
+    /// <summary>Every lane's bits set to <paramref name="bits"/>.</summary>
+    static abstract TV BroadcastBits(uint bits);
+
+    /// <summary>Lane i's bits set to <c>start + i</c> (the scalar lane: <paramref name="start"/>).</summary>
+    static abstract TV SequenceBits(uint start);
+
+    /// <summary>Bitwise exclusive or.</summary>
+    static abstract TV Xor(TV a, TV b);
+
+    /// <summary>Bitwise and.</summary>
+    static abstract TV And(TV a, TV b);
+
+    /// <summary>Bitwise or.</summary>
+    static abstract TV Or(TV a, TV b);
+
+    /// <summary>Sum of the bits as 32-bit unsigned integers (wrapping).</summary>
+    static abstract TV AddBits(TV a, TV b);
+
+    /// <summary>Product of the bits as 32-bit unsigned integers (the low 32 bits).</summary>
+    static abstract TV MultiplyBits(TV a, TV b);
+
+    /// <summary>The bits shifted right by <paramref name="count"/>, zeros shifted in.</summary>
+    static abstract TV ShiftRightBits(TV bits, int count);
+
+    /// <summary><see cref="CounterHash.Hash"/> of the bits.</summary>
+    static abstract TV Hash(TV bits);
+
+    /// <summary><see cref="LowDiscrepancy.ReverseBits"/> of the bits.</summary>
+    static abstract TV ReverseBits(TV bits);
+
+    /// <summary><see cref="CounterHash.ToUnit"/> of the bits: the top 24 bits times 2⁻²⁴, exact at every precision.</summary>
+    static abstract TV ToUnit(TV bits);
+
+    /// <summary>The top 24 bits as a real, exactly: <see cref="ToUnit"/> before its scaling.</summary>
+    static abstract TV Top24(TV bits);
+
+    /// <summary>
+    /// <c>q + top24·2⁻²⁴</c> wrapped into [0, 1) (a sum that reaches 1 loses 1), in double; a lane type rounds the
+    /// double to its float.
+    /// </summary>
+    static abstract TV Shifted(double q, TV top24);
+
+    /// <summary>
+    /// <c>(cell + ToUnit(bits)) / n</c>, in double; a lane type gives it as one fused multiply-add in float,
+    /// <c>Top24(bits)·scale + corner</c>, with <paramref name="corner"/> = (float)cell / n and
+    /// <paramref name="scale"/> = 1f / n / 2²⁴.
+    /// </summary>
+    static abstract TV InCell(TV bits, int cell, int n, float corner, float scale);
+
+    /// <summary>
+    /// <c>(cell + ToUnit(bits)) / n</c> for each lane's own cell (its bits a whole number below 2²⁴), in double; a
+    /// lane type gives the float of that double.
+    /// </summary>
+    static abstract TV InCellExactly(TV cell, TV bits, in CellDivisor n);
+
+    /// <summary>
+    /// <c>(cell + (sub + ToUnit(bits)) / n) / n</c>: a cell inside coarse cell <paramref name="cell"/>, each lane's
+    /// <paramref name="sub"/> a whole number below 2²⁴, in double; a lane type gives the float of that double.
+    /// </summary>
+    static abstract TV InSubCell(int cell, TV sub, TV bits, in CellDivisor n);
+}
+
+/// <summary>
+/// The divisors of <see cref="IPointMath{TV}.InCellExactly"/> (n) and <see cref="IPointMath{TV}.InSubCell"/> (n and
+/// n again), and what the lanes need of them, made once.
+/// </summary>
+/// <param name="inner">The inner divisor n, ≥ 1.</param>
+/// <param name="outer">The outer divisor: 1, or n for a cell inside a cell.</param>
+internal readonly struct CellDivisor(int inner, int outer)
+{
+    /// <summary>The inner divisor.</summary>
+    public readonly int Inner = inner;
+
+    /// <summary>The outer divisor.</summary>
+    public readonly int Outer = outer;
+
+    /// <summary>True when the inner divisor is a power of two: one float rounding of the sum, then an exact scaling, gives the float.</summary>
+    public readonly bool IsPowerOfTwo = int.IsPow2(inner);
+
+    /// <summary>1/(inner·outer) in float (exact when they are powers of two).</summary>
+    public readonly float Inverse = 1f / (inner * outer);
+
+    /// <summary>The formula in double, for the lanes when the divisors are not powers of two.</summary>
+    public readonly CellFormula Formula = new(CellFormula.UnitScale, inner, outer);
+}
+
+/// <summary>One pixel's value for <see cref="IPointMath{TV}"/>: 32 bits or a double, as the formula's step needs.</summary>
+/// <param name="bits">The bits.</param>
+/// <param name="value">The real.</param>
+internal readonly struct ScalarLane(uint bits, double value)
+{
+    /// <summary>The value as bits.</summary>
+    public readonly uint Bits = bits;
+
+    /// <summary>The value as a real.</summary>
+    public readonly double Value = value;
+}
+
+/// <summary><see cref="IPointMath{TV}"/> on one pixel, in <c>uint</c> and <c>double</c>: the scalar samplers' points.</summary>
+internal readonly struct ScalarMath : IPointMath<ScalarLane>
+{
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane BroadcastBits(uint bits) => new(bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane SequenceBits(uint start) => new(start, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane Xor(ScalarLane a, ScalarLane b) => new(a.Bits ^ b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane And(ScalarLane a, ScalarLane b) => new(a.Bits & b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane Or(ScalarLane a, ScalarLane b) => new(a.Bits | b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane AddBits(ScalarLane a, ScalarLane b) => new(a.Bits + b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane MultiplyBits(ScalarLane a, ScalarLane b) => new(a.Bits * b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane ShiftRightBits(ScalarLane bits, int count) => new(bits.Bits >> count, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane Hash(ScalarLane bits) => new(CounterHash.Hash(bits.Bits), 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane ReverseBits(ScalarLane bits) => new(LowDiscrepancy.ReverseBits(bits.Bits), 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane ToUnit(ScalarLane bits) => new(0, CounterHash.ToUnit(bits.Bits));
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane Top24(ScalarLane bits) => new(0, bits.Bits >> 8);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane Shifted(double q, ScalarLane top24)
+    {
+        double v = q + (top24.Value * CounterHash.UnitStep);
+        return new(0, v >= 1.0 ? v - 1.0 : v);
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane InCell(ScalarLane bits, int cell, int n, float corner, float scale) =>
+        new(0, (cell + CounterHash.ToUnit(bits.Bits)) / n);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane InCellExactly(ScalarLane cell, ScalarLane bits, in CellDivisor n) =>
+        new(0, ((int)cell.Bits + CounterHash.ToUnit(bits.Bits)) / n.Inner);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane InSubCell(int cell, ScalarLane sub, ScalarLane bits, in CellDivisor n) =>
+        new(0, (cell + (((int)sub.Bits + CounterHash.ToUnit(bits.Bits)) / n.Inner)) / n.Outer);
+}
+
+/// <summary><see cref="IPointMath{TV}"/> in the lanes of <typeparamref name="TL"/>, one pixel per lane, reals in float.</summary>
+/// <typeparam name="TL">The lane type.</typeparam>
+internal readonly struct LaneMath<TL> : IPointMath<TL>
+    where TL : struct, ILanes<TL>
+{
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL BroadcastBits(uint bits) => TL.BroadcastBits(bits);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL SequenceBits(uint start) => TL.SequenceBits(start);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Xor(TL a, TL b) => TL.Xor(a, b);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL And(TL a, TL b) => a & b;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Or(TL a, TL b) => a | b;
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL AddBits(TL a, TL b) => TL.AddBits(a, b);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL MultiplyBits(TL a, TL b) => TL.MultiplyBits(a, b);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL ShiftRightBits(TL bits, int count) => TL.ShiftRightBits(bits, count);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Hash(TL bits) => TL.Hash(bits);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL ReverseBits(TL bits) => TL.ReverseBits(bits);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL ToUnit(TL bits) => TL.ToUnit(bits);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Top24(TL bits) => TL.Top24(bits);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Shifted(double q, TL top24) => TL.InDouble(new ShiftFormula(q), top24, default, default, default);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL InCell(TL bits, int cell, int n, float corner, float scale) =>
+        TL.MultiplyAdd(TL.Top24(bits), TL.Broadcast(scale), TL.Broadcast(corner));
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL InCellExactly(TL cell, TL bits, in CellDivisor n)
+    {
+        TL c = TL.BitsToFloat(cell);
+        if (n.IsPowerOfTwo)
+        {
+            // (c + u)/N with N = 2ᵏ: c + u rounded once (u·2²⁴ is exact), then an exact scaling.
+            return TL.MultiplyAdd(TL.Top24(bits), TL.Broadcast(1f / 16777216f), c) * TL.Broadcast(n.Inverse);
+        }
+
+        return TL.InDouble(n.Formula, c, TL.Top24(bits), default, default);
+    }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL InSubCell(int cell, TL sub, TL bits, in CellDivisor n)
+    {
+        TL s = TL.BitsToFloat(sub);
+        if (n.IsPowerOfTwo)
+        {
+            // (cell + (sub + u)/n)/n = (cell·n + sub + u)/n² with n = 2ᵏ: one rounding of the sum, an exact scaling.
+            return TL.MultiplyAdd(TL.Top24(bits), TL.Broadcast(1f / 16777216f), TL.Broadcast(cell * n.Inner) + s) * TL.Broadcast(n.Inverse);
+        }
+
+        return TL.InDouble(n.Formula, s, TL.Top24(bits), TL.Broadcast(cell), default);
+    }
+}
+
+/// <summary><see cref="CounterHash"/> in <see cref="IPointMath{TV}"/>: the pixel keys and sample hashes of every sampler.</summary>
+internal static class PointHash
+{
+    /// <summary>
+    /// <see cref="CounterHash.PixelKey"/> of pixels x0 … x0 + lanes − 1 of a row; <paramref name="salt"/> is
+    /// <see cref="Salt"/> of the seed.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TV PixelKeys<TV, TM>(int x0, int row, uint salt)
+        where TV : struct
+        where TM : IPointMath<TV> =>
+        TM.Hash(TM.Xor(TM.BroadcastBits(((uint)row << 16) ^ salt), TM.SequenceBits((uint)x0)));
+
+    /// <summary><see cref="CounterHash.SampleHash"/> of sample <paramref name="index"/> under each lane's key.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TV SampleHash<TV, TM>(TV keys, int index)
+        where TV : struct
+        where TM : IPointMath<TV> =>
+        TM.Hash(TM.Xor(keys, TM.BroadcastBits((uint)index * CounterHash.Golden)));
+
+    /// <summary>The hashed, salted seed that <see cref="PixelKeys"/> takes.</summary>
+    public static uint Salt(uint seed) => CounterHash.Hash(seed + CounterHash.Golden);
+}
