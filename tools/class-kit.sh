@@ -12,25 +12,36 @@
 #   DIR/raylab-linux-x64/  the native raylab (as tools/publish-native.sh makes it), which also grades
 #   DIR/playground/        the published playground site (samples/RayLab.Web), for any static host
 #   DIR/README.md          the instructor's page, Polish and English (docs/teaching.md is the long form)
-# Usage: tools/class-kit.sh DIR [--feed-only]
-#   --feed-only  the feed (without the tool packages), instructor/ and the checks alone: what a lab needs (the CI test
-#                uses it)
+# Usage: tools/class-kit.sh DIR [--feed-only] [--packed FOLDER]
+#   --feed-only       the feed (without the tool packages), instructor/ and the checks alone: what a lab needs (the CI
+#                     test uses it)
+#   --packed FOLDER   this checkout's packages are already packed (all of one version) in FOLDER: copied from there
+#                     instead of packed again (the template tests pass the run's one packing)
 # Needs the .NET SDK and network access to a NuGet source for xUnit & co. (the machine's own sources), and for the
 # native build a C toolchain (clang or gcc) and unzip (or python3).
 set -euo pipefail
+usage="usage: tools/class-kit.sh DIR [--feed-only] [--packed FOLDER]"
 if [ $# -lt 1 ] || [ "${1:0:1}" = "-" ]; then
-  echo "usage: tools/class-kit.sh DIR [--feed-only]" >&2
+  echo "$usage" >&2
   exit 2
 fi
 repo=$(cd "$(dirname "$0")/.." && pwd)
-mkdir -p "$1"
-kit=$(cd "$1" && pwd)
+kit_arg=$1
+shift
 full=1
-case "${2:-}" in
-  "") ;;
-  --feed-only) full=0 ;;
-  *) echo "tools/class-kit.sh: unknown option '$2' (expected --feed-only)" >&2; exit 2 ;;
-esac
+packed=
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --feed-only) full=0 ;;
+    --packed)
+      if [ $# -lt 2 ] || [ ! -d "$2" ]; then echo "tools/class-kit.sh: --packed needs a folder that exists" >&2; exit 2; fi
+      packed=$(cd "$2" && pwd); shift ;;
+    *) echo "tools/class-kit.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
+  esac
+  shift
+done
+mkdir -p "$kit_arg"
+kit=$(cd "$kit_arg" && pwd)
 if [ -n "$(ls -A "$kit")" ]; then
   echo "tools/class-kit.sh: $kit is not empty; give an empty or new folder" >&2
   exit 1
@@ -41,22 +52,47 @@ trap 'rm -rf "$work"' EXIT
 feed="$kit/feed"
 mkdir -p "$feed"
 
-echo "== packages of this checkout -> $feed"
 projects=(src/RayLab src/RayLab.Reports templates/RayLab.Templates)
 [ -d "$repo/src/RayLab.ImageSharp" ] && projects+=(src/RayLab.ImageSharp)
-for p in "${projects[@]}"; do
-  dotnet pack "$repo/$p" -c Release -o "$feed" --artifacts-path "$work/artifacts" -v q -nologo
-done
-# The reference solution's package goes beside the feed, not in it: feed/ is what the students get.
-echo "== the instructor's template package -> $kit/instructor"
-dotnet pack "$repo/templates/RayLab.Templates.Instructor" -c Release -o "$kit/instructor" --artifacts-path "$work/artifacts" -v q -nologo
-if [ $full = 1 ]; then
-  # The tool: the pointer package, the framework-dependent build every OS runs, and the native linux-x64 build.
-  dotnet pack "$repo/samples/RayLab.Console" -c Release -o "$feed" -v q -nologo
-  dotnet pack "$repo/samples/RayLab.Console" -c Release -r any -o "$feed" -v q -nologo
-  dotnet pack "$repo/samples/RayLab.Console" -c Release -r linux-x64 -o "$feed" -v q -nologo
+# The tool: the pointer package, the framework-dependent build every OS runs, and the native linux-x64 build.
+tool_ids=(RayLab.Tool RayLab.Tool.any RayLab.Tool.linux-x64)
+if [ -n "$packed" ]; then
+  # (the version is the instructor's package's: no other package's id starts with its id)
+  instructor=$(ls "$packed"/RayLab.Templates.Instructor.[0-9]*.nupkg 2>/dev/null || true)
+  if [ "$(wc -w <<<"$instructor")" -ne 1 ]; then
+    echo "tools/class-kit.sh: not one RayLab.Templates.Instructor.<version>.nupkg in $packed" >&2
+    exit 1
+  fi
+  version=$(basename "$instructor" .nupkg); version=${version#RayLab.Templates.Instructor.}
+  ids=()
+  for p in "${projects[@]}"; do ids+=("$(basename "$p")"); done
+  [ $full = 1 ] && ids+=("${tool_ids[@]}")
+  echo "== packages of this checkout, packed at $version in $packed -> $feed"
+  for id in "${ids[@]}"; do
+    if [ ! -e "$packed/$id.$version.nupkg" ]; then
+      echo "tools/class-kit.sh: $packed has no $id.$version.nupkg" >&2
+      exit 1
+    fi
+    cp "$packed/$id.$version.nupkg" "$feed/"
+  done
+  echo "== the instructor's template package -> $kit/instructor"
+  mkdir -p "$kit/instructor"
+  cp "$instructor" "$kit/instructor/"
+else
+  echo "== packages of this checkout -> $feed"
+  for p in "${projects[@]}"; do
+    dotnet pack "$repo/$p" -c Release -o "$feed" --artifacts-path "$work/artifacts" -v q -nologo
+  done
+  # The reference solution's package goes beside the feed, not in it: feed/ is what the students get.
+  echo "== the instructor's template package -> $kit/instructor"
+  dotnet pack "$repo/templates/RayLab.Templates.Instructor" -c Release -o "$kit/instructor" --artifacts-path "$work/artifacts" -v q -nologo
+  if [ $full = 1 ]; then
+    dotnet pack "$repo/samples/RayLab.Console" -c Release -o "$feed" -v q -nologo
+    dotnet pack "$repo/samples/RayLab.Console" -c Release -r any -o "$feed" -v q -nologo
+    dotnet pack "$repo/samples/RayLab.Console" -c Release -r linux-x64 -o "$feed" -v q -nologo
+  fi
 fi
-template=$(ls "$feed"/RayLab.Templates.*.nupkg)
+template=$(ls "$feed"/RayLab.Templates.[0-9]*.nupkg)
 version=$(basename "$template" .nupkg); version=${version#RayLab.Templates.}
 # One version for all (MinVer: the commit's); a commit made while packing would split them.
 for p in "${projects[@]}" templates/RayLab.Templates.Instructor; do

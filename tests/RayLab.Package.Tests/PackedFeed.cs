@@ -1,12 +1,11 @@
-using System.Runtime.InteropServices;
-
 namespace RayLab.Package.Tests;
 
 /// <summary>
-/// The folder feed every packaging test uses, packed once per run: the core (<c>RayLab</c>), the reports
+/// The folder feed every packaging test uses, packed once per run (<see cref="PackedPackages"/>, shared with the
+/// template tests when .ci/run runs both): the core (<c>RayLab</c>), the reports
 /// (<c>RayLab.Reports</c>), the ImageSharp adapter (<c>RayLab.ImageSharp</c>), and the tool as .NET 10's RID-specific tool — the pointer package <c>RayLab.Tool</c>,
 /// <c>RayLab.Tool.any</c> (framework-dependent) and, where it can be compiled (linux-x64), <c>RayLab.Tool.linux-x64</c>
-/// (Native AOT). bin/obj of the packs go under the temp folder, not the repository's; every child gets
+/// (Native AOT). bin/obj of the packs go under a temp folder, not the repository's; every child gets
 /// <see cref="Packages"/>, an NUGET_PACKAGES folder that starts empty.
 /// </summary>
 public sealed class PackedFeed : IAsyncLifetime
@@ -32,29 +31,17 @@ public sealed class PackedFeed : IAsyncLifetime
     public string Version { get; private set; } = "";
 
     /// <summary>Whether this machine gets the native tool package: RayLab.Tool has one for linux-x64 only.</summary>
-    public static bool NativeToolHere => OperatingSystem.IsLinux() && RuntimeInformation.OSArchitecture == Architecture.X64;
+    public static bool NativeToolHere => PackedPackages.NativeToolHere;
 
     public async ValueTask InitializeAsync()
     {
-        string artifacts = Path.Combine(Root, "artifacts");
-        foreach (string project in new[] { Path.Combine(Repo, "src", "RayLab", "RayLab.csproj"), Path.Combine(Repo, "src", "RayLab.Reports", "RayLab.Reports.csproj"), Path.Combine(Repo, "src", "RayLab.ImageSharp", "RayLab.ImageSharp.csproj") })
-        {
-            await RunAsync(Root, "dotnet", "pack", project, "-c", "Release", "-o", Feed, "--artifacts-path", artifacts);
-        }
-
-        await RunAsync(Root, "dotnet", "pack", ConsoleProject, "-c", "Release", "-o", Feed, "--artifacts-path", artifacts);
-        await RunAsync(Root, "dotnet", "pack", ConsoleProject, "-c", "Release", "-r", "any", "-o", Feed, "--artifacts-path", artifacts);
-        if (NativeToolHere)
-        {
-            await RunAsync(Root, "dotnet", "pack", ConsoleProject, "-c", "Release", "-r", "linux-x64", "-o", Feed, "--artifacts-path", artifacts);
-        }
-
-        string core = Directory.GetFiles(Feed, "RayLab.*.nupkg").Select(Path.GetFileName).OfType<string>()
-            .SingleOrDefault(f => !f.StartsWith("RayLab.Tool.", StringComparison.OrdinalIgnoreCase) && !f.StartsWith("RayLab.Reports.", StringComparison.OrdinalIgnoreCase)
-                && !f.StartsWith("RayLab.ImageSharp.", StringComparison.OrdinalIgnoreCase))
-            ?? throw new InvalidOperationException($"no single RayLab.<version>.nupkg in the feed: {string.Join(", ", Directory.GetFiles(Feed).Select(Path.GetFileName))}");
-        Version = Path.GetFileNameWithoutExtension(core)["RayLab.".Length..];
-        foreach (string expected in new[] { $"RayLab.{Version}.snupkg", $"RayLab.Reports.{Version}.nupkg", $"RayLab.ImageSharp.{Version}.nupkg", $"RayLab.Tool.{Version}.nupkg", $"RayLab.Tool.any.{Version}.nupkg" })
+        // Packed once for the run (PackedPackages), copied into this fixture's own feed.
+        PackedSet libraries = await PackedPackages.LibrariesAsync(), tool = await PackedPackages.ToolAsync();
+        Assert.True(libraries.Version == tool.Version, $"the libraries were packed at {libraries.Version}, the tool at {tool.Version} (a commit during the packing?)");
+        Version = libraries.Version;
+        libraries.CopyTo(Feed, "RayLab", "RayLab.Reports", "RayLab.ImageSharp");
+        tool.CopyTo(Feed, NativeToolHere ? ["RayLab.Tool", "RayLab.Tool.any", "RayLab.Tool.linux-x64"] : ["RayLab.Tool", "RayLab.Tool.any"]);
+        foreach (string expected in new[] { $"RayLab.{Version}.nupkg", $"RayLab.{Version}.snupkg", $"RayLab.Reports.{Version}.nupkg", $"RayLab.ImageSharp.{Version}.nupkg", $"RayLab.Tool.{Version}.nupkg", $"RayLab.Tool.any.{Version}.nupkg" })
         {
             if (!File.Exists(Path.Combine(Feed, expected)))
             {

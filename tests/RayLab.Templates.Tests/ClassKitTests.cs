@@ -1,11 +1,13 @@
+using System.Globalization;
 using System.Text.Json;
 using RayLab.Cli;
 
 namespace RayLab.Templates.Tests;
 
 /// <summary>
-/// Once for the test class: <c>tools/class-kit.sh --feed-only</c> makes a kit (the feed with every package a lab
-/// restores, the instructor's template package beside it and the pinned checks), which is then moved to another path
+/// Once for the test class: <c>tools/class-kit.sh --feed-only --packed</c> makes a kit from the run's one packing
+/// (<see cref="PackedPackages"/>): the feed with every package a lab restores, the instructor's template package
+/// beside it and the pinned checks. The kit is then moved to another path
 /// (the folder it was made in is deleted); the students' template is installed from the moved kit's feed, and the
 /// instructor's from its instructor/ folder, in a temporary DOTNET_CLI_HOME, with an empty NUGET_PACKAGES and a
 /// nuget.config above the work folders that clears every package source.
@@ -34,12 +36,14 @@ public sealed class ClassKit : IAsyncLifetime
 
     public async ValueTask InitializeAsync()
     {
+        PackedSet packed = await PackedPackages.LibrariesAsync();
         await ChildProcess.RunCheckedAsync(RepoPaths.Root(), new Dictionary<string, string?>(), ChildTimeout,
-            "bash", Path.Combine(RepoPaths.Root(), "tools", "class-kit.sh"), MadeAt, "--feed-only");
+            "bash", Path.Combine(RepoPaths.Root(), "tools", "class-kit.sh"), MadeAt, "--feed-only", "--packed", packed.Folder);
         Directory.CreateDirectory(Path.GetDirectoryName(Kit)!);
         Directory.Move(MadeAt, Kit);
         string template = Assert.Single(Directory.GetFiles(Path.Combine(Kit, "feed"), "RayLab.Templates.*.nupkg"));
         Version = Path.GetFileNameWithoutExtension(template)["RayLab.Templates.".Length..];
+        Assert.Equal(packed.Version, Version);
         Directory.CreateDirectory(Work);
         Directory.CreateDirectory(Path.Combine(Root, "dotnet-home"));
         File.WriteAllText(Path.Combine(Work, "nuget.config"), """
@@ -175,17 +179,9 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Edit(hangs, "src/Lab/MyMethod.cs", "Intensity sum = Intensity.Black;", "while (pixel.X >= 0) { Thread.SpinWait(1); }\n        Intensity sum = Intensity.Black;");
 
         string report = Path.Combine(kit.Root, "report");
-        var stdout = new StringWriter();
-        var stderr = new StringWriter();
-        int exit = Program.Run(
-            ["grade", submissions, "--checks", Path.Combine(kit.Kit, "checks", "method"), "--out", report,
-             "--check-timeout", "10", "--run-timeout", "40", "--submission-timeout", SubmissionLimitSeconds.ToString(System.Globalization.CultureInfo.InvariantCulture)],
-            stdout, stderr, TestContext.Current.CancellationToken);
-        Assert.True(exit == 0, $"raylab grade exited {exit}:\n{stdout}\n{stderr}");
-
-        using JsonDocument grades = JsonDocument.Parse(File.ReadAllText(Path.Combine(report, "grades.json")));
+        using JsonDocument grades = Grade(submissions, "method", report, checkTimeout: 10, runTimeout: 40);
         Assert.True(grades.RootElement.GetProperty("sandboxed").GetBoolean());
-        Dictionary<string, JsonElement> rows = grades.RootElement.GetProperty("students").EnumerateArray().ToDictionary(r => r.GetProperty("name").GetString()!);
+        Dictionary<string, JsonElement> rows = Rows(grades);
         Assert.Equal(["broken", "correct", "hangs", "sabotaged", "template"], rows.Keys.Order(StringComparer.Ordinal));
         string method = MethodSection(rows["template"]);
         string[] sections = [.. grades.RootElement.GetProperty("sections").EnumerateArray().Select(s => s.GetString()!)];
@@ -244,17 +240,8 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         string rounded = await kit.NewLabAsync(submissions, "rounded", restore: false, "exercise", "raylab-lab-solution");
         Edit(rounded, "src/Lab/LabImage.cs", "(byte)(int)scaled", "(byte)Math.Round(scaled)");
 
-        string report = Path.Combine(kit.Root, "exercise-report");
-        var stdout = new StringWriter();
-        var stderr = new StringWriter();
-        int exit = Program.Run(
-            ["grade", submissions, "--checks", Path.Combine(kit.Kit, "checks", "exercise"), "--out", report,
-             "--check-timeout", "60", "--run-timeout", "60", "--submission-timeout", SubmissionLimitSeconds.ToString(System.Globalization.CultureInfo.InvariantCulture)],
-            stdout, stderr, TestContext.Current.CancellationToken);
-        Assert.True(exit == 0, $"raylab grade exited {exit}:\n{stdout}\n{stderr}");
-
-        using JsonDocument grades = JsonDocument.Parse(File.ReadAllText(Path.Combine(report, "grades.json")));
-        Dictionary<string, JsonElement> rows = grades.RootElement.GetProperty("students").EnumerateArray().ToDictionary(r => r.GetProperty("name").GetString()!);
+        using JsonDocument grades = Grade(submissions, "exercise", Path.Combine(kit.Root, "exercise-report"), checkTimeout: 60, runTimeout: 60);
+        Dictionary<string, JsonElement> rows = Rows(grades);
         string[] sections = [.. grades.RootElement.GetProperty("sections").EnumerateArray().Select(s => s.GetString()!)];
         // Every section of the lab, parsed from the checks' display names.
         Assert.Equal(["2.1", "2.2", "3", "3.1", "3.2", "4.1.1", "4.1.2", "4.1.3", "4.1.4", "5"], sections.Order(StringComparer.Ordinal));
@@ -267,6 +254,29 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Assert.Equal("pass", Section(rows["rounded"], "2.1"));
         Assert.Equal("pass", Section(rows["rounded"], "3.2"));
     }
+
+    /// <summary>
+    /// <c>raylab grade</c>, in-process, of the labs in <paramref name="submissions"/> against the kit's pinned checks of
+    /// <paramref name="kind"/>, with the class's limit per submission; fails with both outputs unless it exits 0.
+    /// </summary>
+    /// <returns>The report's grades.json.</returns>
+    private JsonDocument Grade(string submissions, string kind, string report, int checkTimeout, int runTimeout)
+    {
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        int exit = Program.Run(
+            ["grade", submissions, "--checks", Path.Combine(kit.Kit, "checks", kind), "--out", report,
+             "--check-timeout", checkTimeout.ToString(CultureInfo.InvariantCulture), "--run-timeout", runTimeout.ToString(CultureInfo.InvariantCulture),
+             "--submission-timeout", SubmissionLimitSeconds.ToString(CultureInfo.InvariantCulture)],
+            stdout, stderr, TestContext.Current.CancellationToken);
+        Assert.True(exit == 0, $"raylab grade exited {exit}:\n{stdout}\n{stderr}");
+        TestContext.Current.TestOutputHelper?.WriteLine($"raylab grade {kind}:\n{stdout}\n{stderr}");
+        return JsonDocument.Parse(File.ReadAllText(Path.Combine(report, "grades.json")));
+    }
+
+    /// <summary>The report's rows, by the student's name.</summary>
+    private static Dictionary<string, JsonElement> Rows(JsonDocument grades) =>
+        grades.RootElement.GetProperty("students").EnumerateArray().ToDictionary(r => r.GetProperty("name").GetString()!);
 
     private static string Grid(int n) =>
         $"private static readonly SamplePoint[] Points = [.. Enumerable.Range(0, {n * n}).Select(i => new SamplePoint(((i % {n}) + 0.5) / {n}, ((i / {n}) + 0.5) / {n}))];";

@@ -16,7 +16,8 @@ namespace RayLab.Templates.Tests;
 /// shared (<see cref="TemplateFeed"/>).
 /// </summary>
 [Trait("Category", "Templates")]
-public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<TemplateFeed>
+[Collection(TemplateFeedSharing.Name)]
+public sealed partial class LabTemplateTests(TemplateFeed feed)
 {
     /// <summary>
     /// Each kind of method: the line of MyMethod.cs to replace and what makes its pictures black; and whether the lab
@@ -127,7 +128,7 @@ public sealed partial class LabTemplateTests(TemplateFeed feed) : IClassFixture<
         string source = File.ReadAllText(myMethod);
         Assert.Contains(line, source, StringComparison.Ordinal);
         File.WriteAllText(myMethod, source.Replace(line, sabotage, StringComparison.Ordinal));
-        (int sabotagedExit, string sabotagedOutput) = await feed.RunUncheckedAsync(lab, "dotnet", "test");
+        (int sabotagedExit, string sabotagedOutput) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-restore"); // restored above
         Assert.NotEqual(0, sabotagedExit);
         (int stillPassing, int nowFailing) = DetailedCounts(sabotagedOutput); // a summary: it built, and tests ran and failed
         Assert.True(nowFailing >= 1, $"no test failed with the sabotaged MyMethod:\n{sabotagedOutput}");

@@ -4,13 +4,14 @@ using System.Text.Json;
 namespace RayLab.Templates.Tests;
 
 /// <summary>
-/// The two template packages, packed from this checkout (alone: no RayLab package is needed to look inside them or to
-/// create a lab with <c>--skipRestore</c>): the students' <c>RayLab.Templates</c> holds no text of the reference
+/// The two template packages of the shared <see cref="TemplateFeed"/> (packed from this checkout and installed side by
+/// side in its DOTNET_CLI_HOME): the students' <c>RayLab.Templates</c> holds no text of the reference
 /// solution and refuses <c>--solution</c>; the instructor's <c>RayLab.Templates.Instructor</c> holds the solution and
 /// installs beside it as <c>raylab-lab-solution</c>.
 /// </summary>
 [Trait("Category", "Templates")]
-public sealed class SolutionPackageTests(TemplatePackages packages) : IClassFixture<TemplatePackages>
+[Collection(TemplateFeedSharing.Name)]
+public sealed class SolutionPackageTests(TemplateFeed packages)
 {
     /// <summary>
     /// Lines of the solution branches of the exercise skeletons: the perspective camera's ray origin, the adaptive
@@ -27,13 +28,13 @@ public sealed class SolutionPackageTests(TemplatePackages packages) : IClassFixt
     [Fact]
     public void NoFileOfTheStudentsPackageHoldsASolutionConditionOrTheSolutionSymbol()
     {
-        foreach ((string name, string text) in Entries(packages.Student))
+        foreach ((string name, string text) in Entries(packages.StudentPackage))
         {
-            Assert.False(text.Contains("#if (solution)", StringComparison.Ordinal), $"{name} in {Path.GetFileName(packages.Student)} holds #if (solution)");
+            Assert.False(text.Contains("#if (solution)", StringComparison.Ordinal), $"{name} in {Path.GetFileName(packages.StudentPackage)} holds #if (solution)");
             Assert.DoesNotMatch(@"(?m)^\s*#\s*(if|elif)\b.*\bsolution\b", text);
         }
 
-        string template = Entries(packages.Student).Single(e => e.Name == "content/raylab-lab/.template.config/template.json").Text;
+        string template = Entries(packages.StudentPackage).Single(e => e.Name == "content/raylab-lab/.template.config/template.json").Text;
         using JsonDocument json = JsonDocument.Parse(template);
         Assert.False(json.RootElement.GetProperty("symbols").TryGetProperty("solution", out _), "the students' template.json has the symbol solution");
         Assert.DoesNotContain("--solution", template, StringComparison.Ordinal);
@@ -47,8 +48,8 @@ public sealed class SolutionPackageTests(TemplatePackages packages) : IClassFixt
         string content = Path.Combine(RepoPaths.Root(), "templates", "RayLab.Templates", "content", "raylab-lab");
         Assert.Contains(Directory.GetFiles(content, "*.cs", SearchOption.AllDirectories), f => File.ReadAllText(f).Contains(line, StringComparison.Ordinal));
 
-        Assert.DoesNotContain(Entries(packages.Student), e => e.Text.Contains(line, StringComparison.Ordinal));
-        Assert.Contains(Entries(packages.Instructor), e => e.Text.Contains(line, StringComparison.Ordinal));
+        Assert.DoesNotContain(Entries(packages.StudentPackage), e => e.Text.Contains(line, StringComparison.Ordinal));
+        Assert.Contains(Entries(packages.InstructorPackage), e => e.Text.Contains(line, StringComparison.Ordinal));
     }
 
     [Fact]
@@ -86,73 +87,4 @@ public sealed class SolutionPackageTests(TemplatePackages packages) : IClassFixt
 
         return entries;
     }
-}
-
-/// <summary>
-/// Once for <see cref="SolutionPackageTests"/>: RayLab.Templates and RayLab.Templates.Instructor packed from this
-/// checkout into a temporary folder and both installed, side by side, in a temporary DOTNET_CLI_HOME.
-/// </summary>
-public sealed class TemplatePackages : IAsyncLifetime
-{
-    private static readonly TimeSpan ChildTimeout = TimeSpan.FromMinutes(5);
-
-    /// <summary>The temporary folder everything happens in.</summary>
-    public string Root { get; } = Directory.CreateTempSubdirectory("raylab-template-packages-").FullName;
-
-    /// <summary>The students' package, RayLab.Templates.*.nupkg.</summary>
-    public string Student { get; private set; } = "";
-
-    /// <summary>The instructor's package, RayLab.Templates.Instructor.*.nupkg.</summary>
-    public string Instructor { get; private set; } = "";
-
-    private string CliHome => Path.Combine(Root, "dotnet-home");
-
-    public async ValueTask InitializeAsync()
-    {
-        string repo = RepoPaths.Root(), feed = Path.Combine(Root, "feed"), artifacts = Path.Combine(Root, "artifacts");
-        Directory.CreateDirectory(CliHome);
-        foreach (string project in new[] { "templates/RayLab.Templates/RayLab.Templates.csproj", "templates/RayLab.Templates.Instructor/RayLab.Templates.Instructor.csproj" })
-        {
-            await RunAsync(Root, "dotnet", "pack", Path.Combine(repo, project), "-c", "Release", "-o", feed, "--artifacts-path", artifacts);
-        }
-
-        Instructor = Assert.Single(Directory.GetFiles(feed, "RayLab.Templates.Instructor.*.nupkg"));
-        Student = Assert.Single(Directory.GetFiles(feed, "RayLab.Templates.*.nupkg"), f => f != Instructor);
-        await RunAsync(Root, "dotnet", "new", "install", Student);
-        await RunAsync(Root, "dotnet", "new", "install", Instructor);
-    }
-
-    public ValueTask DisposeAsync()
-    {
-        try
-        {
-            Directory.Delete(Root, recursive: true);
-        }
-        catch (IOException)
-        {
-            // A child killed on timeout may still hold a file; the temporary folder is not worth failing for.
-        }
-
-        return ValueTask.CompletedTask;
-    }
-
-    /// <summary>Runs a child to completion; fails with its command line and output unless it exits 0.</summary>
-    /// <returns>What the child wrote to stdout.</returns>
-    public Task<string> RunAsync(string workingDirectory, string fileName, params string[] args) =>
-        ChildProcess.RunCheckedAsync(workingDirectory, Environment(), ChildTimeout, fileName, args);
-
-    /// <summary>Runs a child to completion, whatever its exit code.</summary>
-    /// <returns>Its exit code, and stdout followed by stderr.</returns>
-    public async Task<(int ExitCode, string Output)> RunUncheckedAsync(string workingDirectory, string fileName, params string[] args)
-    {
-        ChildResult result = await ChildProcess.RunAsync(workingDirectory, Environment(), ChildTimeout, fileName, args);
-        return (result.ExitCode, result.Output + result.Errors);
-    }
-
-    private Dictionary<string, string?> Environment() => new()
-    {
-        ["DOTNET_CLI_HOME"] = CliHome,
-        ["NUGET_PACKAGES"] = Path.Combine(Root, "nuget-packages"),
-        ["DOTNET_GENERATE_ASPNET_CERTIFICATE"] = "false",
-    };
 }

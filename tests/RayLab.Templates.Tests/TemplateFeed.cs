@@ -2,9 +2,9 @@
 namespace RayLab.Templates.Tests;
 
 /// <summary>
-/// Once for the test class: a temporary folder with its own DOTNET_CLI_HOME (so the template is installed nowhere
+/// Once for the test assembly's template collection (<see cref="TemplateFeedSharing"/>): a temporary folder with its own DOTNET_CLI_HOME (so the template is installed nowhere
 /// else) and an empty NUGET_PACKAGES (so no cached RayLab package can stand in for the one packed here); RayLab,
-/// RayLab.ImageSharp, RayLab.Reports and RayLab.Templates packed from this checkout into a folder feed, and the
+/// RayLab.ImageSharp, RayLab.Reports and RayLab.Templates packed from this checkout (<see cref="PackedPackages"/>) into a folder feed, and the
 /// instructor's RayLab.Templates.Instructor into a folder of its own; both template packages installed side by side
 /// by their ids and version, as the student and the instructor would.
 /// </summary>
@@ -27,20 +27,22 @@ public sealed class TemplateFeed : IAsyncLifetime
     /// <summary>The folder with the instructor's template package (<c>dotnet new raylab-lab-solution</c>).</summary>
     public string InstructorFeed => Path.Combine(Root, "instructor");
 
+    /// <summary>The students' template package, RayLab.Templates.<see cref="Version"/>.nupkg in <see cref="Feed"/>.</summary>
+    public string StudentPackage => Path.Combine(Feed, $"RayLab.Templates.{Version}.nupkg");
+
+    /// <summary>The instructor's template package, RayLab.Templates.Instructor.<see cref="Version"/>.nupkg in <see cref="InstructorFeed"/>.</summary>
+    public string InstructorPackage => Path.Combine(InstructorFeed, $"RayLab.Templates.Instructor.{Version}.nupkg");
+
     /// <summary>The version the five packages were packed with (MinVer: the same for all five).</summary>
     public string Version { get; private set; } = "";
 
     public async ValueTask InitializeAsync()
     {
-        string repo = RepoPaths.Root();
-        string artifacts = Path.Combine(Root, "artifacts");
         Directory.CreateDirectory(CliHome);
-        foreach (string project in new[] { "src/RayLab/RayLab.csproj", "src/RayLab.ImageSharp/RayLab.ImageSharp.csproj", "src/RayLab.Reports/RayLab.Reports.csproj", "templates/RayLab.Templates/RayLab.Templates.csproj" })
-        {
-            await RunAsync(Root, "dotnet", "pack", Path.Combine(repo, project), "-c", "Release", "-o", Feed, "--artifacts-path", artifacts);
-        }
-
-        await RunAsync(Root, "dotnet", "pack", Path.Combine(repo, "templates/RayLab.Templates.Instructor/RayLab.Templates.Instructor.csproj"), "-c", "Release", "-o", InstructorFeed, "--artifacts-path", artifacts);
+        // Packed once for the run (PackedPackages, shared with the class kit and the package tests), copied here.
+        PackedSet packed = await PackedPackages.LibrariesAsync();
+        packed.CopyTo(Feed, "RayLab", "RayLab.ImageSharp", "RayLab.Reports", "RayLab.Templates");
+        packed.CopyTo(InstructorFeed, "RayLab.Templates.Instructor");
 
         string template = Assert.Single(Directory.GetFiles(Feed, "RayLab.Templates.*.nupkg"));
         Version = Path.GetFileNameWithoutExtension(template)["RayLab.Templates.".Length..];
@@ -97,4 +99,15 @@ public sealed class TemplateFeed : IAsyncLifetime
         ["NUGET_PACKAGES"] = Packages,
         ["DOTNET_GENERATE_ASPNET_CERTIFICATE"] = "false",
     };
+}
+
+/// <summary>
+/// The test classes that share one <see cref="TemplateFeed"/> (one packing, one install of both templates): the lab
+/// tests and the template packages' tests. They run one after the other, as their children share a DOTNET_CLI_HOME.
+/// </summary>
+[CollectionDefinition(Name)]
+public sealed class TemplateFeedSharing : ICollectionFixture<TemplateFeed>
+{
+    /// <summary>The collection's name.</summary>
+    public const string Name = "template feed";
 }
