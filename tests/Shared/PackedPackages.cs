@@ -70,7 +70,7 @@ internal static class PackedPackages
     });
 
     /// <summary>Whether this machine gets the native tool package: RayLab.Tool has one for linux-x64 only.</summary>
-    public static bool NativeToolHere => OperatingSystem.IsLinux() && RuntimeInformation.OSArchitecture == Architecture.X64;
+    public static bool NativeToolHere => OperatingSystem.IsLinux() && RuntimeInformation.OSArchitecture == System.Runtime.InteropServices.Architecture.X64;
 
     /// <summary>The libraries and template packages (<see cref="LibraryIds"/>, and RayLab's symbol package), packed once.</summary>
     /// <returns>Their folder and version.</returns>
