@@ -38,6 +38,9 @@ internal interface IPointMath<TV>
     /// <summary>The bits shifted right by <paramref name="count"/>, zeros shifted in.</summary>
     static abstract TV ShiftRightBits(TV bits, int count);
 
+    /// <summary>The bits shifted left by <paramref name="count"/> (below 32), zeros shifted in.</summary>
+    static abstract TV ShiftLeftBits(TV bits, int count);
+
     /// <summary><see cref="CounterHash.Hash"/> of the bits.</summary>
     static abstract TV Hash(TV bits);
 
@@ -149,6 +152,10 @@ internal readonly struct ScalarMath : IPointMath<ScalarLane>
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane ShiftLeftBits(ScalarLane bits, int count) => new(bits.Bits << count, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static ScalarLane Hash(ScalarLane bits) => new(CounterHash.Hash(bits.Bits), 0);
 
     /// <inheritdoc />
@@ -223,6 +230,10 @@ internal readonly struct LaneMath<TL> : IPointMath<TL>
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static TL ShiftRightBits(TL bits, int count) => TL.ShiftRightBits(bits, count);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL ShiftLeftBits(TL bits, int count) => TL.ShiftLeftBits(bits, count);
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
