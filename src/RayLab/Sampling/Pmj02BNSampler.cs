@@ -9,7 +9,8 @@ namespace RayLab.Sampling;
 /// <remarks>
 /// The sets are generated once by the library (64 of them; docs/samplers.md gives their size). A pixel takes the
 /// set its <see cref="CounterHash.PixelKey"/> picks, unscrambled: a digital shift would keep the strata but tear
-/// the spacing apart at the shift's binary boundaries.
+/// the spacing apart at the shift's binary boundaries. Its points and lanes are pmj02's formula
+/// (<see cref="Pmj02Sampler"/>) on these sets with keys 0.
 /// </remarks>
 public sealed class Pmj02BNSampler : PixelSampler, ILaneSampled
 {
@@ -28,9 +29,9 @@ public sealed class Pmj02BNSampler : PixelSampler, ILaneSampled
 
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index) =>
-        Pmj02Tables.Point(Sets, Pmj02Tables.Pixel(CounterHash.PixelKey(x, y, Seed), scramble: false), index);
+        Pmj02Sampler.Point(Sets, Pmj02Tables.Pixel(CounterHash.PixelKey(x, y, Seed), scramble: false), index);
 
     /// <inheritdoc />
     TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
-        user.Run(() => new Pmj02Lanes<TL>(this));
+        user.Run(() => new Pmj02Sampler.LaneForm<TL>(Sets, Seed, scramble: false));
 }

@@ -110,16 +110,6 @@ internal static class Pmj02Tables
         return (set, x, CounterHash.Hash(x));
     }
 
-    /// <summary>Point <paramref name="index"/> of a pixel whose set and keys <see cref="Pixel"/> gave.</summary>
-    /// <param name="sets">The variant's sets.</param>
-    /// <param name="pixel">The pixel's set and scramble keys.</param>
-    /// <param name="index">The sample index.</param>
-    public static SamplePoint Point(uint[][] sets, (int Set, uint X, uint Y) pixel, int index)
-    {
-        uint[] set = sets[pixel.Set];
-        return new SamplePoint(CounterHash.ToUnit(set[2 * index] ^ pixel.X), CounterHash.ToUnit(set[(2 * index) + 1] ^ pixel.Y));
-    }
-
     /// <summary>The top <paramref name="bits"/> bits of a 32-bit fraction (0 for none).</summary>
     private static uint Top(uint value, int bits) => bits == 0 ? 0 : value >> (32 - bits);
 

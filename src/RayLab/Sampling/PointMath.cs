@@ -38,6 +38,9 @@ internal interface IPointMath<TV>
     /// <summary>The bits shifted right by <paramref name="count"/>, zeros shifted in.</summary>
     static abstract TV ShiftRightBits(TV bits, int count);
 
+    /// <summary>The bits shifted left by <paramref name="count"/> (below 32), zeros shifted in.</summary>
+    static abstract TV ShiftLeftBits(TV bits, int count);
+
     /// <summary><see cref="CounterHash.Hash"/> of the bits.</summary>
     static abstract TV Hash(TV bits);
 
@@ -74,6 +77,55 @@ internal interface IPointMath<TV>
     /// <paramref name="sub"/> a whole number below 2²⁴, in double; a lane type gives the float of that double.
     /// </summary>
     static abstract TV InSubCell(int cell, TV sub, TV bits, in CellDivisor n);
+
+    /// <summary>
+    /// <c>(cell + (sub + bits·scale) / d₁) / d₂</c> with <paramref name="formula"/>'s scale and divisors, the whole 32
+    /// bits of <paramref name="bits"/> the jitter's hash (Kensler's <c>randfloat</c> inside a cell), each lane's
+    /// <paramref name="cell"/> and <paramref name="sub"/> whole numbers below 2²⁴, in double; a lane type gives the
+    /// float of that double.
+    /// </summary>
+    static abstract TV InWholeCell(TV cell, TV sub, TV bits, in WholeCell formula);
+}
+
+/// <summary>
+/// The scale and divisors of <see cref="IPointMath{TV}.InWholeCell"/>, and the lanes' double formulas of it, made once.
+/// </summary>
+internal readonly struct WholeCell
+{
+    /// <summary>The jitter's scale.</summary>
+    public readonly double Scale;
+
+    /// <summary>d₁.</summary>
+    public readonly int Inner;
+
+    /// <summary>d₂.</summary>
+    public readonly int Outer;
+
+    /// <summary>True when d₁ and d₂ are both powers of two: the lanes take <see cref="PowerOfTwo"/>, with no branch.</summary>
+    public readonly bool IsPowerOfTwo;
+
+    /// <summary>The formula for the lanes.</summary>
+    public readonly WholeHashCellFormula Formula;
+
+    /// <summary>The formula for the lanes when <see cref="IsPowerOfTwo"/> (else unset).</summary>
+    public readonly PowerOfTwoCellFormula PowerOfTwo;
+
+    /// <summary>The formula with jitter scale <paramref name="scale"/> and divisors d₁ = <paramref name="inner"/>, d₂ = <paramref name="outer"/>.</summary>
+    /// <param name="scale">The jitter's scale.</param>
+    /// <param name="inner">d₁, a whole number ≥ 1.</param>
+    /// <param name="outer">d₂, a whole number ≥ 1.</param>
+    public WholeCell(double scale, int inner, int outer)
+    {
+        Scale = scale;
+        Inner = inner;
+        Outer = outer;
+        IsPowerOfTwo = int.IsPow2(inner) && int.IsPow2(outer);
+        Formula = new WholeHashCellFormula(new CellFormula(scale, inner, outer));
+        if (IsPowerOfTwo)
+        {
+            PowerOfTwo = new PowerOfTwoCellFormula(scale, inner, outer);
+        }
+    }
 }
 
 /// <summary>
@@ -149,6 +201,10 @@ internal readonly struct ScalarMath : IPointMath<ScalarLane>
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane ShiftLeftBits(ScalarLane bits, int count) => new(bits.Bits << count, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static ScalarLane Hash(ScalarLane bits) => new(CounterHash.Hash(bits.Bits), 0);
 
     /// <inheritdoc />
@@ -185,6 +241,11 @@ internal readonly struct ScalarMath : IPointMath<ScalarLane>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static ScalarLane InSubCell(int cell, ScalarLane sub, ScalarLane bits, in CellDivisor n) =>
         new(0, (cell + (((int)sub.Bits + CounterHash.ToUnit(bits.Bits)) / n.Inner)) / n.Outer);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static ScalarLane InWholeCell(ScalarLane cell, ScalarLane sub, ScalarLane bits, in WholeCell formula) =>
+        new(0, ((int)cell.Bits + (((int)sub.Bits + (bits.Bits * formula.Scale)) / formula.Inner)) / formula.Outer);
 }
 
 /// <summary><see cref="IPointMath{TV}"/> in the lanes of <typeparamref name="TL"/>, one pixel per lane, reals in float.</summary>
@@ -223,6 +284,10 @@ internal readonly struct LaneMath<TL> : IPointMath<TL>
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static TL ShiftRightBits(TL bits, int count) => TL.ShiftRightBits(bits, count);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL ShiftLeftBits(TL bits, int count) => TL.ShiftLeftBits(bits, count);
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -276,6 +341,16 @@ internal readonly struct LaneMath<TL> : IPointMath<TL>
 
         return TL.InDouble(n.Formula, s, TL.Top24(bits), TL.Broadcast(cell), default);
     }
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL InWholeCell(TL cell, TL sub, TL bits, in WholeCell formula) =>
+        formula.IsPowerOfTwo ? TL.InDoubleFromBits(formula.PowerOfTwo, sub, bits, cell) : InWholeCellDivided(cell, sub, bits, formula);
+
+    /// <summary><see cref="InWholeCell"/> with a divisor that is not a power of two, in a call of its own (the JIT's inlining budget).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+    private static TL InWholeCellDivided(TL cell, TL sub, TL bits, in WholeCell formula) =>
+        TL.InDoubleFromBits(formula.Formula, sub, bits, cell);
 }
 
 /// <summary><see cref="CounterHash"/> in <see cref="IPointMath{TV}"/>: the pixel keys and sample hashes of every sampler.</summary>
