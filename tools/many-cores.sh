@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# The every-core table on a machine with more cores than this one, where neither the .NET SDK nor a compiler is at
+# hand: everything is built here first, and the run needs only bash.
+#
+#   tools/many-cores.sh prepare [DIR]        here: the native builds (x86-64-v3 and -v4), raylab-scaling (native,
+#                                            both levels), the C++ anchor (both levels) with its input, the field scene
+#   tools/many-cores.sh run DIR OUT [ROUNDS] there: ROUNDS (default 5) interleaved rounds of every case at 1, 2, 4, 8,
+#                                            16 threads (and every core, if more), with the anchor in the same rounds;
+#                                            then raylab-scaling's model and in-process speed-ups on the same machine
+#   python3 tools/many-cores.py OUT          the tables (medians, speed-ups, RayLab against the anchor)
+#
+# DIR defaults to artifacts/many-cores. OUT gets machine.txt, raw.tsv (round, case, build, threads, ms) and
+# scaling.md. Each render is `raylab render SCENE --width 1920 --height 1080 --threads T --stats S --warmup` plus the
+# method's options; its time is the stats file's renderMs (the loop, after a scaled-down warm-up render and with the
+# image's memory committed, as the anchor commits its own before its clock).
+set -euo pipefail
+
+prepare() {
+  local dir=${1:-artifacts/many-cores}
+  cd "$(dirname "$0")/.."
+  rm -rf "$dir" && mkdir -p "$dir"
+  local tmp
+  for isa in x86-64-v3 x86-64-v4; do
+    tmp=$(mktemp -d)
+    dotnet publish samples/RayLab.Console -c Release -r linux-x64 -p:RayLabIsa=$isa -o "$tmp" -v q -nologo
+    cp "$tmp/raylab" "$dir/raylab-$isa"
+    rm -rf "$tmp" && tmp=$(mktemp -d)
+    dotnet publish tools/RayLab.Scaling -c Release -r linux-x64 -p:IlcInstructionSet=$isa \
+      -o "$tmp" -v q -nologo
+    cp "$tmp/RayLab.Scaling" "$dir/raylab-scaling-$isa"
+    rm -rf "$tmp"
+    g++ -O3 -march=$isa -ffast-math -fno-finite-math-only -std=c++17 -pthread -static-libstdc++ -static-libgcc \
+      benchmarks/anchors/native_ref.cpp -o "$dir/anchor-$isa"
+  done
+  # The anchor's input: the bench scene reduced to numbers, 4×4 strata (16 spp), THREADS standing for the count.
+  python3 benchmarks/anchors/native.py benchmarks/anchors/bench-1080.json 4 999 input | sed '1s/ 999 / THREADS /' \
+    > "$dir/anchor-input.txt"
+  python3 tools/sphere-scenes.py field 24 40 "$dir/field.json"
+  cp benchmarks/anchors/bench-1080.json "$dir/bench.json"
+  ls -la "$dir"
+}
+
+
+# One render's milliseconds: raylab's renderMs, or the anchor's seconds × 1000. Prints nothing when it failed.
+render_ms() {
+  local build=$1 threads=$2; shift 2
+  case $build in
+    anchor-*)
+      sed "1s/THREADS/$threads/" "$dir/anchor-input.txt" | "$dir/anchor-$isa" "${build#anchor-}" \
+        | sed -n 's/.*"seconds":\([0-9.]*\).*/\1/p' | awk '{ printf "%.4f", $1 * 1000 }' ;;
+    *)
+      rm -f "$tmp/s.json"
+      "$dir/raylab-$isa" render "$@" -o "$tmp/x.png" --width 1920 --height 1080 --threads "$threads" \
+        --stats "$tmp/s.json" --warmup > /dev/null 2>> "$out/errors.txt" || return 0
+      sed -n 's/.*"renderMs": *\([0-9.]*\).*/\1/p' "$tmp/s.json" ;;
+  esac
+}
+
+run() {
+  dir=$1 out=$2
+  local rounds=${3:-5}
+  mkdir -p "$out"
+  tmp=$(mktemp -d)
+  isa=x86-64-v3
+  grep -q avx512f /proc/cpuinfo && isa=x86-64-v4
+  local cores
+  cores=$(nproc)
+  {
+    echo "isa $isa; nproc $cores; load $(cat /proc/loadavg)"
+    lscpu 2>/dev/null || grep -m1 'model name' /proc/cpuinfo
+    echo "avx512: $(grep -o 'avx512[a-z_0-9]*' /proc/cpuinfo | sort -u | tr '\n' ' ')"
+    free -g 2>/dev/null || true
+  } > "$out/machine.txt"
+  local threads=""
+  for t in 1 2 4 8 16; do [ "$t" -le "$cores" ] && threads="$threads $t"; done
+  [ "$cores" -gt 16 ] && threads="$threads $cores"
+  # case name, build, then the render's arguments
+  local -a cases=(
+    "bench-jittered16|raylab|$dir/bench.json --sampler jittered --samples 16"
+    "bench-jittered16-vector256|raylab|$dir/bench.json --sampler jittered --samples 16 --kernel vector256"
+    "bench-jittered16-anchor-avx2v|anchor-avx2v|"
+    "bench-jittered256|raylab|$dir/bench.json --sampler jittered --samples 256"
+    "bench-adaptive|raylab|$dir/bench.json --sampler adaptive"
+    "bench-guard|raylab|$dir/bench.json --sampler adaptive --guard"
+    "bench-exact|raylab|$dir/bench.json --sampler exact"
+    "field-jittered16|raylab|$dir/field.json --sampler jittered --samples 16"
+    "field-adaptive|raylab|$dir/field.json --sampler adaptive"
+    "field-exact|raylab|$dir/field.json --sampler exact"
+  )
+  [ $isa = x86-64-v4 ] && cases+=("bench-jittered16-anchor-avx512|anchor-avx512|")
+  echo -e "round\tcase\tbuild\tthreads\tms" > "$out/raw.tsv"
+  for ((r = 1; r <= rounds; r++)); do
+    for c in "${cases[@]}"; do
+      IFS='|' read -r name build rest <<< "$c"
+      for t in $threads; do
+        # shellcheck disable=SC2086
+        ms=$(render_ms "$build" "$t" $rest)
+        echo -e "$r\t$name\t$build-$isa\t$t\t${ms:-NaN}" >> "$out/raw.tsv"
+      done
+    done
+    echo "round $r done: $(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg)" >> "$out/machine.txt"
+  done
+  cp "$dir/field.json" "${TMPDIR:-/tmp}/raylab-scaling-field-24-40.json"
+  "$dir/raylab-scaling-$isa" --rounds 3 --threads "$(echo $threads | tr ' ' ',')" --model "$(echo $threads | tr ' ' ',')" \
+    > "$out/scaling.md" 2>> "$out/errors.txt" || echo "raylab-scaling failed: $?" >> "$out/errors.txt"
+  rm -rf "$tmp"
+}
+
+usage() {
+  echo "usage: tools/many-cores.sh prepare [DIR] | run DIR OUT [ROUNDS]" >&2
+  exit 2
+}
+
+case "${1:-}" in
+  prepare) shift; prepare "$@" ;;
+  run) shift; [ $# -ge 2 ] || usage; run "$@" ;;
+  *) usage ;;
+esac
