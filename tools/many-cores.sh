@@ -6,7 +6,8 @@
 #                                            both levels), the C++ anchor (both levels) with its input, the field scene
 #   tools/many-cores.sh run DIR OUT [ROUNDS] there: ROUNDS (default 5) interleaved rounds of every case at 1, 2, 4, 8,
 #                                            16 threads (and every core, if more), with the anchor in the same rounds;
-#                                            then raylab-scaling's model and in-process speed-ups on the same machine
+#                                            then raylab-scaling's model, and its in-process speed-ups and wall-time
+#                                            breakdown (the row loop's crew against the .NET thread pool)
 #   python3 tools/many-cores.py OUT          the tables (medians, speed-ups, RayLab against the anchor)
 #
 # DIR defaults to artifacts/many-cores. OUT gets machine.txt, raw.tsv (round, case, build, threads, ms) and

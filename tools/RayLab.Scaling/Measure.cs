@@ -1,26 +1,86 @@
+using System.Diagnostics;
+using RayLab.Rendering;
+
 namespace RayLab.Scaling;
 
-/// <summary>Render times measured here: each thread count in turn, round by round, after a warm-up; medians of <see cref="RenderStatistics.RenderTime"/>.</summary>
+/// <summary>
+/// Render times measured here, each thread count and each source of threads in turn, round by round, after a warm-up:
+/// medians of <see cref="RenderStatistics.RenderTime"/>, and where the wall time of each render went (<see cref="Wall"/>).
+/// </summary>
 internal static class Measure
 {
-    public static Dictionary<int, double> Interleaved(Case c, int[] threads, int rounds)
+    /// <summary>The sources of the row loop's threads: the crew it wakes at once, and the .NET thread pool.</summary>
+    public static readonly (string Name, bool Crew)[] Loops = [("crew", true), ("thread pool", false)];
+
+    public static Dictionary<(string Loop, int Threads), (double Ms, Wall Wall)> Interleaved(Case c, int[] threads, int rounds)
     {
         Renderer[] renderers = [.. threads.Select(n => new Renderer { MaxDegreeOfParallelism = n })];
         Image image = c.Prepared.CreateImage();
-        var times = threads.Select(_ => new List<double>()).ToArray();
-        foreach (Renderer r in renderers)
+        var times = new Dictionary<(string, int), List<(double Ms, Wall Wall)>>();
+        for (int round = -1; round < rounds; round++)
         {
-            c.Prepared.Render(r, image);
-        }
-
-        for (int round = 0; round < rounds; round++)
-        {
-            for (int i = 0; i < threads.Length; i++)
+            foreach ((string loop, bool crew) in Loops)
             {
-                times[i].Add(c.Prepared.Render(renderers[i], image).RenderTime.TotalMilliseconds);
+                CrewFor.UseCrew = crew;
+                for (int i = 0; i < threads.Length; i++)
+                {
+                    var trace = new RowLoopTrace();
+                    renderers[i].Trace = trace;
+                    double ms = c.Prepared.Render(renderers[i], image).RenderTime.TotalMilliseconds;
+                    renderers[i].Trace = null;
+                    if (round >= 0) // round −1 warms up: the JIT, the threads, the pools
+                    {
+                        (times.TryGetValue((loop, threads[i]), out var list) ? list : times[(loop, threads[i])] = []).Add((ms, Wall.Of(trace)));
+                    }
+                }
             }
         }
 
-        return threads.Select((n, i) => (n, i)).ToDictionary(p => p.n, p => Profile.Median(times[p.i]));
+        CrewFor.UseCrew = true;
+        return times.ToDictionary(p => p.Key, p => (Profile.Median(p.Value.Select(v => v.Ms)), Wall.Median(p.Value.Select(v => v.Wall))));
+    }
+}
+
+/// <summary>
+/// Where one render's wall time went, in ms: the set-up before the rows, how long after the rows started the last
+/// worker took its first row, the rows from first to last, the rows' summed time over all threads, the mean time a
+/// worker sat idle between its last row and the end of the rows, and the work after them.
+/// </summary>
+internal readonly record struct Wall(double SetUp, double LastStart, double Rows, double Work, double IdleAtEnd, double After)
+{
+    public static Wall Of(RowLoopTrace t)
+    {
+        double Ms(long ticks) => ticks * 1000.0 / Stopwatch.Frequency;
+        int workers = t.RowWorker.Length == 0 ? 0 : t.RowWorker.Max() + 1;
+        var first = Enumerable.Repeat(long.MaxValue, workers).ToArray();
+        var last = new long[workers];
+        for (int r = 0; r < t.RowTicks.Length; r++)
+        {
+            int w = t.RowWorker[r];
+            first[w] = Math.Min(first[w], t.RowBegan[r]);
+            last[w] = Math.Max(last[w], t.RowBegan[r] + t.RowTicks[r]);
+        }
+
+        long[] started = [.. first.Where(f => f != long.MaxValue)];
+        long[] ended = [.. last.Where(l => l != 0)];
+        return new Wall(
+            Ms(t.RowsStarted - t.Started),
+            started.Length == 0 ? 0 : Ms(started.Max() - t.RowsStarted),
+            Ms(t.RowsEnded - t.RowsStarted),
+            Ms(t.RowTicks.Sum()),
+            ended.Length == 0 ? 0 : ended.Average(e => Ms(t.RowsEnded - e)),
+            Ms(t.Finished - t.RowsEnded));
+    }
+
+    public static Wall Median(IEnumerable<Wall> walls)
+    {
+        Wall[] all = [.. walls];
+        return new Wall(
+            Profile.Median(all.Select(w => w.SetUp)),
+            Profile.Median(all.Select(w => w.LastStart)),
+            Profile.Median(all.Select(w => w.Rows)),
+            Profile.Median(all.Select(w => w.Work)),
+            Profile.Median(all.Select(w => w.IdleAtEnd)),
+            Profile.Median(all.Select(w => w.After)));
     }
 }

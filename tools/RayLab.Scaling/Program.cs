@@ -41,6 +41,7 @@ catch (Exception e) when (e is ArgumentException or IOException or InvalidOperat
 
 Console.WriteLine($"# {Environment.ProcessorCount} processors, {rounds} rounds; load average {File.ReadAllText("/proc/loadavg").Trim()}");
 var summary = new List<string>();
+var poolSummary = new List<string>();
 int[] all = [.. modelled.Union(measured).Order()];
 foreach (Case c in cases)
 {
@@ -51,7 +52,8 @@ foreach (Case c in cases)
     Console.WriteLine();
     Console.WriteLine($"## {c.Name}: {c.Description.Width}×{c.Description.Height}, {c.Description.Scene.Spheres.Count} spheres, {c.Description.Sampler.Type}{(c.Description.Sampler.Guard ? " --guard" : "")}");
     profile.PrintPhases();
-    Dictionary<int, double> times = Measure.Interleaved(c, measured, rounds);
+    var walls = Measure.Interleaved(c, measured, rounds);
+    Dictionary<int, double> times = walls.Where(p => p.Key.Loop == "crew").ToDictionary(p => p.Key.Threads, p => p.Value.Ms);
     Console.WriteLine();
     Console.WriteLine("| threads | model ms | model speed-up | model of the loop before | measured ms (median) | measured speed-up |");
     Console.WriteLine("|---:|---:|---:|---:|---:|---:|");
@@ -65,6 +67,23 @@ foreach (Case c in cases)
         cells.Add($"{model1 / predicted:F2}×");
     }
 
+    // Where the measured wall time went, per source of threads (medians; ms).
+    Console.WriteLine();
+    Console.WriteLine("| threads from | threads | renderMs | set-up | last worker starts | rows | rows' work, all threads | work / work on 1 thread | idle at the end, mean | after |");
+    Console.WriteLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    foreach ((string loop, _) in Measure.Loops)
+    {
+        foreach (int n in measured)
+        {
+            (double ms, Wall w) = walls[(loop, n)];
+            double work1 = walls[(loop, measured.Min())].Wall.Work;
+            Console.WriteLine($"| {loop} | {n} | {ms:F2} | {w.SetUp:F2} | {w.LastStart:F3} | {w.Rows:F2} | {w.Work:F2} | {w.Work / work1:F2} | {w.IdleAtEnd:F3} | {w.After:F2} |");
+        }
+    }
+
+    double pool1 = walls.GetValueOrDefault(("thread pool", 1)).Ms;
+    poolSummary.Add($"| {c.Name} | {string.Join(" | ", measured.Select(n => $"{measured1 / walls[("crew", n)].Ms:F2}× / {pool1 / walls[("thread pool", n)].Ms:F2}×"))} |");
+
     int most = all[^1];
     summary.Add($"| {c.Name} | {model1:F1} | {string.Join(" | ", cells)} | {before1 / before.Predict(most):F2}× | {(times.TryGetValue(2, out double two) ? $"{measured1 / two:F2}×" : "–")} |");
 }
@@ -73,6 +92,12 @@ Console.WriteLine();
 Console.WriteLine($"| case | 1 thread, model ms (CPU) | {string.Join(" | ", all.Select(n => $"model {n}"))} | loop before, model {all[^1]} | measured 2 |");
 Console.WriteLine($"|---|---:|{string.Join("", all.Select(_ => "---:|"))}---:|---:|");
 summary.ForEach(Console.WriteLine);
+Console.WriteLine();
+Console.WriteLine($"Measured speed-up, the crew's threads / the thread pool's:");
+Console.WriteLine();
+Console.WriteLine($"| case | {string.Join(" | ", measured)} |");
+Console.WriteLine($"|---|{string.Join("", measured.Select(_ => "---:|"))}");
+poolSummary.ForEach(Console.WriteLine);
 Console.WriteLine();
 Console.WriteLine($"load average at the end: {File.ReadAllText("/proc/loadavg").Trim()}");
 return 0;

@@ -33,6 +33,9 @@ internal sealed class BandSchedule
         }
     }
 
+    /// <summary>The workers, numbered 0 to <see cref="WorkerCount"/> − 1.</summary>
+    public int WorkerCount => _ranges.Length;
+
     /// <summary>The threads a loop of <paramref name="bands"/> bands uses at most <paramref name="maxDegreeOfParallelism"/> wide (−1: the processor count).</summary>
     public static int Workers(int bands, int maxDegreeOfParallelism) =>
         Math.Max(1, Math.Min(bands, maxDegreeOfParallelism == -1 ? Environment.ProcessorCount : maxDegreeOfParallelism));

@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using System.Runtime.ExceptionServices;
 
 namespace RayLab.Rendering;
 
@@ -62,58 +61,32 @@ internal readonly struct RowLoop
     public static RowLoop Start(RenderOptions options, int rows) => new(options, rows);
 
     /// <summary>
-    /// Renders every row, the token checked before each. Each thread renders a range of consecutive rows and steals
-    /// half of the fullest range when its own is done (<see cref="BandSchedule"/>), so the threads finish together
-    /// wherever the costly rows are. A renderer's own exception is rethrown as it was thrown.
+    /// Renders every row, the token checked before each, on <see cref="CrewFor"/>. Each thread renders a range of
+    /// consecutive rows and steals half of the fullest range when its own is done (<see cref="BandSchedule"/>), so the
+    /// threads finish together wherever the costly rows are. A renderer's own exception is rethrown as it was thrown.
     /// </summary>
     /// <returns>What the threads counted.</returns>
     /// <exception cref="OperationCanceledException">The render was cancelled.</exception>
     public RowTotals Run<TScratch>(IRowRenderer<TScratch> renderer)
     {
         var totals = new RowTotals();
-        var gate = new Lock();
         // The rows this render fills (all, or Renderer.RenderRows' band).
         (int start, int stop) = _options.Rows(_rows);
         stop = Math.Max(start, stop);
         RenderProgress? progress = _options.Progress;
-        CancellationToken token = _options.CancellationToken;
         RowLoopTrace? trace = _options.Trace;
         int workers = BandSchedule.Workers(stop - start, _options.MaxDegreeOfParallelism);
         var schedule = new BandSchedule(start, stop, workers, trace is { Scattered: true } && workers == 1);
         trace?.Begin(start, stop);
-        var parallel = new ParallelOptions { MaxDegreeOfParallelism = workers, CancellationToken = token };
-        try
+        CrewFor.Run(schedule, renderer.Rent, (int row, int worker, ref TScratch scratch) =>
         {
-            // One iteration per worker, its number its range in the schedule; a worker renders rows until the
-            // schedule has none left. A worker that starts late finds its range stolen: nobody waits for a thread.
-            Parallel.For(0, workers, parallel, renderer.Rent, (worker, state, scratch) =>
-            {
-                // A worker stops taking rows once another has thrown (ShouldExitCurrentIteration) or the token is cancelled.
-                while (!token.IsCancellationRequested && !state.ShouldExitCurrentIteration && schedule.TryTake(worker, out int row))
-                {
-                    long began = trace?.Clock() ?? 0;
-                    renderer.RenderRow(row, ref scratch);
-                    progress?.CompleteRow();
-                    trace?.Row(row, began, trace.Clock());
-                }
-
-                return scratch;
-            }, scratch =>
-            {
-                lock (gate)
-                {
-                    renderer.Return(scratch, ref totals);
-                }
-            });
-        }
-        catch (AggregateException e) when (e.InnerExceptions.Count == 1)
-        {
-            // The renderer's own exception (a pixel method's point outside the pixel, say), not Parallel.For's wrapper.
-            ExceptionDispatchInfo.Capture(e.InnerExceptions[0]).Throw();
-        }
-
+            long began = trace?.Clock() ?? 0;
+            renderer.RenderRow(row, ref scratch);
+            progress?.CompleteRow();
+            trace?.Row(row, worker, began, trace.Clock());
+        }, scratch => renderer.Return(scratch, ref totals), _options.CancellationToken);
         trace?.End();
-        token.ThrowIfCancellationRequested();
+        _options.CancellationToken.ThrowIfCancellationRequested();
         return totals;
     }
 

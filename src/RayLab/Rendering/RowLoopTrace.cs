@@ -36,6 +36,12 @@ internal sealed class RowLoopTrace
     /// <summary>Each row's time in ticks, from <see cref="FirstRow"/> on.</summary>
     public long[] RowTicks { get; private set; } = [];
 
+    /// <summary>When each row began, from <see cref="FirstRow"/> on.</summary>
+    public long[] RowBegan { get; private set; } = [];
+
+    /// <summary>The worker that rendered each row, from <see cref="FirstRow"/> on.</summary>
+    public int[] RowWorker { get; private set; } = [];
+
     /// <summary>The clock starts.</summary>
     public void Start() => Started = Clock();
 
@@ -45,10 +51,17 @@ internal sealed class RowLoopTrace
         RowsStarted = Clock();
         FirstRow = firstRow;
         RowTicks = new long[endRow - firstRow];
+        RowBegan = new long[endRow - firstRow];
+        RowWorker = new int[endRow - firstRow];
     }
 
-    /// <summary>Row <paramref name="row"/> ran from <paramref name="began"/> to <paramref name="ended"/>.</summary>
-    public void Row(int row, long began, long ended) => RowTicks[row - FirstRow] = ended - began;
+    /// <summary>Row <paramref name="row"/> ran on worker <paramref name="worker"/> from <paramref name="began"/> to <paramref name="ended"/>.</summary>
+    public void Row(int row, int worker, long began, long ended)
+    {
+        RowTicks[row - FirstRow] = ended - began;
+        RowBegan[row - FirstRow] = began;
+        RowWorker[row - FirstRow] = worker;
+    }
 
     /// <summary>The rows are done.</summary>
     public void End() => RowsEnded = Clock();

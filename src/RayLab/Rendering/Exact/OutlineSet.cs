@@ -243,12 +243,9 @@ internal sealed class OutlineSet
         // merged, so the order is always the same.
         int[] byTop = [.. Enumerable.Range(0, outlines.Length).OrderBy(k => outlines[k].Top)];
         parallel ??= new ParallelOptions();
-        if (outlines.Length < 64)
-        {
-            parallel = new ParallelOptions { MaxDegreeOfParallelism = 1, CancellationToken = parallel.CancellationToken };
-        }
-
-        Parallel.For(0, byTop.Length, parallel, () => new List<Crossing>(), (s, _, found) =>
+        // Outlines low in a deep scene overlap many others in height: their pairs are taken by stealing, as rows are.
+        int workers = outlines.Length < 64 ? 1 : BandSchedule.Workers(byTop.Length, parallel.MaxDegreeOfParallelism);
+        CrewFor.Run(new BandSchedule(0, byTop.Length, workers), () => new List<Crossing>(), (int s, int _, ref List<Crossing> found) =>
         {
             Span<double> thetas = stackalloc double[4];
             for (int u = s + 1; u < byTop.Length && outlines[byTop[u]].Top <= outlines[byTop[s]].Bottom; u++)
@@ -277,16 +274,12 @@ internal sealed class OutlineSet
                     }
                 }
             }
-
-            return found;
         }, found =>
         {
             found.Sort();
-            lock (lists)
-            {
-                lists.Add(found);
-            }
-        });
+            lists.Add(found);
+        }, parallel.CancellationToken);
+        parallel.CancellationToken.ThrowIfCancellationRequested();
 
         return Merge(lists);
     }

@@ -1,0 +1,43 @@
+#!/usr/bin/env python3
+"""The tables of a `tools/many-cores.sh run` folder: the median ms of each case and build at each thread count, the
+speed-up over 1 thread, and RayLab's jittered 16 against the C++ anchors at every count.
+
+Usage: python3 tools/many-cores.py OUT   (OUT: the folder `tools/many-cores.sh run DIR OUT` wrote)
+"""
+import collections, math, os, statistics, sys
+
+if len(sys.argv) != 2 or not os.path.isfile(os.path.join(sys.argv[1], "raw.tsv")):
+    sys.exit("usage: python3 tools/many-cores.py OUT   (OUT holds raw.tsv from tools/many-cores.sh run)")
+out = sys.argv[1]
+times = collections.defaultdict(list)
+order = []
+with open(os.path.join(out, "raw.tsv")) as f:
+    next(f)
+    for line in f:
+        r, case, build, threads, ms = line.rstrip("\n").split("\t")
+        if case not in order:
+            order.append(case)
+        if ms != "NaN":
+            times[(case, int(threads))].append(float(ms))
+threads = sorted({t for _, t in times})
+rounds = max(len(v) for v in times.values())
+median = {k: statistics.median(v) for k, v in times.items()}
+print(open(os.path.join(out, "machine.txt")).readline().strip())
+print(f"\nmedian ms of {rounds} interleaved rounds; speed-up = median at 1 thread / median at N\n")
+print("| case | 1 thread ms | " + " | ".join(f"{t}" for t in threads[1:]) + f" | {threads[-1]} threads ms |")
+print("|---|---:|" + "---:|" * len(threads))
+for case in order:
+    one = median.get((case, 1), math.nan)
+    cells = [f"{one / median[(case, t)]:.2f}×" if (case, t) in median else "–" for t in threads[1:]]
+    last = median.get((case, threads[-1]), math.nan)
+    print(f"| {case} | {one:.1f} | " + " | ".join(cells) + f" | {last:.1f} |")
+anchors = [c for c in order if "-anchor-" in c and c.startswith("bench-jittered16")]
+if anchors and any(("bench-jittered16", t) in median for t in threads):
+    print("\nRayLab's bench-jittered16 time over the anchor's (below 1: RayLab is faster)\n")
+    print("| anchor | " + " | ".join(f"{t}" for t in threads) + " |")
+    print("|---|" + "---:|" * len(threads))
+    for a in anchors:
+        for raylab in ("bench-jittered16", "bench-jittered16-vector256"):
+            cells = [f"{median[(raylab, t)] / median[(a, t)]:.2f}" if (raylab, t) in median and (a, t) in median else "–"
+                     for t in threads]
+            print(f"| {raylab} / {a.split('-anchor-')[1]} | " + " | ".join(cells) + " |")
