@@ -14,7 +14,7 @@ internal class Model(Profile profile)
     protected Profile Profile => profile;
 
     public double Predict(int threads) =>
-        profile.PreparationMs - profile.ParallelPreparationMs + (profile.ParallelPreparationMs / threads) + Rows(threads) + profile.AfterMs;
+        Math.Max(0, profile.PreparationMs - profile.ParallelPreparationMs) + (profile.ParallelPreparationMs / threads) + Rows(threads) + profile.AfterMs;
 
     /// <summary>The row loop's time on <paramref name="threads"/> threads.</summary>
     protected virtual double Rows(int threads)

@@ -57,7 +57,7 @@ internal static class ExactRenderer
     {
         var loop = RowLoop.Start(options, plane.Height);
         OutlineSet outlines = OutlineSet.Build(scene, plane, parallel: options.Parallel);
-        loop.Run(new Rows(scene, plane, outlines, sweep, target));
+        loop.Run(new Rows(scene, plane, outlines, sweep, target, options));
         return loop.Finish(0, RenderKernel.Scalar);
     }
 
@@ -90,9 +90,11 @@ internal static class ExactRenderer
     public static void Check(Scene scene, ImagePlane plane) => OutlineSet.Check(scene, plane);
 
     /// <summary>The exact rows: each thread integrates rows with its own <see cref="ExactRow"/>, then writes them.</summary>
-    private sealed class Rows(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep, PixelTarget target) : IRowRenderer<ExactRow>
+    private sealed class Rows(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep, PixelTarget target, RenderOptions options) : IRowRenderer<ExactRow>
     {
-        public ExactRow Rent() => new(scene, plane, outlines, sweep);
+        public ExactRow Rent() => new(scene, plane, outlines, sweep, options.Rent<RowPixels.Buffers>());
+
+        public void Return(ExactRow worker, ref RowTotals totals) => options.Return(worker.Buffers);
 
         [MethodImpl(MethodImplOptions.AggressiveOptimization)]
         public void RenderRow(int row, ref ExactRow worker)

@@ -46,13 +46,13 @@ internal sealed class ExactRow
     private readonly List<(double Y, int Outline, bool Crossing)> _events = [];
     private readonly bool _sweeps;
 
-    public ExactRow(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep = true)
+    public ExactRow(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep = true, RowPixels.Buffers? buffers = null)
     {
         _sweeps = sweep;
         _outlines = outlines;
         _width = plane.Width;
         _rays = new PixelRays(scene, plane);
-        _pixels = new RowPixels(_width);
+        _pixels = new RowPixels(_width, buffers ?? new());
         _branches = new RowBranches(outlines.Outlines);
         _strips = new StripCutter(outlines.Outlines, _width, _branches, _rays, _pixels);
         _sweep = new RowSweep(outlines.Outlines, _width, _branches, _rays, _pixels);
@@ -63,6 +63,9 @@ internal sealed class ExactRow
     /// when the row <see cref="IsUniform"/>.
     /// </summary>
     public double[] Values => _pixels.Values;
+
+    /// <summary>The row's arrays, for the renderer to keep for its next render.</summary>
+    public RowPixels.Buffers Buffers => _pixels.Arrays;
 
     /// <summary>True when no outline reaches into the last row: every pixel is <see cref="UniformColor"/>.</summary>
     public bool IsUniform { get; private set; }
