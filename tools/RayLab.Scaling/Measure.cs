@@ -44,10 +44,13 @@ internal static class Measure
 /// <summary>
 /// Where one render's wall time went, in ms: the set-up before the rows, how long after the rows started the last
 /// worker took its first row, the rows from first to last, the rows' summed time over all threads, the mean time a
-/// worker sat idle between its last row and the end of the rows, and the work after them.
+/// worker sat idle between its last row and the end of the rows, the work after them, and the set-up's steps.
 /// </summary>
-internal readonly record struct Wall(double SetUp, double LastStart, double Rows, double Work, double IdleAtEnd, double After)
+internal readonly record struct Wall(double SetUp, double LastStart, double Rows, double Work, double IdleAtEnd, double After, (string Step, double Ms)[] Steps)
 {
+    /// <summary>The set-up's steps, each its own time: "outlines 0.61, crossings 3.20".</summary>
+    public string StepsText => Steps.Length == 0 ? "–" : string.Join(", ", Steps.Select(s => $"{s.Step} {s.Ms:F2}"));
+
     public static Wall Of(RowLoopTrace t)
     {
         double Ms(long ticks) => ticks * 1000.0 / Stopwatch.Frequency;
@@ -69,7 +72,8 @@ internal readonly record struct Wall(double SetUp, double LastStart, double Rows
             Ms(t.RowsEnded - t.RowsStarted),
             Ms(t.RowTicks.Sum()),
             ended.Length == 0 ? 0 : ended.Average(e => Ms(t.RowsEnded - e)),
-            Ms(t.Finished - t.RowsEnded));
+            Ms(t.Finished - t.RowsEnded),
+            [.. t.SetUpSteps.Select((s, i) => (s.Step, Ms(s.Ended - (i == 0 ? t.Started : t.SetUpSteps[i - 1].Ended))))]);
     }
 
     public static Wall Median(IEnumerable<Wall> walls)
@@ -81,6 +85,7 @@ internal readonly record struct Wall(double SetUp, double LastStart, double Rows
             Profile.Median(all.Select(w => w.Rows)),
             Profile.Median(all.Select(w => w.Work)),
             Profile.Median(all.Select(w => w.IdleAtEnd)),
-            Profile.Median(all.Select(w => w.After)));
+            Profile.Median(all.Select(w => w.After)),
+            [.. all[0].Steps.Select((s, i) => (s.Step, Profile.Median(all.Select(w => w.Steps[i].Ms))))]);
     }
 }

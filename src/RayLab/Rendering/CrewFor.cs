@@ -19,13 +19,13 @@ internal static class CrewFor
 
     /// <summary>
     /// Runs <paramref name="body"/> for every item of <paramref name="schedule"/> on its workers, each with a state
-    /// from <paramref name="start"/> that <paramref name="finish"/> receives under a lock when the worker is done. A
+    /// from <paramref name="start"/> that <paramref name="finish"/> receives on the worker's thread when it is done
+    /// (workers finish side by side: <paramref name="finish"/> takes its own lock where it needs one). A
     /// worker stops taking items once another has thrown or <paramref name="token"/> is cancelled; the first exception
     /// is rethrown as it was thrown.
     /// </summary>
     public static void Run<TLocal>(BandSchedule schedule, Func<TLocal> start, CrewForBody<TLocal> body, Action<TLocal> finish, CancellationToken token)
     {
-        var gate = new Lock();
         bool failed = false;
 
         void Work(int worker)
@@ -45,10 +45,7 @@ internal static class CrewFor
             }
             finally
             {
-                lock (gate)
-                {
-                    finish(local);
-                }
+                finish(local);
             }
         }
 

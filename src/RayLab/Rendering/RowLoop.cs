@@ -70,6 +70,7 @@ internal readonly struct RowLoop
     public RowTotals Run<TScratch>(IRowRenderer<TScratch> renderer)
     {
         var totals = new RowTotals();
+        var gate = new Lock();
         // The rows this render fills (all, or Renderer.RenderRows' band).
         (int start, int stop) = _options.Rows(_rows);
         stop = Math.Max(start, stop);
@@ -84,7 +85,13 @@ internal readonly struct RowLoop
             renderer.RenderRow(row, ref scratch);
             progress?.CompleteRow();
             trace?.Row(row, worker, began, trace.Clock());
-        }, scratch => renderer.Return(scratch, ref totals), _options.CancellationToken);
+        }, scratch =>
+        {
+            lock (gate)
+            {
+                renderer.Return(scratch, ref totals);
+            }
+        }, _options.CancellationToken);
         trace?.End();
         _options.CancellationToken.ThrowIfCancellationRequested();
         return totals;

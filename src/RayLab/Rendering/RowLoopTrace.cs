@@ -42,6 +42,12 @@ internal sealed class RowLoopTrace
     /// <summary>The worker that rendered each row, from <see cref="FirstRow"/> on.</summary>
     public int[] RowWorker { get; private set; } = [];
 
+    /// <summary>Steps of the set-up before the rows, each with when it ended (the exact outlines, their crossings).</summary>
+    public List<(string Step, long Ended)> SetUpSteps { get; } = [];
+
+    /// <summary>A step of the set-up has ended.</summary>
+    public void SetUpStep(string step) => SetUpSteps.Add((step, Clock()));
+
     /// <summary>The clock starts.</summary>
     public void Start() => Started = Clock();
 

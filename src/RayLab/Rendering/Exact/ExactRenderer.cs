@@ -56,7 +56,7 @@ internal static class ExactRenderer
     public static RenderStatistics Render(Scene scene, ImagePlane plane, PixelTarget target, RenderOptions options, bool sweep = true)
     {
         var loop = RowLoop.Start(options, plane.Height);
-        OutlineSet outlines = OutlineSet.Build(scene, plane, parallel: options.Parallel);
+        OutlineSet outlines = OutlineSet.Build(scene, plane, options.Parallel, options.Trace);
         loop.Run(new Rows(scene, plane, outlines, sweep, target, options));
         return loop.Finish(0, RenderKernel.Scalar);
     }

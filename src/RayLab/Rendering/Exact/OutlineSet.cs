@@ -44,12 +44,13 @@ internal sealed class OutlineSet
     /// <param name="scene">The scene.</param>
     /// <param name="plane">The camera's image plane.</param>
     /// <param name="parallel">The threads to find the crossings with (and the cancellation); null for the defaults.</param>
+    /// <param name="trace">Where to record when the outlines and their crossings were done, for the scaling tool; or null.</param>
     /// <exception cref="UnsupportedSceneException">
     /// A sphere that visible rays can reach extends behind a perspective camera's eye (or within 1e-4 of its
     /// radius of the plane through the eye): its outline is not an ellipse. Or the zoom is so high that double
     /// rounding alone moves its picture by more than 1e-6 of a pixel (<see cref="OutlineProjection.RoundingInPixels"/>).
     /// </exception>
-    public static OutlineSet Build(Scene scene, ImagePlane plane, ParallelOptions? parallel = null)
+    public static OutlineSet Build(Scene scene, ImagePlane plane, ParallelOptions? parallel = null, RowLoopTrace? trace = null)
     {
         var projection = new OutlineProjection(plane);
         double depthPerT = plane.DepthPerT;
@@ -90,7 +91,10 @@ internal sealed class OutlineSet
 
         Outline[] inImage = outlines.Where(o => (o.Hx > 0 || o.Hy > 0)
             && o.Right >= 0 && o.Left <= plane.Width && o.Bottom >= 0 && o.Top <= plane.Height).ToArray();
-        return new OutlineSet(inImage, FindCrossings(inImage, plane.Height, parallel));
+        trace?.SetUpStep("outlines");
+        Crossing[] crossings = FindCrossings(inImage, plane.Height, parallel);
+        trace?.SetUpStep("crossings");
+        return new OutlineSet(inImage, crossings);
     }
 
     /// <summary>
@@ -277,30 +281,38 @@ internal sealed class OutlineSet
         }, found =>
         {
             found.Sort();
-            lists.Add(found);
+            lock (lists)
+            {
+                lists.Add(found);
+            }
         }, parallel.CancellationToken);
         parallel.CancellationToken.ThrowIfCancellationRequested();
 
         return Merge(lists);
     }
 
-    /// <summary>The sorted lists merged into one sorted array (a few lists: each step takes the least head).</summary>
+    /// <summary>The sorted lists merged into one sorted array: the least head of each list in a heap (log k steps for k lists).</summary>
     private static Crossing[] Merge(List<List<Crossing>> lists)
     {
         var merged = new Crossing[lists.Sum(l => l.Count)];
         var next = new int[lists.Count];
+        var heads = new PriorityQueue<int, Crossing>(lists.Count);
+        for (int l = 0; l < lists.Count; l++)
+        {
+            if (lists[l].Count > 0)
+            {
+                heads.Enqueue(l, lists[l][0]);
+            }
+        }
+
         for (int k = 0; k < merged.Length; k++)
         {
-            int least = -1;
-            for (int l = 0; l < lists.Count; l++)
+            int l = heads.Dequeue();
+            merged[k] = lists[l][next[l]++];
+            if (next[l] < lists[l].Count)
             {
-                if (next[l] < lists[l].Count && (least < 0 || lists[l][next[l]].CompareTo(lists[least][next[least]]) < 0))
-                {
-                    least = l;
-                }
+                heads.Enqueue(l, lists[l][next[l]]);
             }
-
-            merged[k] = lists[least][next[least]++];
         }
 
         return merged;
