@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The tables of a `tools/many-cores.sh run` folder: the median ms of each case and build at each thread count, the
-speed-up over 1 thread, and RayLab's jittered 16 against the C++ anchors at every count.
+speed-up over 1 thread, and RayLab's jittered 16 against the C++ anchors at every count (the anchor's time over RayLab's).
 
 Usage: python3 tools/many-cores.py OUT   (OUT: the folder `tools/many-cores.sh run DIR OUT` wrote)
 """
@@ -33,11 +33,11 @@ for case in order:
     print(f"| {case} | {one:.1f} | " + " | ".join(cells) + f" | {last:.1f} |")
 anchors = [c for c in order if "-anchor-" in c and c.startswith("bench-jittered16")]
 if anchors and any(("bench-jittered16", t) in median for t in threads):
-    print("\nRayLab's bench-jittered16 time over the anchor's (below 1: RayLab is faster)\n")
+    print("\nThe anchor's bench-jittered16 time over RayLab's (above 1: RayLab is faster)\n")
     print("| anchor | " + " | ".join(f"{t}" for t in threads) + " |")
     print("|---|" + "---:|" * len(threads))
     for a in anchors:
         for raylab in ("bench-jittered16", "bench-jittered16-vector256"):
-            cells = [f"{median[(raylab, t)] / median[(a, t)]:.2f}" if (raylab, t) in median and (a, t) in median else "–"
+            cells = [f"{median[(a, t)] / median[(raylab, t)]:.2f}" if (raylab, t) in median and (a, t) in median else "–"
                      for t in threads]
-            print(f"| {raylab} / {a.split('-anchor-')[1]} | " + " | ".join(cells) + " |")
+            print(f"| {raylab} against {a.split('-anchor-')[1]} | " + " | ".join(cells) + " |")

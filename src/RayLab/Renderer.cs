@@ -127,16 +127,30 @@ public sealed class Renderer
         }
     }
 
+    /// <summary>Renders through an image plane already built from the camera (a prepared scene's), into <paramref name="image"/> of the plane's size.</summary>
+    internal RenderStatistics Render(Scene scene, ImagePlane plane, RenderMethod method, Image image, float[]? raysPerPixel)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(method);
+        PixelTarget target = PixelTarget.Of(image);
+        CheckRays(target, raysPerPixel);
+        return method.Render(scene, plane, target, Options, raysPerPixel);
+    }
+
+    private static void CheckRays(PixelTarget image, float[]? raysPerPixel)
+    {
+        if (raysPerPixel is not null && raysPerPixel.LongLength != (long)image.Width * image.Height)
+        {
+            throw new ArgumentException($"Expected {image.Width}×{image.Height} entries, got {raysPerPixel.Length}.", nameof(raysPerPixel));
+        }
+    }
+
     private static RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, PixelTarget image, float[]? raysPerPixel, RenderOptions options)
     {
         ArgumentNullException.ThrowIfNull(scene);
         ArgumentNullException.ThrowIfNull(camera);
         ArgumentNullException.ThrowIfNull(method);
-        if (raysPerPixel is not null && raysPerPixel.LongLength != (long)image.Width * image.Height)
-        {
-            throw new ArgumentException($"Expected {image.Width}×{image.Height} entries, got {raysPerPixel.Length}.", nameof(raysPerPixel));
-        }
-
+        CheckRays(image, raysPerPixel);
         ImagePlane plane = camera.GetImagePlane(image.Width, image.Height);
         return method.Render(scene, plane, image, options, raysPerPixel);
     }

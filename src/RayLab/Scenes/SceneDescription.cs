@@ -16,8 +16,8 @@ public sealed record SceneDescription(
     string Source, int Width, int Height, Scene Scene, CameraSettings Camera, SamplerSettings Sampler)
 {
     /// <summary>
-    /// Builds and checks the camera and sampler (the camera's image plane is built once, for its checks and the
-    /// exact reference's, which make no outlines). A problem is reported as a
+    /// Builds and checks the camera and sampler. The camera's image plane is built once, here: its checks and the
+    /// exact reference's (which make no outlines) use it, and so does <see cref="PreparedScene.Render"/>. A problem is reported as a
     /// <see cref="SceneFileException"/> naming the scene-file field, even when it came from a combination of
     /// fields (position equal to target, near ≥ far) or from an override.
     /// </summary>
@@ -33,7 +33,7 @@ public sealed record SceneDescription(
             CheckAtMost(Height, SceneFile.MaxImageSide, "height");
             section = SceneSection.Camera;
             Camera camera = Camera.CreateCamera();
-            ImagePlane plane = camera.GetImagePlane(Width, Height); // the camera's checks; the renderer builds its own from the camera it is given
+            ImagePlane plane = camera.GetImagePlane(Width, Height); // the camera's checks, and the plane every render of it uses
             section = SceneSection.Sampler;
             if (!Sampler.IsExact && !Sampler.IsAdaptive)
             {
@@ -42,7 +42,7 @@ public sealed record SceneDescription(
 
             RenderMethod method = Sampler.CreateMethod();
             method.Check(Scene, plane); // what a render would refuse (the exact outlines' checks), without rendering
-            return new PreparedScene(this, camera, method);
+            return new PreparedScene(this, camera, method) { Prepared = (camera, plane) };
         }
         catch (UnsupportedSceneException e)
         {
@@ -90,8 +90,15 @@ public sealed record PreparedScene(SceneDescription Description, Camera Camera, 
     public RenderStatistics Render(Renderer renderer, Image image, float[]? raysPerPixel = null)
     {
         ArgumentNullException.ThrowIfNull(renderer);
-        return renderer.Render(Scene, Camera, Method, image, raysPerPixel);
+        ArgumentNullException.ThrowIfNull(image);
+        // The plane Prepare built, while the camera is still the one it was built from (not replaced by `with`).
+        return Prepared is ({ } camera, { } plane) && ReferenceEquals(camera, Camera) && plane.Width == image.Width && plane.Height == image.Height
+            ? renderer.Render(Scene, plane, Method, image, raysPerPixel)
+            : renderer.Render(Scene, Camera, Method, image, raysPerPixel);
     }
+
+    /// <summary>The camera <see cref="SceneDescription.Prepare"/> built, and its image plane.</summary>
+    internal (Camera Camera, ImagePlane Plane)? Prepared { get; init; }
 
     /// <summary>The scene.</summary>
     public Scene Scene => Description.Scene;
