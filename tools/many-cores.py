@@ -11,14 +11,25 @@ if len(sys.argv) != 2 or not os.path.isfile(os.path.join(sys.argv[1], "raw.tsv")
 out = sys.argv[1]
 times = collections.defaultdict(list)
 order = []
+pairs = collections.defaultdict(list)
 with open(os.path.join(out, "raw.tsv")) as f:
     next(f)
     for line in f:
         r, case, build, threads, ms = line.rstrip("\n").split("\t")
         if case not in order:
             order.append(case)
-        if ms != "NaN":
+        if ms != "NaN" and build in ("this", "before"):
+            pairs[(case, build)].append(float(ms))
+        elif ms != "NaN":
             times[(case, int(threads))].append(float(ms))
+if pairs:
+    # `pair` mode: this build against the other, render by render.
+    print(open(os.path.join(out, "machine.txt")).readline().strip())
+    print("\n| case | this ms | before ms | this / before |\n|---|---:|---:|---:|")
+    for case in order:
+        t, b = statistics.median(pairs[(case, "this")]), statistics.median(pairs[(case, "before")])
+        print(f"| {case} | {t:.1f} | {b:.1f} | {t / b:.3f} |")
+    sys.exit(0)
 threads = sorted({t for _, t in times})
 rounds = max(len(v) for v in times.values())
 median = {k: statistics.median(v) for k, v in times.items()}

@@ -8,7 +8,11 @@
 #                                            16 threads (and every core, if more), with the anchor in the same rounds;
 #                                            then raylab-scaling's model, and its in-process speed-ups and wall-time
 #                                            breakdown (the row loop's crew against the .NET thread pool)
-#   python3 tools/many-cores.py OUT          the tables (medians, speed-ups, RayLab against the anchor)
+#   tools/many-cores.sh pair DIR BEFORE OUT [ROUNDS] [THREADS]
+#                                            there: this build against another's (BEFORE: that checkout's
+#                                            artifacts/many-cores, from its own prepare), every method on both
+#                                            scenes at THREADS (default 2), the two builds alternating
+#   python3 tools/many-cores.py OUT          the tables (medians, speed-ups, RayLab against the anchor, or the pair)
 #
 # DIR defaults to artifacts/many-cores. OUT gets machine.txt, raw.tsv (round, case, build, threads, ms) and
 # scaling.md. Each render is `raylab render SCENE --width 1920 --height 1080 --threads T --stats S --warmup` plus the
@@ -107,13 +111,53 @@ run() {
   rm -rf "$tmp"
 }
 
+# This build against another, every method on both scenes, the builds alternating render by render.
+pair() {
+  dir=$1
+  local before=$2
+  out=$3
+  local rounds=${4:-5} threads=${5:-2}
+  mkdir -p "$out"
+  tmp=$(mktemp -d)
+  isa=x86-64-v3
+  grep -q avx512f /proc/cpuinfo && isa=x86-64-v4
+  echo "isa $isa; nproc $(nproc); load $(cat /proc/loadavg); pair at $threads threads" > "$out/machine.txt"
+  lscpu 2>/dev/null | grep -E 'Model name|Model:|^CPU\(s\)' >> "$out/machine.txt" || true
+  local -a methods=()
+  for s in regular random jittered cmj multijittered nrooks hammersley sobol pmj02 pmj02bn zsobol; do
+    methods+=("$s|--sampler $s --samples 16")
+  done
+  methods+=("adaptive|--sampler adaptive" "guard|--sampler adaptive --guard" "exact|--sampler exact")
+  echo -e "round\tcase\tbuild\tthreads\tms" > "$out/raw.tsv"
+  for ((r = 1; r <= rounds; r++)); do
+    for scene in bench field; do
+      for m in "${methods[@]}"; do
+        IFS='|' read -r name rest <<< "$m"
+        for build in this before; do
+          local exe="$dir/raylab-$isa"
+          [ $build = before ] && exe="$before/raylab-$isa"
+          rm -f "$tmp/s.json"
+          # shellcheck disable=SC2086
+          "$exe" render "$dir/$scene.json" $rest -o "$tmp/x.png" --width 1920 --height 1080 --threads "$threads" \
+            --stats "$tmp/s.json" --warmup > /dev/null 2>> "$out/errors.txt" || true
+          ms=$(sed -n 's/.*"renderMs": *\([0-9.]*\).*/\1/p' "$tmp/s.json" 2>/dev/null)
+          echo -e "$r\t$scene-$name\t$build\t$threads\t${ms:-NaN}" >> "$out/raw.tsv"
+        done
+      done
+    done
+    echo "round $r done: $(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg)" >> "$out/machine.txt"
+  done
+  rm -rf "$tmp"
+}
+
 usage() {
-  echo "usage: tools/many-cores.sh prepare [DIR] | run DIR OUT [ROUNDS]" >&2
+  echo "usage: tools/many-cores.sh prepare [DIR] | run DIR OUT [ROUNDS] | pair DIR BEFORE OUT [ROUNDS] [THREADS]" >&2
   exit 2
 }
 
 case "${1:-}" in
   prepare) shift; prepare "$@" ;;
   run) shift; [ $# -ge 2 ] || usage; run "$@" ;;
+  pair) shift; [ $# -ge 3 ] || usage; pair "$@" ;;
   *) usage ;;
 esac
