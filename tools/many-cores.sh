@@ -25,6 +25,7 @@ prepare() {
   cd "$(dirname "$0")/.."
   rm -rf "$dir" && mkdir -p "$dir"
   local tmp
+  # Only the two levels this needs, not publish-native.sh's four builds: the lent machine takes at most 64 MiB.
   for isa in x86-64-v3 x86-64-v4; do
     tmp=$(mktemp -d)
     dotnet publish samples/RayLab.Console -c Release -r linux-x64 -p:RayLabIsa=$isa -o "$tmp" -v q -nologo
@@ -44,7 +45,6 @@ prepare() {
   cp benchmarks/anchors/bench-1080.json "$dir/bench.json"
   ls -la "$dir"
 }
-
 
 # One render's milliseconds: raylab's renderMs, or the anchor's seconds × 1000. Prints nothing when it failed.
 render_ms() {

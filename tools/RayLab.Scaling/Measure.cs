@@ -24,13 +24,24 @@ internal static class Measure
                 CrewFor.UseCrew = crew;
                 for (int i = 0; i < threads.Length; i++)
                 {
+                    // One thread runs inline, on neither: it is rendered once and counts for every source.
+                    if (threads[i] == 1 && loop != Loops[0].Name)
+                    {
+                        continue;
+                    }
+
                     var trace = new RowLoopTrace();
                     renderers[i].Trace = trace;
                     double ms = c.Prepared.Render(renderers[i], image).RenderTime.TotalMilliseconds;
                     renderers[i].Trace = null;
-                    if (round >= 0) // round −1 warms up: the JIT, the threads, the pools
+                    if (round < 0) // round −1 warms up: the JIT, the threads, the pools
                     {
-                        (times.TryGetValue((loop, threads[i]), out var list) ? list : times[(loop, threads[i])] = []).Add((ms, Wall.Of(trace)));
+                        continue;
+                    }
+
+                    foreach ((string source, _) in threads[i] == 1 ? Loops : [(loop, crew)])
+                    {
+                        (times.TryGetValue((source, threads[i]), out var list) ? list : times[(source, threads[i])] = []).Add((ms, Wall.Of(trace)));
                     }
                 }
             }

@@ -93,7 +93,7 @@ Console.WriteLine($"| case | 1 thread, model ms (CPU) | {string.Join(" | ", all.
 Console.WriteLine($"|---|---:|{string.Join("", all.Select(_ => "---:|"))}---:|---:|");
 summary.ForEach(Console.WriteLine);
 Console.WriteLine();
-Console.WriteLine($"Measured speed-up, the crew's threads / the thread pool's:");
+Console.WriteLine("Measured speed-up, the crew's threads / the thread pool's:");
 Console.WriteLine();
 Console.WriteLine($"| case | {string.Join(" | ", measured)} |");
 Console.WriteLine($"|---|{string.Join("", measured.Select(_ => "---:|"))}");

@@ -24,6 +24,7 @@ internal static class CrewFor
     /// worker stops taking items once another has thrown or <paramref name="token"/> is cancelled; the first exception
     /// is rethrown as it was thrown.
     /// </summary>
+    /// <exception cref="OperationCanceledException"><paramref name="token"/> was cancelled.</exception>
     public static void Run<TLocal>(BandSchedule schedule, Func<TLocal> start, CrewForBody<TLocal> body, Action<TLocal> finish, CancellationToken token)
     {
         bool failed = false;
@@ -66,5 +67,7 @@ internal static class CrewFor
                 ExceptionDispatchInfo.Capture(e.InnerExceptions[0]).Throw();
             }
         }
+
+        token.ThrowIfCancellationRequested();
     }
 }

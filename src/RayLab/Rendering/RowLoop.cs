@@ -93,7 +93,6 @@ internal readonly struct RowLoop
             }
         }, _options.CancellationToken);
         trace?.End();
-        _options.CancellationToken.ThrowIfCancellationRequested();
         return totals;
     }
 

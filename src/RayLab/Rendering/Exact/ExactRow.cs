@@ -46,13 +46,13 @@ internal sealed class ExactRow
     private readonly List<(double Y, int Outline, bool Crossing)> _events = [];
     private readonly bool _sweeps;
 
-    public ExactRow(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep = true, RowPixels.Buffers? buffers = null)
+    public ExactRow(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep, RowPixels.Buffers buffers)
     {
         _sweeps = sweep;
         _outlines = outlines;
         _width = plane.Width;
         _rays = new PixelRays(scene, plane);
-        _pixels = new RowPixels(_width, buffers ?? new());
+        _pixels = new RowPixels(_width, buffers);
         _branches = new RowBranches(outlines.Outlines);
         _strips = new StripCutter(outlines.Outlines, _width, _branches, _rays, _pixels);
         _sweep = new RowSweep(outlines.Outlines, _width, _branches, _rays, _pixels);

@@ -286,7 +286,6 @@ internal sealed class OutlineSet
                 lists.Add(found);
             }
         }, parallel.CancellationToken);
-        parallel.CancellationToken.ThrowIfCancellationRequested();
 
         return Merge(lists);
     }
