@@ -11,8 +11,8 @@ namespace RayLab.Rendering.Adaptive;
 /// </summary>
 internal static class AdaptiveRenderer
 {
-    /// <summary>Pixels per side of the blocks the guard tests first: a block no silhouette may cross clears its pixels at once.</summary>
-    private const int GuardBlock = 8;
+    /// <summary>Pixels per side of the blocks the guard tests first (its tiles): a block no silhouette may cross clears its pixels at once.</summary>
+    private const int GuardBlock = SilhouetteGuard.TilePixels;
 
     /// <summary>
     /// The guard for a flat pixel: false at once when its <see cref="GuardBlock"/>-pixel block is clear of every

@@ -1,3 +1,4 @@
+using System.Buffers;
 using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Sampling;
@@ -22,16 +23,47 @@ namespace RayLab.Rendering.Adaptive;
 /// silhouette. A sphere cut by the near or far plane (or around the eye) has a silhouette where the plane cuts
 /// it too; there the square is refined whenever <c>p − m ≤ r</c>. Spheres hidden behind others are tested as
 /// well: that costs rays, never accuracy.</para>
+/// <para>A square tests only its tile's spheres. A tile (<see cref="TilePixels"/> pixels a side, or a multiple on very
+/// large images) keeps the spheres that its own test passes with twice the margin; a coarse tile of
+/// <see cref="CoarseTiles"/>² tiles keeps those its test passes with four times the margin, and a tile picks from its
+/// coarse tile's. A square inside a tile has rays that are rays of the tile, so a sphere whose silhouette may cross
+/// the square fails the tile's test by at most the square's margin plus its centre's offset, both within the tile's
+/// margin: the doubled margin keeps every such sphere (rounding and the second-order terms included) and the answer
+/// is the one every sphere gives. A tile's list is built when a square first asks for it, by whichever thread asks:
+/// a sphere field's guard tests a few spheres per square, not all of them.</para>
 /// </remarks>
 internal sealed class SilhouetteGuard
 {
+    /// <summary>Pixels per side of a tile whose spheres a square inside it tests (the adaptive renderer's guard blocks are tiles).</summary>
+    public const int TilePixels = 8;
+
+    /// <summary>Tiles per side of a coarse tile.</summary>
+    private const int CoarseTiles = 8;
+
+    /// <summary>The most tiles kept: larger images take larger tiles (a power of two times <see cref="TilePixels"/>).</summary>
+    private const long MaxTiles = 1 << 20;
+
+    /// <summary>
+    /// The fewest spheres for which squares test their tile's: below it a square tests every sphere, and the guard
+    /// allocates nothing per frame (the lab's two spheres).
+    /// </summary>
+    internal const int TiledFrom = 32;
+
     private readonly ImagePlane _plane;
     private readonly (Double3 Center, double Radius, bool Clipped)[] _spheres;
     private readonly long _size;
     private readonly double _stepWidth, _stepHeight;
+    private readonly int[] _all;
+    private readonly long _tileSteps;
+    private readonly int _tilesX, _tilesY, _coarseX;
+    private readonly int[]?[]? _tiles, _coarse;
 
     /// <summary>The guard for <paramref name="scene"/> seen on <paramref name="plane"/>, with <paramref name="size"/> lattice steps per pixel.</summary>
-    public SilhouetteGuard(Scene scene, ImagePlane plane, long size)
+    /// <param name="scene">The scene.</param>
+    /// <param name="plane">The image plane.</param>
+    /// <param name="size">Lattice steps per pixel.</param>
+    /// <param name="tiles">Whether squares test their tile's spheres from <see cref="TiledFrom"/> spheres on (else every sphere: the reference the tests compare with).</param>
+    public SilhouetteGuard(Scene scene, ImagePlane plane, long size, bool tiles = true)
     {
         _plane = plane;
         _size = size;
@@ -53,29 +85,139 @@ internal sealed class SilhouetteGuard
         }
 
         _spheres = [.. spheres];
+        _all = [.. Enumerable.Range(0, _spheres.Length)];
+        long tilePixels = TilePixels;
+        while (Tiles(plane.Width, tilePixels) * Tiles(plane.Height, tilePixels) > MaxTiles)
+        {
+            tilePixels *= 2;
+        }
+
+        _tileSteps = tilePixels * size;
+        if (tiles && _spheres.Length >= TiledFrom)
+        {
+            _tilesX = (int)Tiles(plane.Width, tilePixels);
+            _tilesY = (int)Tiles(plane.Height, tilePixels);
+            _coarseX = (_tilesX + CoarseTiles - 1) / CoarseTiles;
+            _tiles = new int[_tilesX * _tilesY][];
+            _coarse = new int[_coarseX * ((_tilesY + CoarseTiles - 1) / CoarseTiles)][];
+        }
     }
 
     /// <summary>True when some sphere's silhouette may pass through the square of <paramref name="size"/> lattice steps at (x0, y0).</summary>
     public bool MayCross(long x0, long y0, long size)
     {
-        double half = size * 0.5;
-        Ray ray = _plane.GetRay(_plane.LatticeAlpha(x0 + half, _size), _plane.LatticeBeta(y0 + half, _size));
-        double delta = half * Math.Sqrt((_stepWidth * _stepWidth) + (_stepHeight * _stepHeight));
-        Double3 d = ray.Direction;
-        double dd = Double3.Dot(d, d);
-        (double spread, double turn) = _plane.SquareSpread(delta, dd);
-        foreach ((Double3 center, double radius, bool clipped) in _spheres)
+        ReadOnlySpan<int> spheres = _all;
+        if (_tiles is not null && x0 >= 0 && y0 >= 0)
         {
-            Double3 f = ray.Origin - center;
-            Double3 perp = f - ((Double3.Dot(f, d) / dd) * d);
-            double p = perp.Length, reach = f.Length;
-            double margin = spread + (reach * turn) + (1e-9 * (reach + radius));
-            if (clipped ? p - margin <= radius : Math.Abs(p - radius) <= margin)
+            long tx = x0 / _tileSteps, ty = y0 / _tileSteps;
+            if (tx < _tilesX && ty < _tilesY && (x0 + size - 1) / _tileSteps == tx && (y0 + size - 1) / _tileSteps == ty)
+            {
+                spheres = Tile((int)tx, (int)ty);
+            }
+        }
+
+        var square = new Square(this, x0, y0, size);
+        foreach (int i in spheres)
+        {
+            if (square.Crosses(_spheres[i]))
             {
                 return true;
             }
         }
 
         return false;
+    }
+
+    private static long Tiles(int pixels, long tilePixels) => (pixels + tilePixels - 1) / tilePixels;
+
+    /// <summary>The spheres of tile (<paramref name="tx"/>, <paramref name="ty"/>), built on first use.</summary>
+    private int[] Tile(int tx, int ty)
+    {
+        ref int[]? tile = ref _tiles![(ty * _tilesX) + tx];
+        int[]? spheres = Volatile.Read(ref tile);
+        if (spheres is null)
+        {
+            spheres = Keep(Coarse(tx / CoarseTiles, ty / CoarseTiles), tx * _tileSteps, ty * _tileSteps, _tileSteps, 2);
+            spheres = Interlocked.CompareExchange(ref tile, spheres, null) ?? spheres;
+        }
+
+        return spheres;
+    }
+
+    /// <summary>The spheres of coarse tile (<paramref name="cx"/>, <paramref name="cy"/>), built on first use.</summary>
+    private int[] Coarse(int cx, int cy)
+    {
+        ref int[]? coarse = ref _coarse![(cy * _coarseX) + cx];
+        int[]? spheres = Volatile.Read(ref coarse);
+        if (spheres is null)
+        {
+            long steps = _tileSteps * CoarseTiles;
+            spheres = Keep(_all, cx * steps, cy * steps, steps, 4);
+            spheres = Interlocked.CompareExchange(ref coarse, spheres, null) ?? spheres;
+        }
+
+        return spheres;
+    }
+
+    /// <summary>The spheres of <paramref name="spheres"/> that the square's test keeps with its margin times <paramref name="slack"/> (and any whose margin is not a number).</summary>
+    private int[] Keep(int[] spheres, long x0, long y0, long size, double slack)
+    {
+        var square = new Square(this, x0, y0, size);
+        int[] scratch = ArrayPool<int>.Shared.Rent(spheres.Length);
+        int kept = 0;
+        foreach (int i in spheres)
+        {
+            if (square.MayCross(_spheres[i], slack))
+            {
+                scratch[kept++] = i;
+            }
+        }
+
+        int[] list = kept == spheres.Length ? spheres : kept == 0 ? [] : scratch[..kept];
+        ArrayPool<int>.Shared.Return(scratch);
+        return list;
+    }
+
+    /// <summary>A square's central ray and how far its other rays may pass from it.</summary>
+    private readonly struct Square
+    {
+        private readonly Ray _ray;
+        private readonly double _dd, _spread, _turn;
+
+        public Square(SilhouetteGuard guard, long x0, long y0, long size)
+        {
+            double half = size * 0.5;
+            ImagePlane plane = guard._plane;
+            _ray = plane.GetRay(plane.LatticeAlpha(x0 + half, guard._size), plane.LatticeBeta(y0 + half, guard._size));
+            double delta = half * Math.Sqrt((guard._stepWidth * guard._stepWidth) + (guard._stepHeight * guard._stepHeight));
+            Double3 d = _ray.Direction;
+            _dd = Double3.Dot(d, d);
+            (_spread, _turn) = plane.SquareSpread(delta, _dd);
+        }
+
+        /// <summary>The guard's test: some ray of the square may hit the sphere and another miss it.</summary>
+        public bool Crosses((Double3 Center, double Radius, bool Clipped) sphere)
+        {
+            (double p, double margin) = Distance(sphere);
+            return sphere.Clipped ? p - margin <= sphere.Radius : Math.Abs(p - sphere.Radius) <= margin;
+        }
+
+        /// <summary>The test with the margin times <paramref name="slack"/>, true where the margin is not a number.</summary>
+        public bool MayCross((Double3 Center, double Radius, bool Clipped) sphere, double slack)
+        {
+            (double p, double margin) = Distance(sphere);
+            margin *= slack;
+            return !(sphere.Clipped ? p - margin > sphere.Radius : Math.Abs(p - sphere.Radius) > margin);
+        }
+
+        /// <summary>The central ray's distance p from the centre, and the margin by which the square's rays may differ from it.</summary>
+        private (double P, double Margin) Distance((Double3 Center, double Radius, bool Clipped) sphere)
+        {
+            Double3 d = _ray.Direction;
+            Double3 f = _ray.Origin - sphere.Center;
+            Double3 perp = f - ((Double3.Dot(f, d) / _dd) * d);
+            double reach = f.Length;
+            return (perp.Length, _spread + (reach * _turn) + (1e-9 * (reach + sphere.Radius)));
+        }
     }
 }

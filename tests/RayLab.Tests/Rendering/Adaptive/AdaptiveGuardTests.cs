@@ -1,5 +1,6 @@
 using RayLab.Sampling;
 using RayLab.Cameras;
+using RayLab.Rendering.Adaptive;
 
 namespace RayLab.Tests.Rendering.Adaptive;
 
@@ -121,6 +122,62 @@ public class AdaptiveGuardTests
         Assert.True(error.Rmse <= 0.35, $"RMSE {error.Rmse:F3} levels");
         Assert.True(over2 <= 0.003, $"{over2:P2} of pixels more than 2 levels off");
         Assert.True(rays <= 8L * W * H, $"{(double)rays / (W * H):F2} rays per pixel");
+    }
+
+    [Theory]
+    [InlineData("orthographic")]
+    [InlineData("perspective")]
+    [InlineData("off-axis")]
+    public void InASphereFieldEverySquareTestingItsTilesSpheresGetsTheAnswerOfEverySphere(string view)
+    {
+        // Enough spheres for tiles, of every size from a tenth of a pixel to a fifth of the view, one cut by the
+        // near plane (a one-sided test), on an image whose width and height are not whole tiles.
+        Camera camera = CameraFor(view);
+        const int W = 45, H = 29, MaxDepth = 3;
+        ImagePlane plane = camera.GetImagePlane(W, H);
+        var random = new Random(7);
+        var spheres = new List<Sphere>();
+        for (int i = 0; i < 3 * SilhouetteGuard.TiledFrom; i++)
+        {
+            double pixels = Math.Pow(10, (random.NextDouble() * 2.3) - 1);
+            spheres.Add(SphereAt(plane, (random.NextDouble() * 1.2 * W) - (0.1 * W), (random.NextDouble() * 1.2 * H) - (0.1 * H), pixels, 1 + (random.NextDouble() * 12), Intensity.White));
+        }
+
+        spheres.Add(new Sphere(new Double3(0.04, 0.5, 5.89), 0.03, Intensity.White));
+        var scene = new Scene(spheres, Intensity.Black, Intensity.White);
+        const long Size = 1L << (MaxDepth + 1);
+        var tiled = new SilhouetteGuard(scene, plane, Size);
+        var every = new SilhouetteGuard(scene, plane, Size, tiles: false);
+        int squares = 0, crossed = 0;
+        void Check(long x0, long y0, long size)
+        {
+            bool expected = every.MayCross(x0, y0, size);
+            Assert.True(expected == tiled.MayCross(x0, y0, size), $"square ({x0}, {y0}) of {size} steps: every sphere says {expected}");
+            squares++;
+            crossed += expected ? 1 : 0;
+        }
+
+        for (long y = 0; y < H * Size; y += SilhouetteGuard.TilePixels * Size)
+        {
+            for (long x = 0; x < W * Size; x += SilhouetteGuard.TilePixels * Size)
+            {
+                Check(x, y, SilhouetteGuard.TilePixels * Size);
+            }
+        }
+
+        for (long size = Size; size >= 2; size /= 2)
+        {
+            for (long y = 0; y < H * Size; y += size)
+            {
+                for (long x = 0; x < W * Size; x += size)
+                {
+                    Check(x, y, size);
+                }
+            }
+        }
+
+        // Both answers occur, so the comparison means something.
+        Assert.InRange(crossed, squares / 50, squares - (squares / 50));
     }
 
     [Fact]
