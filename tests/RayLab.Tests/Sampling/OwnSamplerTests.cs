@@ -152,14 +152,14 @@ public class OwnSamplerTests
         foreach (string name in OwnNames)
         {
             IPixelSampler sampler = Samplers.Create(name, 64, 3);
-            double sum = sampler.GetSample(0, 0, 0).X; // warm up (JIT)
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            for (int i = 0; i < 64 * 100; i++)
+            double sum = 0;
+            long allocated = Allocations.Of(() =>
             {
-                sum += sampler.GetSample(i / 64, 1, i % 64).X;
-            }
-
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                for (int i = 0; i < 64 * 100; i++)
+                {
+                    sum += sampler.GetSample(i / 64, 1, i % 64).X;
+                }
+            });
             Assert.True(allocated == 0, $"{name} allocated {allocated} bytes (sum {sum}).");
         }
     }

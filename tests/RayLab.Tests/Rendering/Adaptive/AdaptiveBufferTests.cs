@@ -74,9 +74,7 @@ public class AdaptiveBufferTests
         foreach (AdaptiveSampler sampler in new[] { new AdaptiveSampler(), new AdaptiveSampler(guard: true), new AdaptiveSampler(1, 3, 0.1), new AdaptiveSampler(quincunx: true) })
         {
             renderer.Render(TwoSpheres(), Camera, sampler, image);
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            renderer.Render(TwoSpheres(), Camera, sampler, image);
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            long allocated = Allocations.Of(() => renderer.Render(TwoSpheres(), Camera, sampler, image));
             TestContext.Current.TestOutputHelper?.WriteLine($"{sampler}: {allocated} bytes");
             Assert.InRange(allocated, 1, (long)W * H / 16);
         }
