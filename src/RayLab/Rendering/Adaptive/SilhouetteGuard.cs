@@ -53,7 +53,7 @@ internal sealed class SilhouetteGuard
     private readonly (Double3 Center, double Radius, bool Clipped)[] _spheres;
     private readonly long _size;
     private readonly double _stepWidth, _stepHeight;
-    private readonly int[] _all;
+    private readonly int[] _all = [];
     private readonly long _tileSteps;
     private readonly int _tilesX, _tilesY, _coarseX;
     private readonly int[]?[]? _tiles, _coarse;
@@ -85,7 +85,6 @@ internal sealed class SilhouetteGuard
         }
 
         _spheres = [.. spheres];
-        _all = [.. Enumerable.Range(0, _spheres.Length)];
         long tilePixels = TilePixels;
         while (Tiles(plane.Width, tilePixels) * Tiles(plane.Height, tilePixels) > MaxTiles)
         {
@@ -95,6 +94,7 @@ internal sealed class SilhouetteGuard
         _tileSteps = tilePixels * size;
         if (tiles && _spheres.Length >= TiledFrom)
         {
+            _all = [.. Enumerable.Range(0, _spheres.Length)];
             _tilesX = (int)Tiles(plane.Width, tilePixels);
             _tilesY = (int)Tiles(plane.Height, tilePixels);
             _coarseX = (_tilesX + CoarseTiles - 1) / CoarseTiles;
@@ -106,26 +106,43 @@ internal sealed class SilhouetteGuard
     /// <summary>True when some sphere's silhouette may pass through the square of <paramref name="size"/> lattice steps at (x0, y0).</summary>
     public bool MayCross(long x0, long y0, long size)
     {
-        ReadOnlySpan<int> spheres = _all;
-        if (_tiles is not null && x0 >= 0 && y0 >= 0)
+        var square = new Square(this, x0, y0, size);
+        if (TileOf(x0, y0, size) is int[] tile)
         {
-            long tx = x0 / _tileSteps, ty = y0 / _tileSteps;
-            if (tx < _tilesX && ty < _tilesY && (x0 + size - 1) / _tileSteps == tx && (y0 + size - 1) / _tileSteps == ty)
+            foreach (int i in tile)
             {
-                spheres = Tile((int)tx, (int)ty);
+                if (square.Crosses(_spheres[i]))
+                {
+                    return true;
+                }
             }
+
+            return false;
         }
 
-        var square = new Square(this, x0, y0, size);
-        foreach (int i in spheres)
+        foreach ((Double3, double, bool) sphere in _spheres)
         {
-            if (square.Crosses(_spheres[i]))
+            if (square.Crosses(sphere))
             {
                 return true;
             }
         }
 
         return false;
+    }
+
+    /// <summary>The spheres of the tile that holds the square, or null where squares test every sphere or the square spans tiles.</summary>
+    private int[]? TileOf(long x0, long y0, long size)
+    {
+        if (_tiles is null || x0 < 0 || y0 < 0)
+        {
+            return null;
+        }
+
+        long tx = x0 / _tileSteps, ty = y0 / _tileSteps;
+        return tx < _tilesX && ty < _tilesY && (x0 + size - 1) / _tileSteps == tx && (y0 + size - 1) / _tileSteps == ty
+            ? Tile((int)tx, (int)ty)
+            : null;
     }
 
     private static long Tiles(int pixels, long tilePixels) => (pixels + tilePixels - 1) / tilePixels;
