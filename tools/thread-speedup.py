@@ -17,7 +17,7 @@ root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 parser = argparse.ArgumentParser()
 parser.add_argument("rounds", nargs="?", type=int, default=5)
 parser.add_argument("--before")
-parser.add_argument("--cases", default="bench-jittered16,bench-adaptive,bench-guard,bench-exact,field-jittered16,field-adaptive,field-exact")
+parser.add_argument("--cases", default="bench-jittered16,bench-adaptive,bench-guard,bench-exact,field-jittered16,field-adaptive,field-guard,field-exact")
 args = parser.parse_args()
 subprocess.run(["dotnet", "build", os.path.join(root, "samples", "RayLab.Console"), "-c", "Release", "-v", "q", "-nologo"],
                check=True, stdout=subprocess.DEVNULL)
