@@ -90,6 +90,7 @@ run() {
     "bench-exact|raylab|$dir/bench.json --sampler exact"
     "field-jittered16|raylab|$dir/field.json --sampler jittered --samples 16"
     "field-adaptive|raylab|$dir/field.json --sampler adaptive"
+    "field-guard|raylab|$dir/field.json --sampler adaptive --guard"
     "field-exact|raylab|$dir/field.json --sampler exact"
   )
   [ $isa = x86-64-v4 ] && cases+=("bench-jittered16-anchor-avx512|anchor-avx512|")

@@ -8,7 +8,7 @@ internal sealed record Case(string Name, SceneDescription Description)
 {
     /// <summary>The rows run when none is named.</summary>
     public static readonly string[] Defaults =
-        ["bench-jittered16", "bench-adaptive", "bench-guard", "bench-exact", "field-jittered16", "field-adaptive", "field-exact"];
+        ["bench-jittered16", "bench-adaptive", "bench-guard", "bench-exact", "field-jittered16", "field-adaptive", "field-guard", "field-exact"];
 
     /// <summary>The prepared scene (camera and method).</summary>
     public PreparedScene Prepared { get; } = Description.Prepare();

@@ -5,7 +5,7 @@ using RayLab.Scaling;
 // Per case: the phases of one render on one thread, the model's speed-up at each N (and the model of the loop before
 // work stealing: Parallel.For over bands of 16 rows for adaptive, 1 for the others), and the speed-up measured here.
 // A CASE is one row of the table: bench-jittered16, bench-jittered256, bench-adaptive, bench-guard, bench-exact,
-// field-jittered16, field-adaptive, field-exact; none: all but bench-jittered256.
+// field-jittered16, field-adaptive, field-guard, field-exact; none: all but bench-jittered256.
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
 const string Usage = "usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [CASE ...]\n"
     + "  CASE: SCENE-METHOD, SCENE bench or field, METHOD jittered16, jittered256, adaptive, guard or exact\n"
