@@ -1,4 +1,5 @@
 using System.Buffers;
+using System.Runtime.CompilerServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Sampling;
@@ -106,12 +107,13 @@ internal sealed class SilhouetteGuard
     /// <summary>True when some sphere's silhouette may pass through the square of <paramref name="size"/> lattice steps at (x0, y0).</summary>
     public bool MayCross(long x0, long y0, long size)
     {
-        var square = new Square(this, x0, y0, size);
-        if (TileOf(x0, y0, size) is int[] tile)
+        (Double3 origin, Double3 d, double dd, double spread, double turn) = Centre(x0, y0, size);
+        if (_tiles is not null && TileOf(x0, y0, size) is int[] tile)
         {
             foreach (int i in tile)
             {
-                if (square.Crosses(_spheres[i]))
+                (Double3 center, double radius, bool clipped) = _spheres[i];
+                if (Crosses(origin, d, dd, spread, turn, center, radius, clipped, 1))
                 {
                     return true;
                 }
@@ -120,9 +122,9 @@ internal sealed class SilhouetteGuard
             return false;
         }
 
-        foreach ((Double3, double, bool) sphere in _spheres)
+        foreach ((Double3 center, double radius, bool clipped) in _spheres)
         {
-            if (square.Crosses(sphere))
+            if (Crosses(origin, d, dd, spread, turn, center, radius, clipped, 1))
             {
                 return true;
             }
@@ -131,10 +133,10 @@ internal sealed class SilhouetteGuard
         return false;
     }
 
-    /// <summary>The spheres of the tile that holds the square, or null where squares test every sphere or the square spans tiles.</summary>
+    /// <summary>The spheres of the tile that holds the square (the tiles exist), or null where the square spans tiles.</summary>
     private int[]? TileOf(long x0, long y0, long size)
     {
-        if (_tiles is null || x0 < 0 || y0 < 0)
+        if (x0 < 0 || y0 < 0)
         {
             return null;
         }
@@ -179,12 +181,18 @@ internal sealed class SilhouetteGuard
     /// <summary>The spheres of <paramref name="spheres"/> that the square's test keeps with its margin times <paramref name="slack"/> (and any whose margin is not a number).</summary>
     private int[] Keep(int[] spheres, long x0, long y0, long size, double slack)
     {
-        var square = new Square(this, x0, y0, size);
+        (Double3 origin, Double3 d, double dd, double spread, double turn) = Centre(x0, y0, size);
+        if (!(double.IsFinite(spread) && double.IsFinite(turn)))
+        {
+            return spheres; // no bound for this square: every sphere stays
+        }
+
         int[] scratch = ArrayPool<int>.Shared.Rent(spheres.Length);
         int kept = 0;
         foreach (int i in spheres)
         {
-            if (square.MayCross(_spheres[i], slack))
+            (Double3 center, double radius, bool clipped) = _spheres[i];
+            if (Crosses(origin, d, dd, spread, turn, center, radius, clipped, slack))
             {
                 scratch[kept++] = i;
             }
@@ -195,46 +203,31 @@ internal sealed class SilhouetteGuard
         return list;
     }
 
-    /// <summary>A square's central ray and how far its other rays may pass from it.</summary>
-    private readonly struct Square
+    /// <summary>The square's central ray (origin, direction d), d·d, and how far its other rays may pass from it: a constant and a part per unit of reach.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private (Double3 Origin, Double3 D, double Dd, double Spread, double Turn) Centre(long x0, long y0, long size)
     {
-        private readonly Ray _ray;
-        private readonly double _dd, _spread, _turn;
+        double half = size * 0.5;
+        Ray ray = _plane.GetRay(_plane.LatticeAlpha(x0 + half, _size), _plane.LatticeBeta(y0 + half, _size));
+        double delta = half * Math.Sqrt((_stepWidth * _stepWidth) + (_stepHeight * _stepHeight));
+        Double3 d = ray.Direction;
+        double dd = Double3.Dot(d, d);
+        (double spread, double turn) = _plane.SquareSpread(delta, dd);
+        return (ray.Origin, d, dd, spread, turn);
+    }
 
-        public Square(SilhouetteGuard guard, long x0, long y0, long size)
-        {
-            double half = size * 0.5;
-            ImagePlane plane = guard._plane;
-            _ray = plane.GetRay(plane.LatticeAlpha(x0 + half, guard._size), plane.LatticeBeta(y0 + half, guard._size));
-            double delta = half * Math.Sqrt((guard._stepWidth * guard._stepWidth) + (guard._stepHeight * guard._stepHeight));
-            Double3 d = _ray.Direction;
-            _dd = Double3.Dot(d, d);
-            (_spread, _turn) = plane.SquareSpread(delta, _dd);
-        }
-
-        /// <summary>The guard's test: some ray of the square may hit the sphere and another miss it.</summary>
-        public bool Crosses((Double3 Center, double Radius, bool Clipped) sphere)
-        {
-            (double p, double margin) = Distance(sphere);
-            return sphere.Clipped ? p - margin <= sphere.Radius : Math.Abs(p - sphere.Radius) <= margin;
-        }
-
-        /// <summary>The test with the margin times <paramref name="slack"/>, true where the margin is not a number.</summary>
-        public bool MayCross((Double3 Center, double Radius, bool Clipped) sphere, double slack)
-        {
-            (double p, double margin) = Distance(sphere);
-            margin *= slack;
-            return !(sphere.Clipped ? p - margin > sphere.Radius : Math.Abs(p - sphere.Radius) > margin);
-        }
-
-        /// <summary>The central ray's distance p from the centre, and the margin by which the square's rays may differ from it.</summary>
-        private (double P, double Margin) Distance((Double3 Center, double Radius, bool Clipped) sphere)
-        {
-            Double3 d = _ray.Direction;
-            Double3 f = _ray.Origin - sphere.Center;
-            Double3 perp = f - ((Double3.Dot(f, d) / _dd) * d);
-            double reach = f.Length;
-            return (perp.Length, _spread + (reach * _turn) + (1e-9 * (reach + sphere.Radius)));
-        }
+    /// <summary>
+    /// The guard's test for one sphere, its margin times <paramref name="slack"/> (1: the square's own test): the
+    /// central ray passes at p from the centre, the square's other rays within the margin of p, so some may hit and
+    /// another miss only if <c>|p − r|</c> is within the margin (<c>p − r</c>, for a sphere a plane cuts).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool Crosses(Double3 origin, Double3 d, double dd, double spread, double turn, Double3 center, double radius, bool clipped, double slack)
+    {
+        Double3 f = origin - center;
+        Double3 perp = f - ((Double3.Dot(f, d) / dd) * d);
+        double p = perp.Length, reach = f.Length;
+        double margin = slack * (spread + (reach * turn) + (1e-9 * (reach + radius)));
+        return clipped ? p - margin <= radius : Math.Abs(p - radius) <= margin;
     }
 }
