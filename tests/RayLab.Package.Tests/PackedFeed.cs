@@ -35,8 +35,10 @@ public sealed class PackedFeed : IAsyncLifetime
 
     public async ValueTask InitializeAsync()
     {
-        // Packed once for the run (PackedPackages), copied into this fixture's own feed.
-        PackedSet libraries = await PackedPackages.LibrariesAsync(), tool = await PackedPackages.ToolAsync();
+        // Packed once for the run (PackedPackages), copied into this fixture's own feed. The two sets pack side by
+        // side, each into its own artifacts folder.
+        Task<PackedSet> packingLibraries = PackedPackages.LibrariesAsync(), packingTool = PackedPackages.ToolAsync();
+        PackedSet libraries = await packingLibraries, tool = await packingTool;
         Assert.True(libraries.Version == tool.Version, $"the libraries were packed at {libraries.Version}, the tool at {tool.Version} (a commit during the packing?)");
         Version = libraries.Version;
         libraries.CopyTo(Feed, "RayLab", "RayLab.Reports", "RayLab.ImageSharp");
