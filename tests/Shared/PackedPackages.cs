@@ -37,6 +37,9 @@ internal sealed record PackedSet(string Folder, string Version)
 /// variable <see cref="SharedVariable"/> names a folder (.ci/run sets it), the packing is shared by every test process
 /// of the run as well: the first one packs into that folder, under the commit's id, and the others find it there. A
 /// checkout with changes (<c>git status</c> not empty) never shares: a later process may see other sources.
+/// Shared packing builds in the checkout's own bin and obj, one pack at a time, so what the run built in Release
+/// before is not built again; a process's own packing builds in a folder of its own, so it never races a build of the
+/// checkout, and the libraries and the tool pack side by side there.
 /// </summary>
 internal static class PackedPackages
 {
@@ -83,7 +86,7 @@ internal static class PackedPackages
     /// <returns>Their folder and version.</returns>
     public static Task<PackedSet> ToolAsync() => Tool.Value;
 
-    private static async Task<PackedSet> PackOnceAsync(string set, Func<string, string, Task<string>> pack)
+    private static async Task<PackedSet> PackOnceAsync(string set, Func<string, string?, Task<string>> pack)
     {
         string? shared = Environment.GetEnvironmentVariable(SharedVariable);
         string? commit = string.IsNullOrEmpty(shared) ? null : await UnchangedCommitAsync();
@@ -93,33 +96,30 @@ internal static class PackedPackages
             return new PackedSet(folder, await pack(folder, Path.Combine(PrivateRoot.Value, set + "-artifacts")));
         }
 
-        // Packed into a folder of this process's own, then renamed into place: a process that finds the folder finds it
-        // whole; two processes that pack at once each get a whole set, and the second rename fails harmlessly.
+        // One pack at a time in the checkout's bin and obj, across the run's processes (a lock file), into a scratch
+        // folder renamed into place: a process that finds the folder finds it whole, and one that waited for the lock
+        // finds what the other packed.
         string target = Path.Combine(shared!, commit, set);
         if (!Directory.Exists(target))
         {
-            string scratch = Path.Combine(shared!, commit, $"{set}.{Environment.ProcessId}");
-            if (Directory.Exists(scratch))
+            using FileStream gate = await LockAsync(Path.Combine(shared!, commit, "packing.lock"));
+            if (!Directory.Exists(target))
             {
-                Directory.Delete(scratch, recursive: true);
-            }
+                string scratch = Path.Combine(shared!, commit, $"{set}.{Environment.ProcessId}");
+                if (Directory.Exists(scratch))
+                {
+                    Directory.Delete(scratch, recursive: true);
+                }
 
-            await pack(scratch, scratch + "-artifacts");
-            Directory.Delete(scratch + "-artifacts", recursive: true);
-            try
-            {
+                await pack(scratch, null);
                 Directory.Move(scratch, target);
-            }
-            catch (IOException) when (Directory.Exists(target))
-            {
-                Directory.Delete(scratch, recursive: true);
             }
         }
 
         return new PackedSet(target, VersionOf(target, set == "libraries" ? "RayLab.Templates.Instructor" : "RayLab.Tool.any"));
     }
 
-    private static async Task<string> PackLibrariesAsync(string folder, string artifacts)
+    private static async Task<string> PackLibrariesAsync(string folder, string? artifacts)
     {
         string repo = RepoPaths.Root();
         foreach (string project in new[] { "src/RayLab/RayLab.csproj", "src/RayLab.Reports/RayLab.Reports.csproj", "src/RayLab.ImageSharp/RayLab.ImageSharp.csproj", "templates/RayLab.Templates/RayLab.Templates.csproj", "templates/RayLab.Templates.Instructor/RayLab.Templates.Instructor.csproj" })
@@ -132,7 +132,7 @@ internal static class PackedPackages
         return version;
     }
 
-    private static async Task<string> PackToolAsync(string folder, string artifacts)
+    private static async Task<string> PackToolAsync(string folder, string? artifacts)
     {
         string console = Path.Combine(RepoPaths.Root(), "samples", "RayLab.Console", "RayLab.Console.csproj");
         await PackAsync(console, folder, artifacts);
@@ -150,12 +150,34 @@ internal static class PackedPackages
     }
 
     /// <summary>
-    /// <c>dotnet pack</c> in Release into <paramref name="folder"/>, with bin/obj under <paramref name="artifacts"/>; the
-    /// packing uses the machine's NuGet cache (what the packed packages are used with is the fixtures' own empty one).
+    /// <c>dotnet pack</c> in Release into <paramref name="folder"/>, with bin/obj under <paramref name="artifacts"/> (null:
+    /// the checkout's own); the packing uses the machine's NuGet cache (what the packed packages are used with is the
+    /// fixtures' own empty one).
     /// </summary>
-    private static Task<string> PackAsync(string project, string folder, string artifacts, params string[] more) =>
+    private static Task<string> PackAsync(string project, string folder, string? artifacts, params string[] more) =>
         ChildProcess.RunCheckedAsync(RepoPaths.Root(), new Dictionary<string, string?>(), ChildTimeout,
-            "dotnet", ["pack", project, "-c", "Release", "-o", folder, "--artifacts-path", artifacts, .. more]);
+            "dotnet", ["pack", project, "-c", "Release", "-o", folder, .. (artifacts is null ? Array.Empty<string>() : ["--artifacts-path", artifacts]), .. more]);
+
+    /// <summary>
+    /// The file <paramref name="path"/> held open alone (an exclusive lock on Unix and Windows alike, also against another
+    /// open of this process), once whoever holds it closes it; at most <see cref="ChildTimeout"/> × 3, a whole packing.
+    /// </summary>
+    private static async Task<FileStream> LockAsync(string path)
+    {
+        Directory.CreateDirectory(Path.GetDirectoryName(path)!);
+        DateTime giveUp = DateTime.UtcNow + (ChildTimeout * 3);
+        while (true)
+        {
+            try
+            {
+                return new FileStream(path, FileMode.OpenOrCreate, FileAccess.ReadWrite, FileShare.None);
+            }
+            catch (IOException) when (DateTime.UtcNow < giveUp)
+            {
+                await Task.Delay(250);
+            }
+        }
+    }
 
     /// <summary>The checkout's commit, or null where the checkout has changes or is no git checkout.</summary>
     private static async Task<string?> UnchangedCommitAsync()
