@@ -2,7 +2,7 @@
 """The tables of a `tools/many-cores.sh run` folder: the median ms of each case and build at each thread count, the
 speed-up over 1 thread, and RayLab's jittered 16 against the C++ anchors at every count (the anchor's time over RayLab's).
 
-Usage: python3 tools/many-cores.py OUT   (OUT: the folder `tools/many-cores.sh run DIR OUT` wrote)
+Usage: python3 tools/many-cores.py OUT   (OUT: the folder `tools/many-cores.sh run DIR OUT` or `pair` wrote)
 """
 import collections, math, os, statistics, sys
 
@@ -12,6 +12,7 @@ out = sys.argv[1]
 times = collections.defaultdict(list)
 order = []
 pairs = collections.defaultdict(list)
+rounds_of = collections.defaultdict(dict)
 with open(os.path.join(out, "raw.tsv")) as f:
     next(f)
     for line in f:
@@ -20,15 +21,40 @@ with open(os.path.join(out, "raw.tsv")) as f:
             order.append(case)
         if ms != "NaN" and build in ("this", "before"):
             pairs[(case, build)].append(float(ms))
+            rounds_of[(case, build)][r] = float(ms)
         elif ms != "NaN":
             times[(case, int(threads))].append(float(ms))
+
+
+def median_interval(values, level=0.95):
+    """A distribution-free interval for the median: the order statistics k and n + 1 − k (1-based) of n values, with k
+    the largest for which P(Binomial(n, ½) < k) ≤ (1 − level) / 2; None when n is too small for the level."""
+    v, n = sorted(values), len(values)
+    k, below = 0, 0.0
+    while True:
+        nxt = below + math.comb(n, k) / 2 ** n
+        if nxt > (1 - level) / 2:
+            break
+        below, k = nxt, k + 1
+    return (v[k - 1], v[n - k]) if k >= 1 else None
+
+
 if pairs:
-    # `pair` mode: this build against the other, render by render.
+    # `pair` mode: this build against the other, render by render. Each round renders a case with one build and then
+    # the other, so the ratio of a round's two times takes out what drifts between rounds; its median over the rounds,
+    # with the median's 95 % interval, says whether a difference is shown.
     print(open(os.path.join(out, "machine.txt")).readline().strip())
-    print("\n| case | this ms | before ms | this / before |\n|---|---:|---:|---:|")
+    print("\n| case | this ms | before ms | this / before, medians | median of the rounds' ratios | 95 % interval |\n|---|---:|---:|---:|---:|---:|")
+    ratios_all = []
     for case in order:
         t, b = statistics.median(pairs[(case, "this")]), statistics.median(pairs[(case, "before")])
-        print(f"| {case} | {t:.1f} | {b:.1f} | {t / b:.3f} |")
+        this, before = rounds_of[(case, "this")], rounds_of[(case, "before")]
+        ratios = [this[r] / before[r] for r in this if r in before]
+        ratios_all.append(statistics.median(ratios))
+        interval = median_interval(ratios)
+        shown = f"{interval[0]:.3f}–{interval[1]:.3f}" if interval else "–"
+        print(f"| {case} | {t:.1f} | {b:.1f} | {t / b:.3f} | {statistics.median(ratios):.3f} | {shown} |")
+    print(f"\n{len(order)} cases; geometric mean of the median ratios {math.exp(statistics.fmean(math.log(x) for x in ratios_all)):.3f}")
     sys.exit(0)
 threads = sorted({t for _, t in times})
 rounds = max(len(v) for v in times.values())

@@ -11,7 +11,8 @@
 #   tools/many-cores.sh pair DIR BEFORE OUT [ROUNDS] [THREADS]
 #                                            there: this build against another's (BEFORE: that checkout's
 #                                            artifacts/many-cores, from its own prepare), every method on both
-#                                            scenes at THREADS (default 2), the two builds alternating
+#                                            scenes at THREADS (default 2), the two builds alternating; cases
+#                                            whose name (e.g. field-guard) matches PAIR_EXCLUDE (grep -E) are left out
 #   python3 tools/many-cores.py OUT          the tables (medians, speed-ups, RayLab against the anchor, or the pair)
 #
 # DIR defaults to artifacts/many-cores. OUT gets machine.txt, raw.tsv (round, case, build, threads, ms) and
@@ -134,6 +135,7 @@ pair() {
     for scene in bench field; do
       for m in "${methods[@]}"; do
         IFS='|' read -r name rest <<< "$m"
+        if [ -n "${PAIR_EXCLUDE:-}" ] && grep -qE "$PAIR_EXCLUDE" <<< "$scene-$name"; then continue; fi
         for build in this before; do
           local exe="$dir/raylab-$isa"
           [ $build = before ] && exe="$before/raylab-$isa"

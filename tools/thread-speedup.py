@@ -6,10 +6,11 @@ and each method (jittered 16, adaptive, adaptive --guard, exact), runs `raylab r
 (renderMs: the render loop only, after a warm-up render) at T = 1 and 2, ROUNDS times, every cell of a round in turn
 so that load drifts touch them alike. Prints the median renderMs per cell, the speed-up median(1 thread) /
 median(2 threads), and with --before DIR (another checkout, built with `dotnet build samples/RayLab.Console -c
-Release`) the same for that build and this build's 1-thread time over the other's. The load average is printed
-before and after.
+Release`) the same for that build and this build's 1-thread time over the other's. With --native EXE it runs that
+native raylab (`tools/publish-native.sh`, or a `dotnet publish -r linux-x64` of this checkout) instead of this checkout's
+JIT build: no tiered compilation, so the 1-thread render pays no JIT. The load average is printed before and after.
 
-Usage: python3 tools/thread-speedup.py [ROUNDS] [--before DIR] [--cases bench-adaptive,field-exact,...]
+Usage: python3 tools/thread-speedup.py [ROUNDS] [--before DIR] [--native EXE] [--cases bench-adaptive,field-exact,...]
 """
 import argparse, json, os, statistics, subprocess, tempfile
 
@@ -17,6 +18,7 @@ root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 parser = argparse.ArgumentParser()
 parser.add_argument("rounds", nargs="?", type=int, default=5)
 parser.add_argument("--before")
+parser.add_argument("--native")
 parser.add_argument("--cases", default="bench-jittered16,bench-adaptive,bench-guard,bench-exact,field-jittered16,field-adaptive,field-guard,field-exact")
 args = parser.parse_args()
 subprocess.run(["dotnet", "build", os.path.join(root, "samples", "RayLab.Console"), "-c", "Release", "-v", "q", "-nologo"],
@@ -28,9 +30,9 @@ scenes = {"bench": os.path.join(root, "benchmarks", "anchors", "bench-1080.json"
 methods = {"jittered16": ["--sampler", "jittered", "--samples", "16"], "adaptive": ["--sampler", "adaptive"],
            "guard": ["--sampler", "adaptive", "--guard"], "exact": ["--sampler", "exact"]}
 dll = lambda d: os.path.join(d, "samples", "RayLab.Console", "bin", "Release", "net10.0", "raylab.dll")
-builds = [("this", dll(root))] + ([("before", dll(args.before))] if args.before else [])
+builds = [("this", [os.path.abspath(args.native)] if args.native else ["dotnet", dll(root)])] + ([("before", ["dotnet", dll(args.before)])] if args.before else [])
 # A build from before --warmup existed ran its warm-up render with --stats by itself.
-warmup = {b: (["--warmup"] if "--warmup" in subprocess.run(["dotnet", d, "render", "--help"], capture_output=True, text=True).stdout else [])
+warmup = {b: (["--warmup"] if "--warmup" in subprocess.run(d + ["render", "--help"], capture_output=True, text=True).stdout else [])
           for b, d in builds}
 cases = args.cases.split(",")
 cells = [(c, b, t) for c in cases for b, _ in builds for t in (1, 2)]
@@ -41,7 +43,7 @@ for _ in range(args.rounds):
     for case, build, threads in cells:
         scene, method = case.split("-")
         stats = os.path.join(tmp, "s.json")
-        subprocess.run(["dotnet", dict(builds)[build], "render", scenes[scene], "-o", os.path.join(tmp, "x.png"), "--width", "1920",
+        subprocess.run(dict(builds)[build] + ["render", scenes[scene], "-o", os.path.join(tmp, "x.png"), "--width", "1920",
                         "--height", "1080", "--threads", str(threads), "--stats", stats] + warmup[build] + methods[method],
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         with open(stats) as f:

@@ -26,6 +26,26 @@ internal sealed class Profile
 
     public double RowsMs => BandMs.Sum();
 
+    /// <summary>
+    /// A what-if: the same render with each row cut into <paramref name="pieces"/> bands of equal cost (in order, then
+    /// the next row's), as a loop over pieces of rows would schedule it if a row's cost were spread evenly along it.
+    /// </summary>
+    public Profile InPieces(int pieces)
+    {
+        double[] Cut(double[] rows) => [.. rows.SelectMany(ms => Enumerable.Repeat(ms / pieces, pieces))];
+        return new Profile
+        {
+            PreparationMs = PreparationMs,
+            ParallelPreparationMs = ParallelPreparationMs,
+            AfterMs = AfterMs,
+            BandMs = Cut(BandMs),
+            ScatteredBandMs = Cut(ScatteredBandMs),
+            HierarchyMs = HierarchyMs,
+            BuffersMs = BuffersMs,
+            EncodeMs = EncodeMs,
+        };
+    }
+
     public static Profile Take(Case c, int rounds)
     {
         Scene scene = c.Description.Scene;

@@ -4,6 +4,8 @@ using RayLab.Scaling;
 // Usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [CASE ...]
 // Per case: the phases of one render on one thread, the model's speed-up at each N (and the model of the loop before
 // work stealing: Parallel.For over bands of 16 rows for adaptive, 1 for the others), and the speed-up measured here.
+// The summary adds two what-ifs at the most threads: each row cut into 4 pieces of equal cost, and the rows' work
+// divided evenly, so the cost of the row as the unit of work shows.
 // A CASE is one row of the issue's table: bench-jittered16, bench-jittered256, bench-adaptive, bench-guard, bench-exact,
 // field-jittered16, field-adaptive, field-guard, field-exact; none: all but bench-jittered256.
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
@@ -85,12 +87,16 @@ foreach (Case c in cases)
     poolSummary.Add($"| {c.Name} | {string.Join(" | ", measured.Select(n => $"{measured1 / walls[("crew", n)].Ms:F2}× / {pool1 / walls[("thread pool", n)].Ms:F2}×"))} |");
 
     int most = all[^1];
-    summary.Add($"| {c.Name} | {model1:F1} | {string.Join(" | ", cells)} | {before1 / before.Predict(most):F2}× | {(times.TryGetValue(2, out double two) ? $"{measured1 / two:F2}×" : "–")} |");
+    // What the row as the unit of work costs at the most threads: the model with each row in 4 pieces of equal cost,
+    // and the rows' work divided evenly (no unit at all).
+    double pieces = model1 / new Model(profile.InPieces(4)).Predict(most);
+    double even = model1 / (model1 - profile.RowsMs + (profile.RowsMs / most) - profile.ParallelPreparationMs + (profile.ParallelPreparationMs / most));
+    summary.Add($"| {c.Name} | {model1:F1} | {string.Join(" | ", cells)} | {pieces:F2}× | {even:F2}× | {before1 / before.Predict(most):F2}× | {(times.TryGetValue(2, out double two) ? $"{measured1 / two:F2}×" : "–")} |");
 }
 
 Console.WriteLine();
-Console.WriteLine($"| case | 1 thread, model ms (CPU) | {string.Join(" | ", all.Select(n => $"model {n}"))} | loop before, model {all[^1]} | measured 2 |");
-Console.WriteLine($"|---|---:|{string.Join("", all.Select(_ => "---:|"))}---:|---:|");
+Console.WriteLine($"| case | 1 thread, model ms (CPU) | {string.Join(" | ", all.Select(n => $"model {n}"))} | model {all[^1]}, rows in 4 pieces | {all[^1]}, rows' work divided evenly | loop before, model {all[^1]} | measured 2 |");
+Console.WriteLine($"|---|---:|{string.Join("", all.Select(_ => "---:|"))}---:|---:|---:|---:|");
 summary.ForEach(Console.WriteLine);
 Console.WriteLine();
 Console.WriteLine("Measured speed-up, the crew's threads / the thread pool's:");

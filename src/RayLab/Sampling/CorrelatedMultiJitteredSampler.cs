@@ -87,8 +87,7 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
         where TV : struct
         where TM : IPointMath<TV>
     {
-        sx = TM.InWholeCell(column, row, RandomBits<TV, TM>(s, jx, jxMultiplier), x);
-        sy = TM.InWholeCell(TM.BroadcastBits(0), s, RandomBits<TV, TM>(s, jy, jyMultiplier), y);
+        TM.InWholeCells(column, row, RandomBits<TV, TM>(s, jx, jxMultiplier), x, TM.BroadcastBits(0), s, RandomBits<TV, TM>(s, jy, jyMultiplier), y, out sx, out sy);
     }
 
     /// <summary>A jitter's key p·salt for <c>randfloat</c>, and its final multiplier 1 | (key ≫ 18).</summary>

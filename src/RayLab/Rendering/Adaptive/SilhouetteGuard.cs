@@ -107,8 +107,14 @@ internal sealed class SilhouetteGuard
     /// <summary>True when some sphere's silhouette may pass through the square of <paramref name="size"/> lattice steps at (x0, y0).</summary>
     public bool MayCross(long x0, long y0, long size)
     {
+        int[]? tile = _tiles is null ? null : TileOf(x0, y0, size);
+        if (tile is { Length: 0 })
+        {
+            return false; // no sphere near the tile: the centre ray is not needed
+        }
+
         (Double3 origin, Double3 d, double dd, double spread, double turn) = Centre(x0, y0, size);
-        if (_tiles is not null && TileOf(x0, y0, size) is int[] tile)
+        if (tile is not null)
         {
             foreach (int i in tile)
             {
@@ -153,30 +159,23 @@ internal sealed class SilhouetteGuard
     private int[] Tile(int tx, int ty)
     {
         ref int[]? tile = ref _tiles![(ty * _tilesX) + tx];
-        int[]? spheres = Volatile.Read(ref tile);
-        if (spheres is null)
-        {
-            spheres = Keep(Coarse(tx / CoarseTiles, ty / CoarseTiles), tx * _tileSteps, ty * _tileSteps, _tileSteps, 2);
-            spheres = Interlocked.CompareExchange(ref tile, spheres, null) ?? spheres;
-        }
-
-        return spheres;
+        return Volatile.Read(ref tile)
+            ?? Publish(ref tile, Keep(Coarse(tx / CoarseTiles, ty / CoarseTiles), tx * _tileSteps, ty * _tileSteps, _tileSteps, 2));
     }
 
     /// <summary>The spheres of coarse tile (<paramref name="cx"/>, <paramref name="cy"/>), built on first use.</summary>
     private int[] Coarse(int cx, int cy)
     {
         ref int[]? coarse = ref _coarse![(cy * _coarseX) + cx];
-        int[]? spheres = Volatile.Read(ref coarse);
-        if (spheres is null)
-        {
-            long steps = _tileSteps * CoarseTiles;
-            spheres = Keep(_all, cx * steps, cy * steps, steps, 4);
-            spheres = Interlocked.CompareExchange(ref coarse, spheres, null) ?? spheres;
-        }
-
-        return spheres;
+        long steps = _tileSteps * CoarseTiles;
+        return Volatile.Read(ref coarse) ?? Publish(ref coarse, Keep(_all, cx * steps, cy * steps, steps, 4));
     }
+
+    /// <summary>
+    /// Puts <paramref name="list"/> in the empty <paramref name="slot"/>, or returns what another thread put there first:
+    /// every thread then uses one list (two built at once are equal, so the answers never depend on which stays).
+    /// </summary>
+    private static int[] Publish(ref int[]? slot, int[] list) => Interlocked.CompareExchange(ref slot, list, null) ?? list;
 
     /// <summary>The spheres of <paramref name="spheres"/> that the square's test keeps with its margin times <paramref name="slack"/> (and any whose margin is not a number).</summary>
     private int[] Keep(int[] spheres, long x0, long y0, long size, double slack)
