@@ -5,11 +5,13 @@ namespace RayLab.Scaling;
 /// <summary>
 /// The render time on N threads predicted from a one-thread <see cref="Profile"/>: the serial set-up and the work
 /// after the rows as measured, the parallel part of the set-up divided by N, and the row loop simulated as
-/// <see cref="BandSchedule"/> runs it: each thread starts with an equal range of bands, and whenever a thread is free
-/// it takes the front of its range or, when that is empty, steals the back half of the fullest range; a band costs
-/// its in-order time when the same thread rendered the band above just before, else its scattered time. Thread start-up and memory bandwidth are not modelled.
+/// <see cref="BandSchedule"/> runs it. With ranges (<paramref name="inOrder"/> false: the adaptive renderer) each
+/// thread starts with an equal range of bands, and whenever a thread is free it takes the front of its range or, when
+/// that is empty, steals the back half of the fullest range; in order, the thread free first takes the next band. A
+/// band costs its in-order time when the same thread rendered the band above just before, else its scattered time.
+/// Thread start-up and memory bandwidth are not modelled.
 /// </summary>
-internal class Model(Profile profile)
+internal class Model(Profile profile, bool inOrder = false)
 {
     protected Profile Profile => profile;
 
@@ -30,6 +32,18 @@ internal class Model(Profile profile)
             last[w] = -2;
             lo[w] = (int)((long)bands * w / workers);
             hi[w] = (int)((long)bands * (w + 1) / workers);
+        }
+
+        if (inOrder)
+        {
+            for (int band = 0; band < bands; band++)
+            {
+                int w = Array.IndexOf(free, free.Min());
+                free[w] += band == last[w] + 1 ? profile.BandMs[band] : profile.ScatteredBandMs[band];
+                last[w] = band;
+            }
+
+            return free.Max();
         }
 
         var done = new bool[workers];

@@ -48,7 +48,9 @@ int[] all = [.. modelled.Union(measured).Order()];
 foreach (Case c in cases)
 {
     Profile profile = Profile.Take(c, rounds);
-    var model = new Model(profile);
+    // The row loop's order for the case: ranges for adaptive (its rows reuse the row above), in order for the others.
+    bool inOrder = c.Description.Sampler.Type != "adaptive";
+    var model = new Model(profile, inOrder);
     // The loop before work stealing: Parallel.For over bands of 16 rows for adaptive, of 1 row for the others.
     Model before = Model.Old(profile, c.Description.Sampler.Type == "adaptive" ? 16 : 1);
     Console.WriteLine();
@@ -89,7 +91,7 @@ foreach (Case c in cases)
     int most = all[^1];
     // What the row as the unit of work costs at the most threads: the model with each row in 4 pieces of equal cost,
     // and the rows' work divided evenly (no unit at all).
-    double pieces = model1 / new Model(profile.InPieces(4)).Predict(most);
+    double pieces = model1 / new Model(profile.InPieces(4), inOrder).Predict(most);
     double even = model1 / (model1 - profile.RowsMs + (profile.RowsMs / most) - profile.ParallelPreparationMs + (profile.ParallelPreparationMs / most));
     summary.Add($"| {c.Name} | {model1:F1} | {string.Join(" | ", cells)} | {pieces:F2}× | {even:F2}× | {before1 / before.Predict(most):F2}× | {(times.TryGetValue(2, out double two) ? $"{measured1 / two:F2}×" : "–")} |");
 }

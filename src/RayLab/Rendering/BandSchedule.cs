@@ -3,18 +3,29 @@ using System.Runtime.InteropServices;
 namespace RayLab.Rendering;
 
 /// <summary>
-/// Which band a <see cref="RowLoop"/> thread renders next, by work stealing over ranges (as TBB's and Embree's
-/// schedulers split ranges): worker w starts with the w-th of equal ranges of consecutive bands and takes its bands
-/// from the front, one at a time; a worker whose range is empty steals the back half of the range with the most
-/// bands left. A thread thus renders long runs of consecutive bands (the adaptive renderer keeps its corner lines
-/// from one row to the next), and wherever the costly bands are, the threads finish together: the last pieces
-/// stolen are single bands. Each range has a cache line to itself.
+/// Which band a <see cref="RowLoop"/> thread renders next, in one of two orders.
+/// <list type="bullet">
+/// <item><b>Ranges</b> (the constructor), for bands that cost less right after the band above on the same thread (the
+/// adaptive renderer keeps its corner lines from one row to the next): work stealing over ranges, as TBB's and
+/// Embree's schedulers split ranges. Worker w starts with the w-th of equal ranges of consecutive bands and takes its
+/// bands from the front, one at a time; a worker whose range is empty steals the back half of the range with the most
+/// bands left. A thread renders long runs of consecutive bands, and wherever the costly bands are, the threads finish
+/// together: the last pieces stolen are single bands.</item>
+/// <item><b>In order</b> (<see cref="InOrder"/>), for bands that cost the same on any thread: every worker takes the
+/// next band of one shared count, as pbrt-v4's <c>ParallelFor</c> hands out chunks. The costly bands are taken when the
+/// count reaches them, in the middle of the frame, and cheap ones fill in at the end; with ranges they are left for the
+/// thieves, and the frame ends on them (the sphere field's horizon rows: up to 25 times a mean row).</item>
+/// </list>
+/// Each range, and the count, has a cache line to itself.
 /// </summary>
 internal sealed class BandSchedule
 {
     private readonly Range[] _ranges;
     private readonly int _first;
     private readonly bool _scattered;
+    private readonly int _bands;
+    private readonly bool _inOrder;
+    private Range _next;
 
     /// <summary>A schedule of bands <paramref name="first"/> to <paramref name="end"/> − 1 for <paramref name="workers"/> threads.</summary>
     /// <param name="first">The first band.</param>
@@ -27,11 +38,21 @@ internal sealed class BandSchedule
         _scattered = scattered;
         _ranges = new Range[workers];
         int bands = end - first;
+        _bands = bands;
         for (int w = 0; w < workers; w++)
         {
             _ranges[w].State = Pack((int)((long)bands * w / workers), (int)((long)bands * (w + 1) / workers));
         }
     }
+
+    private BandSchedule(int first, int end, int workers, bool inOrder, bool scattered)
+        : this(first, end, workers, scattered) => _inOrder = inOrder;
+
+    /// <summary>A schedule of bands <paramref name="first"/> to <paramref name="end"/> − 1 for <paramref name="workers"/> threads, each taking the next band of one shared count.</summary>
+    /// <param name="first">The first band.</param>
+    /// <param name="end">One past the last band.</param>
+    /// <param name="workers">The threads that take bands, numbered 0 to <paramref name="workers"/> − 1.</param>
+    public static BandSchedule InOrder(int first, int end, int workers) => new(first, end, workers, inOrder: true, scattered: false);
 
     /// <summary>The workers, numbered 0 to <see cref="WorkerCount"/> − 1.</summary>
     public int WorkerCount => _ranges.Length;
@@ -40,9 +61,16 @@ internal sealed class BandSchedule
     public static int Workers(int bands, int maxDegreeOfParallelism) =>
         Math.Max(1, Math.Min(bands, maxDegreeOfParallelism == -1 ? Environment.ProcessorCount : maxDegreeOfParallelism));
 
-    /// <summary>The next band for worker <paramref name="worker"/>: the front of its range, else the back half of the fullest range stolen; false when every range is empty.</summary>
+    /// <summary>The next band for worker <paramref name="worker"/>: in order, the count's next; else the front of its range, or the back half of the fullest range stolen. False when no band is left.</summary>
     public bool TryTake(int worker, out int band)
     {
+        if (_inOrder)
+        {
+            long next = Interlocked.Increment(ref _next.State) - 1;
+            band = next < _bands ? _first + (int)next : 0;
+            return next < _bands;
+        }
+
         ref long own = ref _ranges[worker].State;
         while (true)
         {
@@ -103,7 +131,7 @@ internal sealed class BandSchedule
 
     private static (int Lo, int Hi) Unpack(long state) => ((int)(state >> 32), (int)state);
 
-    /// <summary>A worker's range [lo, hi) of bands not yet taken, packed in one word, alone on its cache line (128 bytes either side, for CPUs that fetch lines in pairs).</summary>
+    /// <summary>A worker's range [lo, hi) of bands not yet taken, packed in one word (or the shared count), alone on its cache line (128 bytes either side, for CPUs that fetch lines in pairs).</summary>
     [StructLayout(LayoutKind.Explicit, Size = 256)]
     private struct Range
     {

@@ -19,6 +19,12 @@ internal interface IRowRenderer<TScratch>
     void Return(TScratch scratch, ref RowTotals totals)
     {
     }
+
+    /// <summary>
+    /// Whether a row costs less on the thread that rendered the row above it just before (the adaptive renderer keeps
+    /// its corner lines): the loop then gives each thread runs of consecutive rows, else the rows in order.
+    /// </summary>
+    bool ReusesRowAbove => false;
 }
 
 /// <summary>The scratch of a renderer that needs none.</summary>
@@ -61,9 +67,11 @@ internal readonly struct RowLoop
     public static RowLoop Start(RenderOptions options, int rows) => new(options, rows);
 
     /// <summary>
-    /// Renders every row, the token checked before each, on <see cref="CrewFor"/>. Each thread renders a range of
-    /// consecutive rows and steals half of the fullest range when its own is done (<see cref="BandSchedule"/>), so the
-    /// threads finish together wherever the costly rows are. A renderer's own exception is rethrown as it was thrown.
+    /// Renders every row, the token checked before each, on <see cref="CrewFor"/> (<see cref="BandSchedule"/>): where
+    /// a row reuses the row above (<see cref="IRowRenderer{TScratch}.ReusesRowAbove"/>) each thread renders a range of
+    /// consecutive rows and steals half of the fullest range when its own is done; else each takes the next row in
+    /// order. Either way the threads finish together wherever the costly rows are. A renderer's own exception is
+    /// rethrown as it was thrown.
     /// </summary>
     /// <returns>What the threads counted.</returns>
     /// <exception cref="OperationCanceledException">The render was cancelled.</exception>
@@ -77,7 +85,10 @@ internal readonly struct RowLoop
         RenderProgress? progress = _options.Progress;
         RowLoopTrace? trace = _options.Trace;
         int workers = BandSchedule.Workers(stop - start, _options.MaxDegreeOfParallelism);
-        var schedule = new BandSchedule(start, stop, workers, trace is { Scattered: true } && workers == 1);
+        bool scattered = trace is { Scattered: true } && workers == 1;
+        BandSchedule schedule = renderer.ReusesRowAbove || scattered
+            ? new BandSchedule(start, stop, workers, scattered)
+            : BandSchedule.InOrder(start, stop, workers);
         trace?.Begin(start, stop);
         CrewFor.Run(schedule, renderer.Rent, (int row, int worker, ref TScratch scratch) =>
         {

@@ -2,7 +2,7 @@ using RayLab.Rendering;
 
 namespace RayLab.Tests.Rendering;
 
-/// <summary>The row loop's schedule: each worker's own range in order, the back half of the fullest range stolen, every band once.</summary>
+/// <summary>The row loop's schedule: each worker's own range in order, the back half of the fullest range stolen, every band once; or every band in order from one count.</summary>
 public class BandScheduleTests
 {
     private static List<int> TakeAll(BandSchedule schedule, int worker)
@@ -46,10 +46,28 @@ public class BandScheduleTests
     }
 
     [Fact]
-    public void WorkersRacingForBandsTakeEachBandExactlyOnce()
+    public void InOrderWhicheverWorkerAsksTakesTheNextBand()
+    {
+        var schedule = BandSchedule.InOrder(3, 9, 3);
+        var taken = new List<(int Worker, int Band)>();
+        foreach (int worker in new[] { 2, 2, 0, 1, 2, 0 })
+        {
+            Assert.True(schedule.TryTake(worker, out int band));
+            taken.Add((worker, band));
+        }
+
+        Assert.Equal([(2, 3), (2, 4), (0, 5), (1, 6), (2, 7), (0, 8)], taken);
+        Assert.False(schedule.TryTake(1, out _));
+        Assert.False(schedule.TryTake(0, out _));
+    }
+
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)]
+    public void WorkersRacingForBandsTakeEachBandExactlyOnce(bool inOrder)
     {
         const int Bands = 200_000, Workers = 8;
-        var schedule = new BandSchedule(5, 5 + Bands, Workers);
+        BandSchedule schedule = inOrder ? BandSchedule.InOrder(5, 5 + Bands, Workers) : new BandSchedule(5, 5 + Bands, Workers);
         using var start = new Barrier(Workers);
         var taken = new List<int>[Workers];
         Thread[] threads = [.. Enumerable.Range(0, Workers).Select(w => new Thread(() =>

@@ -98,6 +98,8 @@ internal static class AdaptiveRenderer
 
         public AdaptiveLattice.Source Rent() => lattice.Rent();
 
+        public bool ReusesRowAbove => true;
+
         public void Return(AdaptiveLattice.Source source, ref RowTotals totals)
         {
             totals.Rays += source.Rays;
