@@ -1,7 +1,5 @@
-using RayLab.Cameras;
 using RayLab.Geometry;
 using RayLab.Rendering;
-using RayLab.Rendering.Exact;
 
 namespace RayLab.Scaling;
 
@@ -67,15 +65,9 @@ internal sealed class Profile
             }
         }
 
-        double crossings = 0;
-        if (c.Prepared.IsExact)
-        {
-            ImagePlane plane = c.Prepared.Camera.GetImagePlane(image.Width, image.Height);
-            var one = new ParallelOptions { MaxDegreeOfParallelism = 1 };
-            Outline[] outlines = OutlineSet.Build(scene, plane, parallel: one).Outlines;
-            crossings = Median(rounds, () => Time(() => OutlineSet.FindCrossings(outlines, plane.Height, one)));
-        }
-
+        // The set-up's part that runs in parallel, the exact outlines' crossing search, from the same renders' steps
+        // (timed apart, the machine's speed between the two measurements would count as serial work).
+        double crossings = Median(inOrder.Select(t => StepMs(t, "crossings")));
         double buffers = Median(rounds, () => Wall(() =>
         {
             var fresh = new Image(image.Width, image.Height);
@@ -115,6 +107,13 @@ internal sealed class Profile
     }
 
     private static double Cpu(long ticks) => ticks * 1000.0 / ThreadClock.Frequency;
+
+    /// <summary>The CPU time of set-up step <paramref name="step"/> in <paramref name="trace"/> (from the step before it, or the start), 0 where the render had none.</summary>
+    private static double StepMs(RowLoopTrace trace, string step)
+    {
+        int i = trace.SetUpSteps.FindIndex(s => s.Step == step);
+        return i < 0 ? 0 : Cpu(trace.SetUpSteps[i].Ended - (i == 0 ? trace.Started : trace.SetUpSteps[i - 1].Ended));
+    }
 
     /// <summary>The calling thread's CPU time for <paramref name="action"/> (the crossings' Parallel.For runs inline on one thread).</summary>
     private static double Time(Action action)
