@@ -35,8 +35,8 @@ public sealed class PackedFeed : IAsyncLifetime
 
     public async ValueTask InitializeAsync()
     {
-        // Packed once for the run (PackedPackages), copied into this fixture's own feed. The two sets pack side by
-        // side, each into its own artifacts folder.
+        // Packed once for the run (PackedPackages), copied into this fixture's own feed. Packed for this process alone,
+        // the two sets pack side by side, each in its own artifacts folder; packed for the run, one after the other.
         Task<PackedSet> packingLibraries = PackedPackages.LibrariesAsync(), packingTool = PackedPackages.ToolAsync();
         PackedSet libraries = await packingLibraries, tool = await packingTool;
         Assert.True(libraries.Version == tool.Version, $"the libraries were packed at {libraries.Version}, the tool at {tool.Version} (a commit during the packing?)");

@@ -21,6 +21,11 @@ internal class Model(Profile profile, bool inOrder = false)
     /// <summary>The row loop's time on <paramref name="threads"/> threads.</summary>
     protected virtual double Rows(int threads)
     {
+        if (inOrder)
+        {
+            return InGroups(threads, 1, followOn: true);
+        }
+
         int bands = profile.BandMs.Length;
         int workers = BandSchedule.Workers(bands, threads);
         var free = new double[workers];
@@ -32,18 +37,6 @@ internal class Model(Profile profile, bool inOrder = false)
             last[w] = -2;
             lo[w] = (int)((long)bands * w / workers);
             hi[w] = (int)((long)bands * (w + 1) / workers);
-        }
-
-        if (inOrder)
-        {
-            for (int band = 0; band < bands; band++)
-            {
-                int w = Array.IndexOf(free, free.Min());
-                free[w] += band == last[w] + 1 ? profile.BandMs[band] : profile.ScatteredBandMs[band];
-                last[w] = band;
-            }
-
-            return free.Max();
         }
 
         var done = new bool[workers];
@@ -100,28 +93,41 @@ internal class Model(Profile profile, bool inOrder = false)
     }
 
     /// <summary>
+    /// The bands handed out in order, <paramref name="merge"/> at a time, each group to the thread free first: a
+    /// group's first band costs its scattered time, or its in-order time where <paramref name="followOn"/> and the same
+    /// thread rendered the band above just before; the group's other bands their in-order time.
+    /// </summary>
+    protected double InGroups(int threads, int merge, bool followOn)
+    {
+        int bands = profile.BandMs.Length;
+        var free = new double[BandSchedule.Workers((bands + merge - 1) / merge, threads)];
+        var last = new int[free.Length];
+        Array.Fill(last, -2);
+        for (int b = 0; b < bands; b += merge)
+        {
+            int w = Array.IndexOf(free, free.Min());
+            int end = Math.Min(bands, b + merge);
+            free[w] += followOn && b == last[w] + 1 ? profile.BandMs[b] : profile.ScatteredBandMs[b];
+            for (int k = b + 1; k < end; k++)
+            {
+                free[w] += profile.BandMs[k];
+            }
+
+            last[w] = end - 1;
+        }
+
+        return free.Max();
+    }
+
+    /// <summary>
     /// The loop before this schedule, as an optimistic model: Parallel.For handing the bands out one at a time, in
-    /// order, to whichever thread is free first, <paramref name="merge"/> of today's bands to one of its bands.
+    /// order, to whichever thread is free first, <paramref name="merge"/> of today's bands to one of its bands (whose
+    /// first row always starts afresh).
     /// </summary>
     public static Model Old(Profile profile, int merge) => new OldModel(profile, merge);
 
     private sealed class OldModel(Profile profile, int merge) : Model(profile)
     {
-        protected override double Rows(int threads)
-        {
-            int bands = Profile.BandMs.Length;
-            var free = new double[BandSchedule.Workers((bands + merge - 1) / merge, threads)];
-            for (int b = 0; b < bands; b += merge)
-            {
-                int w = Array.IndexOf(free, free.Min());
-                free[w] += Profile.ScatteredBandMs[b];
-                for (int k = b + 1; k < Math.Min(bands, b + merge); k++)
-                {
-                    free[w] += Profile.BandMs[k];
-                }
-            }
-
-            return free.Max();
-        }
+        protected override double Rows(int threads) => InGroups(threads, merge, followOn: false);
     }
 }

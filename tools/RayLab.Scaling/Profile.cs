@@ -115,7 +115,7 @@ internal sealed class Profile
         return i < 0 ? 0 : Cpu(trace.SetUpSteps[i].Ended - (i == 0 ? trace.Started : trace.SetUpSteps[i - 1].Ended));
     }
 
-    /// <summary>The calling thread's CPU time for <paramref name="action"/> (the crossings' Parallel.For runs inline on one thread).</summary>
+    /// <summary>The calling thread's CPU time for <paramref name="action"/>.</summary>
     private static double Time(Action action)
     {
         long start = ThreadClock.Now();

@@ -52,7 +52,7 @@ foreach (Case c in cases)
     bool inOrder = c.Description.Sampler.Type != "adaptive";
     var model = new Model(profile, inOrder);
     // The loop before work stealing: Parallel.For over bands of 16 rows for adaptive, of 1 row for the others.
-    Model before = Model.Old(profile, c.Description.Sampler.Type == "adaptive" ? 16 : 1);
+    Model before = Model.Old(profile, inOrder ? 1 : 16);
     Console.WriteLine();
     Console.WriteLine($"## {c.Name}: {c.Description.Width}×{c.Description.Height}, {c.Description.Scene.Spheres.Count} spheres, {c.Description.Sampler.Type}{(c.Description.Sampler.Guard ? " --guard" : "")}");
     profile.PrintPhases();
