@@ -135,7 +135,7 @@ pair() {
     for scene in bench field; do
       for m in "${methods[@]}"; do
         IFS='|' read -r name rest <<< "$m"
-        if [ -n "${PAIR_EXCLUDE:-}" ] && grep -qE "$PAIR_EXCLUDE" <<< "$scene-$name"; then continue; fi
+        if [ -n "${PAIR_EXCLUDE:-}" ] && grep -qE -e "$PAIR_EXCLUDE" <<< "$scene-$name"; then continue; fi
         for build in this before; do
           local exe="$dir/raylab-$isa"
           [ $build = before ] && exe="$before/raylab-$isa"

@@ -169,7 +169,7 @@ internal sealed class LatticeHits
                     TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
                     TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
                     TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
-                    TL hit = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, sphere.RadiusSquared, sphere.InverseBound, sphere.Bound, checkOrder, ref nearest, ref nearestError, ref closest, ref unsure);
+                    TL hit = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, TL.Broadcast(sphere.RadiusSquared), TL.Broadcast(sphere.InverseBound), sphere.Bound, checkOrder, ref nearest, ref nearestError, ref closest, ref unsure);
                     id = TL.Select(hit, TL.BroadcastBits(sphere.Id), id);
                 }
             }
@@ -199,17 +199,18 @@ internal sealed class LatticeHits
     }
 
     /// <summary>One sphere's constants: o − C at α = β = 0, r², 1 / the error bound of Δ, its index + 1 and its depth error constants.</summary>
+    /// <remarks>Fields, as <see cref="SphereConstants"/>'s are: the lanes broadcast them straight from memory.</remarks>
     private readonly struct HitSphere(Double3 offset, float radiusSquared, float inverseBound, int id, DepthBound bound)
     {
-        public Float3 Offset { get; } = offset;
+        public readonly Float3 Offset = offset;
 
-        public float RadiusSquared { get; } = radiusSquared;
+        public readonly float RadiusSquared = radiusSquared;
 
-        public float InverseBound { get; } = inverseBound;
+        public readonly float InverseBound = inverseBound;
 
-        public uint Id { get; } = (uint)id;
+        public readonly uint Id = (uint)id;
 
-        public DepthBound Bound { get; } = bound;
+        public readonly DepthBound Bound = bound;
 
         /// <summary>The packet kernel's constants with the index + 1 as the bits of the colour's red.</summary>
         public (SphereConstants Constants, DepthBound Bound) ToConstants() =>

@@ -80,8 +80,9 @@ internal static class LaneSphere
     /// <param name="dd">d·d.</param>
     /// <param name="rdd">1 / d·d.</param>
     /// <param name="inverseLength">1 / |d|.</param>
-    /// <param name="radiusSquared">The sphere's r².</param>
-    /// <param name="inverseBound">1 / the bound of Δ's error.</param>
+    /// <param name="radiusSquared">The sphere's r², broadcast (by the caller, from the sphere's own memory: a float parameter here would be
+    /// loaded into a scalar register and broadcast from there, one more vector instruction per sphere).</param>
+    /// <param name="inverseBound">1 / the bound of Δ's error, broadcast.</param>
     /// <param name="bound">The sphere's depth error constants.</param>
     /// <param name="checkOrder">Whether hits close in depth are marked (the frame has close spheres).</param>
     /// <param name="nearest">−t of the nearest hit so far (−∞ before one).</param>
@@ -89,12 +90,12 @@ internal static class LaneSphere
     /// <param name="closest">The smallest |Δ| / bound so far.</param>
     /// <param name="unsure">The lanes with two hits closer than their error bounds.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static TL Test<TL>(TL fx, TL fy, TL fz, TL dx, TL dy, TL dz, TL dd, TL rdd, TL inverseLength, float radiusSquared, float inverseBound, DepthBound bound, bool checkOrder, ref TL nearest, ref TL nearestError, ref TL closest, ref TL unsure)
+    public static TL Test<TL>(TL fx, TL fy, TL fz, TL dx, TL dy, TL dz, TL dd, TL rdd, TL inverseLength, TL radiusSquared, TL inverseBound, DepthBound bound, bool checkOrder, ref TL nearest, ref TL nearestError, ref TL closest, ref TL unsure)
         where TL : struct, ILanes<TL>
     {
-        TL negatedT = NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(radiusSquared), out TL disc, out TL root);
+        TL negatedT = NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, radiusSquared, out TL disc, out TL root);
         TL hit = TL.LessThan(nearest, negatedT);                                 // t < best (false for NaN)
-        closest = TL.MinAbs(closest, disc * TL.Broadcast(inverseBound));
+        closest = TL.MinAbs(closest, disc * inverseBound);
         if (checkOrder)
         {
             TL error = TL.MultiplyAdd(TL.Broadcast(bound.Silhouette), TL.Broadcast(1f) / root, TL.Broadcast(bound.Rounding) * inverseLength);

@@ -221,11 +221,29 @@ internal sealed class PacketFrame
 }
 
 /// <summary>One sphere's constants for the kernel.</summary>
-/// <param name="Offset">e − C (perspective) or e + c − C (orthographic).</param>
-/// <param name="RadiusSquared">r².</param>
-/// <param name="InverseBound">1 / the error bound of Δ: |Δ|·this ≤ 1 is uncertain in float.</param>
-/// <param name="Colour">The sphere's <see cref="Scene.ColourOf"/>.</param>
-internal readonly record struct SphereConstants(Float3 Offset, float RadiusSquared, float InverseBound, Float3 Colour);
+/// <remarks>
+/// Fields, not properties: a property returns its <see cref="Float3"/> as a copy, which the JIT keeps in scalar
+/// registers and broadcasts from there (one more vector instruction per value per sphere); a field is read by the
+/// broadcast itself.
+/// </remarks>
+/// <param name="offset">e − C (perspective) or e + c − C (orthographic).</param>
+/// <param name="radiusSquared">r².</param>
+/// <param name="inverseBound">1 / the error bound of Δ: |Δ|·this ≤ 1 is uncertain in float.</param>
+/// <param name="colour">The sphere's <see cref="Scene.ColourOf"/>.</param>
+internal readonly struct SphereConstants(Float3 offset, float radiusSquared, float inverseBound, Float3 colour)
+{
+    /// <summary>e − C (perspective) or e + c − C (orthographic).</summary>
+    public readonly Float3 Offset = offset;
+
+    /// <summary>r².</summary>
+    public readonly float RadiusSquared = radiusSquared;
+
+    /// <summary>1 / the error bound of Δ: |Δ|·this ≤ 1 is uncertain in float.</summary>
+    public readonly float InverseBound = inverseBound;
+
+    /// <summary>The sphere's <see cref="Scene.ColourOf"/>.</summary>
+    public readonly Float3 Colour = colour;
+}
 
 /// <summary>Three floats: a frame constant the kernel broadcasts into lanes.</summary>
 /// <param name="X">x (or red).</param>
