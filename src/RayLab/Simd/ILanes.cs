@@ -75,6 +75,12 @@ internal interface ILanes<TSelf>
     /// <summary>Bit i set where lane i of the mask is set.</summary>
     static abstract uint MaskBits(TSelf mask);
 
+    /// <summary>
+    /// Bit i set where <c>a ≤ b</c> in lane i: <see cref="MaskBits"/> of <see cref="LessThanOrEqual"/> in one step, so
+    /// that with AVX-512 the comparison's mask register is read as it is, not widened into lanes and narrowed back.
+    /// </summary>
+    static abstract uint LessThanOrEqualBits(TSelf a, TSelf b);
+
     /// <summary>Reads <see cref="Count"/> floats.</summary>
     static abstract TSelf Load(ReadOnlySpan<float> source);
 

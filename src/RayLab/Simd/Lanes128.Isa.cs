@@ -23,6 +23,9 @@ internal readonly partial record struct Lanes128
     public static uint MaskBits(Lanes128 mask) => mask.V.ExtractMostSignificantBits();
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static uint LessThanOrEqualBits(Lanes128 a, Lanes128 b) => Vector128.LessThanOrEqual(a.V, b.V).ExtractMostSignificantBits();
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 ShiftRightBitsVariable(Lanes128 bits, Lanes128 counts)
     {
         Vector128<uint> b = bits.V.AsUInt32(), c = counts.V.AsUInt32();

@@ -23,6 +23,9 @@ internal readonly partial record struct Lanes256
     public static uint MaskBits(Lanes256 mask) => mask.V.ExtractMostSignificantBits();
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static uint LessThanOrEqualBits(Lanes256 a, Lanes256 b) => Vector256.LessThanOrEqual(a.V, b.V).ExtractMostSignificantBits();
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 ShiftRightBitsVariable(Lanes256 bits, Lanes256 counts) =>
         Avx2.IsSupported
             ? new(Avx2.ShiftRightLogicalVariable(bits.V.AsUInt32(), counts.V.AsUInt32()).AsSingle())

@@ -23,6 +23,9 @@ internal readonly partial record struct Lanes512
     public static uint MaskBits(Lanes512 mask) => (uint)mask.V.ExtractMostSignificantBits();
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static uint LessThanOrEqualBits(Lanes512 a, Lanes512 b) => (uint)Vector512.LessThanOrEqual(a.V, b.V).ExtractMostSignificantBits();
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 ShiftRightBitsVariable(Lanes512 bits, Lanes512 counts) =>
         Avx512F.IsSupported
             ? new(Avx512F.ShiftRightLogicalVariable(bits.V.AsUInt32(), counts.V.AsUInt32()).AsSingle())

@@ -174,7 +174,12 @@ internal sealed class LatticeHits
                 }
             }
 
-            uint uncertain = TL.MaskBits(unsure | TL.LessThanOrEqual(closest, one));
+            uint uncertain = TL.LessThanOrEqualBits(closest, one);
+            if (checkOrder)
+            {
+                uncertain |= TL.MaskBits(unsure);
+            }
+
             // The indices are integer bits in the lanes: a whole packet is stored straight into the line.
             int count = Math.Min(lanes, ids.Length - k0);
             if (count == lanes)
