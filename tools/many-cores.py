@@ -6,6 +6,8 @@ Usage: python3 tools/many-cores.py OUT   (OUT: the folder `tools/many-cores.sh r
 """
 import collections, math, os, statistics, sys
 
+from pairstats import median_interval
+
 if len(sys.argv) != 2 or not os.path.isfile(os.path.join(sys.argv[1], "raw.tsv")):
     sys.exit("usage: python3 tools/many-cores.py OUT   (OUT holds raw.tsv from tools/many-cores.sh run)")
 out = sys.argv[1]
@@ -24,19 +26,6 @@ with open(os.path.join(out, "raw.tsv")) as f:
             rounds_of[(case, build)][r] = float(ms)
         elif ms != "NaN":
             times[(case, int(threads))].append(float(ms))
-
-
-def median_interval(values, level=0.95):
-    """A distribution-free interval for the median: the order statistics k and n + 1 − k (1-based) of n values, with k
-    the largest for which P(Binomial(n, ½) < k) ≤ (1 − level) / 2; None when n is too small for the level."""
-    v, n = sorted(values), len(values)
-    k, below = 0, 0.0
-    while True:
-        nxt = below + math.comb(n, k) / 2 ** n
-        if nxt > (1 - level) / 2:
-            break
-        below, k = nxt, k + 1
-    return (v[k - 1], v[n - k]) if k >= 1 else None
 
 
 if pairs:

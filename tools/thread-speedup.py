@@ -5,7 +5,8 @@ For each case (bench-1080 = benchmarks/anchors/bench-1080.json; field = `tools/s
 and each method (jittered 16, adaptive, adaptive --guard, exact), runs `raylab render SCENE --threads T --stats`
 (renderMs: the render loop only, after a warm-up render) at T = 1 and 2, ROUNDS times, every cell of a round in turn
 so that load drifts touch them alike. Prints the median renderMs per cell, the speed-up median(1 thread) /
-median(2 threads), and with --before DIR (another checkout, built with `dotnet build samples/RayLab.Console -c
+median(2 threads), the median over the rounds of each round's own speed-up (its 1-thread time over the 2-thread time
+that follows it, which takes out what drifts between rounds) with that median's 95 % interval, and with --before DIR (another checkout, built with `dotnet build samples/RayLab.Console -c
 Release`) the same for that build and this build's 1-thread time over the other's. With --native EXE it runs that
 native raylab (`tools/publish-native.sh`, or a `dotnet publish -r linux-x64` of this checkout) instead of this checkout's
 JIT build: no tiered compilation, so the 1-thread render pays no JIT. The load average is printed before and after.
@@ -13,6 +14,8 @@ JIT build: no tiered compilation, so the 1-thread render pays no JIT. The load a
 Usage: python3 tools/thread-speedup.py [ROUNDS] [--before DIR] [--native EXE] [--cases bench-adaptive,field-exact,...]
 """
 import argparse, json, os, statistics, subprocess, tempfile
+
+from pairstats import median_interval
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 parser = argparse.ArgumentParser()
@@ -50,11 +53,15 @@ for _ in range(args.rounds):
             times[(case, build, threads)].append(json.load(f)["renderMs"])
 print(f"load average after: {' '.join(load())}")
 m = {cell: statistics.median(t) for cell, t in times.items()}
-head = "| case | 1 thread ms | 2 threads ms | speed-up |" + (" before: 1 thread | before: 2 threads | before: speed-up | 1 thread, this / before |" if args.before else "")
+head = "| case | 1 thread ms | 2 threads ms | speed-up | rounds' speed-ups, median | 95 % interval |" + (" before: 1 thread | before: 2 threads | before: speed-up | 1 thread, this / before |" if args.before else "")
 print(head)
 print("|---|" + "---:|" * (head.count("|") - 2))
 for case in cases:
-    row = f"| {case} | {m[(case, 'this', 1)]:.1f} | {m[(case, 'this', 2)]:.1f} | {m[(case, 'this', 1)] / m[(case, 'this', 2)]:.2f}× |"
+    ratios = [one / two for one, two in zip(times[(case, 'this', 1)], times[(case, 'this', 2)])]
+    interval = median_interval(ratios)
+    shown = f"{interval[0]:.2f}–{interval[1]:.2f}×" if interval else "–"
+    row = (f"| {case} | {m[(case, 'this', 1)]:.1f} | {m[(case, 'this', 2)]:.1f} | {m[(case, 'this', 1)] / m[(case, 'this', 2)]:.2f}× |"
+           f" {statistics.median(ratios):.2f}× | {shown} |")
     if args.before:
         row += (f" {m[(case, 'before', 1)]:.1f} | {m[(case, 'before', 2)]:.1f} | {m[(case, 'before', 1)] / m[(case, 'before', 2)]:.2f}× |"
                 f" {m[(case, 'this', 1)] / m[(case, 'before', 1)]:.3f} |")
