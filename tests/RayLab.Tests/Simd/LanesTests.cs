@@ -29,6 +29,14 @@ public class LanesTests
     }
 
     [Fact]
+    public void LessThanOrEqualBitsSetsBitIWhereLaneIOfAIsAtMostLaneIOfB()
+    {
+        CheckLessThanOrEqualBits<Lanes512>();
+        CheckLessThanOrEqualBits<Lanes256>();
+        CheckLessThanOrEqualBits<Lanes128>();
+    }
+
+    [Fact]
     public void HashAndUnitsAreTheScalarCounterHashInEveryLane()
     {
         CheckHash<Lanes512>();
@@ -166,6 +174,27 @@ public class LanesTests
         for (int lane = 0; lane < n; lane++)
         {
             Assert.Equal(a[lane] < b[lane] ? a[lane] : b[lane], result[lane]);
+        }
+    }
+
+    private static void CheckLessThanOrEqualBits<TL>()
+        where TL : struct, ILanes<TL>
+    {
+        int n = TL.Count;
+        float[] values = [.. Values, float.NaN];
+        for (int shift = 0; shift < values.Length; shift++)
+        {
+            float[] a = new float[n], b = new float[n];
+            uint expected = 0;
+            for (int lane = 0; lane < n; lane++)
+            {
+                a[lane] = values[lane % values.Length];
+                b[lane] = values[(lane + shift) % values.Length];
+                expected |= a[lane] <= b[lane] ? 1u << lane : 0;   // false where either is NaN
+            }
+
+            Assert.Equal(expected, TL.LessThanOrEqualBits(TL.Load(a), TL.Load(b)));
+            Assert.Equal(expected, TL.MaskBits(TL.LessThanOrEqual(TL.Load(a), TL.Load(b))));
         }
     }
 
