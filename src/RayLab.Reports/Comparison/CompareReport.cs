@@ -75,7 +75,7 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         {
             CompareCase c = r.Case;
             csv.Append(Invariant($"{c.Series},{c.Sampler},{c.Setting},{c.Budget},{c.SamplesPerPixel},{c.MaxDepth},{c.Contrast:G6},"))
-               .Append(Invariant($"{r.Rays},{r.RaysPerPixel:G9},{r.Time.TotalMilliseconds:F3},{r.Error.Rmse:G9},{r.Error.MeanAbsolute:G9},{r.Error.Max},{r.Error.FractionOverOneLevel:G9},{r.MeanFlip:G9},{r.Kernel},"))
+               .Append(Invariant($"{r.Rays},{r.RaysPerPixel:G9},{r.Time.TotalMilliseconds:G9},{r.Error.Rmse:G9},{r.Error.MeanAbsolute:G9},{r.Error.Max},{r.Error.FractionOverOneLevel:G9},{r.MeanFlip:G9},{r.Kernel},"))
                .Append($"images/{c.FileStem}.png,errors/{c.FileStem}.png,{(r.MeanFlip is null ? "" : $"flip/{c.FileStem}.png")},")
                .Append(Invariant($"{r.Placement?.LowPass1:G9},{r.Placement?.LowPass2:G9},{r.Placement?.Spectrum.LowFrequencyShare:G9}\n"));
         }

@@ -40,6 +40,15 @@ public class CompareReportTests
     }
 
     [Fact]
+    public void TheCsvKeepsARenderTimeToTheTickSoASmallRenderRateIsNotRoundedAway()
+    {
+        // A 48×36 render takes about 0.03 ms: three decimals would move rays / ms by over 1 %.
+        string csv = new CompareReport("h", "c", [Result("jittered", 16, 1, 0.0286)], []).Csv();
+
+        Assert.Equal("0.0286", csv.Split('\n')[1].Split(',')[9]);
+    }
+
+    [Fact]
     public void TheMarkdownRanksTheLinesAndLeavesOutSlopesItCannotFit()
     {
         CompareResult[] results =
