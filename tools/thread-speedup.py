@@ -1,15 +1,16 @@
 #!/usr/bin/env python3
 """Two-thread speed-up of every render method on bench-1080 and the 960-sphere field, and one thread against another build.
 
-For each case (bench-1080 = benchmarks/anchors/bench-1080.json; field = `tools/sphere-scenes.py field 24 40`, 1920×1080)
-and each method (jittered 16, adaptive, adaptive --guard, exact), runs `raylab render SCENE --threads T --stats`
-(renderMs: the render loop only, after a warm-up render) at T = 1 and 2, ROUNDS times, every cell of a round in turn
-so that load drifts touch them alike. Prints the median renderMs per cell, the speed-up median(1 thread) /
+For each case (bench-1080 = benchmarks/anchors/bench-1080.json; field = `tools/sphere-scenes.py field 24 40`,
+1920×1080) and each method (jittered 16, adaptive, adaptive --guard, exact), runs `raylab render SCENE --threads T
+--stats` (renderMs: the render loop only, after a warm-up render) at T = 1 and 2, ROUNDS times, every cell of a round
+in turn so that load drifts touch them alike. Prints the median renderMs per cell, the speed-up median(1 thread) /
 median(2 threads), the median over the rounds of each round's own speed-up (its 1-thread time over the 2-thread time
-that follows it, which takes out what drifts between rounds) with that median's 95 % interval, and with --before DIR (another checkout, built with `dotnet build samples/RayLab.Console -c
-Release`) the same for that build and this build's 1-thread time over the other's. With --native EXE it runs that
-native raylab (`tools/publish-native.sh`, or a `dotnet publish -r linux-x64` of this checkout) instead of this checkout's
-JIT build: no tiered compilation, so the 1-thread render pays no JIT. The load average is printed before and after.
+that follows it, which takes out what drifts between rounds) with that median's 95 % interval, and with --before DIR
+(another checkout, built with `dotnet build samples/RayLab.Console -c Release`) the same for that build and this
+build's 1-thread time over the other's. With --native EXE it runs that native raylab (`tools/publish-native.sh`, or a
+`dotnet publish -r linux-x64` of this checkout) instead of this checkout's JIT build: no tiered compilation, so the
+1-thread render pays no JIT. The load average is printed before and after.
 
 Usage: python3 tools/thread-speedup.py [ROUNDS] [--before DIR] [--native EXE] [--cases bench-adaptive,field-exact,...]
 """

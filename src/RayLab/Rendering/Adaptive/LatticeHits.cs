@@ -174,12 +174,7 @@ internal sealed class LatticeHits
                 }
             }
 
-            uint uncertain = TL.LessThanOrEqualBits(closest, one);
-            if (checkOrder)
-            {
-                uncertain |= TL.MaskBits(unsure);
-            }
-
+            uint uncertain = LaneSphere.Uncertain(closest, unsure, checkOrder);
             // The indices are integer bits in the lanes: a whole packet is stored straight into the line.
             int count = Math.Min(lanes, ids.Length - k0);
             if (count == lanes)

@@ -80,8 +80,9 @@ internal static class LaneSphere
     /// <param name="dd">d·d.</param>
     /// <param name="rdd">1 / d·d.</param>
     /// <param name="inverseLength">1 / |d|.</param>
-    /// <param name="radiusSquared">The sphere's r², broadcast (by the caller, from the sphere's own memory: a float parameter here would be
-    /// loaded into a scalar register and broadcast from there, one more vector instruction per sphere).</param>
+    /// <param name="radiusSquared">The sphere's r², broadcast (by the caller, from the sphere's own memory: a float
+    /// parameter here would be loaded into a scalar register and broadcast from there, one more vector instruction per
+    /// sphere).</param>
     /// <param name="inverseBound">1 / the bound of Δ's error, broadcast.</param>
     /// <param name="bound">The sphere's depth error constants.</param>
     /// <param name="checkOrder">Whether hits close in depth are marked (the frame has close spheres).</param>
@@ -105,6 +106,22 @@ internal static class LaneSphere
 
         nearest = TL.Select(hit, negatedT, nearest);
         return hit;
+    }
+    /// <summary>
+    /// The lanes whose float answer may be wrong, as bits: the smallest |Δ| / bound over the spheres at most 1
+    /// (<paramref name="closest"/>), or, where the frame checks the depth order, two hits closer than their error bounds
+    /// (<paramref name="unsure"/>). The comparison's bits are read in one step (<see cref="ILanes{TSelf}.LessThanOrEqualBits"/>),
+    /// and the depth-order lanes only where they can be set.
+    /// </summary>
+    /// <param name="closest">The smallest |Δ| / bound per lane (<see cref="Test{TL}"/>).</param>
+    /// <param name="unsure">The lanes with two hits closer than their error bounds.</param>
+    /// <param name="checkOrder">Whether the frame checks the depth order (else <paramref name="unsure"/> is empty).</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static uint Uncertain<TL>(TL closest, TL unsure, bool checkOrder)
+        where TL : struct, ILanes<TL>
+    {
+        uint uncertain = TL.LessThanOrEqualBits(closest, TL.Broadcast(1f));
+        return checkOrder ? uncertain | TL.MaskBits(unsure) : uncertain;
     }
 }
 

@@ -95,12 +95,7 @@ internal static partial class PacketKernel
                     ? PacketHierarchy.NearestInLeaves<TL, TP>(hierarchy, leaves, origin, ray, dd, rdd, inverseLength, checkOrder, start)
                     : PacketHierarchy.Nearest<TL, TP>(hierarchy, origin, ray, dd, rdd, inverseLength, checkOrder, start);
                 (TL red, TL green, TL blue) = (found.R, found.G, found.B);
-                uint uncertain = TL.LessThanOrEqualBits(found.Closest, one);
-                if (checkOrder)
-                {
-                    uncertain |= TL.MaskBits(found.Unsure);
-                }
-
+                uint uncertain = LaneSphere.Uncertain(found.Closest, found.Unsure, checkOrder);
                 if (uncertain != 0)
                 {
                     LaneColour<TL> exact = Retrace<TL, TP>(frame, x0, row, sx, sy, new LaneColour<TL>(red, green, blue, uncertain));

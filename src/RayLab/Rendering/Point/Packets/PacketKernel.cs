@@ -141,12 +141,7 @@ internal static partial class PacketKernel
                 // The colour of the nearest sphere hit in each lane, or the background. Uncertain lanes: the fast
                 // pass only notes them (a call here would make the JIT spill every register around it on each
                 // sample); the careful pass traces them again in double.
-                uint uncertain = TL.LessThanOrEqualBits(closest, one);
-                if (checkOrder)
-                {
-                    uncertain |= TL.MaskBits(unsure);
-                }
-
+                uint uncertain = LaneSphere.Uncertain(closest, unsure, checkOrder);
                 if (TMode.Retraces)
                 {
                     if (uncertain != 0)
