@@ -49,10 +49,13 @@ public sealed class Renderer
     /// <summary>The per-thread buffers kept from one render to the next (the adaptive renderer's lines and caches).</summary>
     private readonly ScratchPool _pool = new();
 
-    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool) { Trace = Trace };
+    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool) { Trace = Trace, RowPieces = RowPieces };
 
     /// <summary>Records the next renders' row-loop phases and band times (the scaling tool); null records nothing.</summary>
     internal RowLoopTrace? Trace { get; set; }
+
+    /// <summary>Pieces per row for the adaptive renderer (the scaling tool); 0, the default, lets it choose.</summary>
+    internal int RowPieces { get; set; }
 
     /// <summary>
     /// Renders <paramref name="scene"/> into <paramref name="image"/> by <paramref name="method"/>: the one place

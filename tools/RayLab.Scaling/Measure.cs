@@ -12,9 +12,9 @@ internal static class Measure
     /// <summary>The sources of the row loop's threads: the crew it wakes at once, and the .NET thread pool.</summary>
     public static readonly (string Name, bool Crew)[] Loops = [("crew", true), ("thread pool", false)];
 
-    public static Dictionary<(string Loop, int Threads), (double Ms, Wall Wall)> Interleaved(Case c, int[] threads, int rounds)
+    public static Dictionary<(string Loop, int Threads), (double Ms, Wall Wall)> Interleaved(Case c, int[] threads, int rounds, int pieces)
     {
-        Renderer[] renderers = [.. threads.Select(n => new Renderer { MaxDegreeOfParallelism = n })];
+        Renderer[] renderers = [.. threads.Select(n => new Renderer { MaxDegreeOfParallelism = n, RowPieces = pieces })];
         Image image = c.Prepared.CreateImage();
         var times = new Dictionary<(string, int), List<(double Ms, Wall Wall)>>();
         for (int round = -1; round < rounds; round++)
@@ -65,14 +65,14 @@ internal readonly record struct Wall(double SetUp, double LastStart, double Rows
     public static Wall Of(RowLoopTrace t)
     {
         double Ms(long ticks) => ticks * 1000.0 / Stopwatch.Frequency;
-        int workers = t.RowWorker.Length == 0 ? 0 : t.RowWorker.Max() + 1;
+        int workers = t.BandWorker.Length == 0 ? 0 : t.BandWorker.Max() + 1;
         var first = Enumerable.Repeat(long.MaxValue, workers).ToArray();
         var last = new long[workers];
-        for (int r = 0; r < t.RowTicks.Length; r++)
+        for (int r = 0; r < t.BandTicks.Length; r++)
         {
-            int w = t.RowWorker[r];
-            first[w] = Math.Min(first[w], t.RowBegan[r]);
-            last[w] = Math.Max(last[w], t.RowBegan[r] + t.RowTicks[r]);
+            int w = t.BandWorker[r];
+            first[w] = Math.Min(first[w], t.BandBegan[r]);
+            last[w] = Math.Max(last[w], t.BandBegan[r] + t.BandTicks[r]);
         }
 
         long[] started = [.. first.Where(f => f != long.MaxValue)];
@@ -81,7 +81,7 @@ internal readonly record struct Wall(double SetUp, double LastStart, double Rows
             Ms(t.RowsStarted - t.Started),
             started.Length == 0 ? 0 : Ms(started.Max() - t.RowsStarted),
             Ms(t.RowsEnded - t.RowsStarted),
-            Ms(t.RowTicks.Sum()),
+            Ms(t.BandTicks.Sum()),
             ended.Length == 0 ? 0 : ended.Average(e => Ms(t.RowsEnded - e)),
             Ms(t.Finished - t.RowsEnded),
             [.. t.SetUpSteps.Select((s, i) => (s.Step, Ms(s.Ended - (i == 0 ? t.Started : t.SetUpSteps[i - 1].Ended))))]);

@@ -8,7 +8,8 @@ namespace RayLab.Scaling;
 /// <see cref="BandSchedule"/> runs it. With ranges (<paramref name="inOrder"/> false: the adaptive renderer) each
 /// thread starts with an equal range of bands, and whenever a thread is free it takes the front of its range or, when
 /// that is empty, steals the back half of the fullest range; in order, the thread free first takes the next band. A
-/// band costs its in-order time when the same thread rendered the band above just before, else its scattered time.
+/// band costs its in-order time when the same thread rendered the band above (the same piece of the row above) last
+/// among that piece's bands, else its scattered time.
 /// Thread start-up and memory bandwidth are not modelled.
 /// </summary>
 internal class Model(Profile profile, bool inOrder = false)
@@ -29,12 +30,11 @@ internal class Model(Profile profile, bool inOrder = false)
         int bands = profile.BandMs.Length;
         int workers = BandSchedule.Workers(bands, threads);
         var free = new double[workers];
-        var last = new int[workers];
+        int[][] last = LastRows(workers);
         var lo = new int[workers];
         var hi = new int[workers];
         for (int w = 0; w < workers; w++)
         {
-            last[w] = -2;
             lo[w] = (int)((long)bands * w / workers);
             hi[w] = (int)((long)bands * (w + 1) / workers);
         }
@@ -85,35 +85,45 @@ internal class Model(Profile profile, bool inOrder = false)
                 band = mid;
             }
 
-            free[w] += band == last[w] + 1 ? profile.BandMs[band] : profile.ScatteredBandMs[band];
-            last[w] = band;
+            free[w] += Follows(last[w], band) ? profile.BandMs[band] : profile.ScatteredBandMs[band];
         }
 
         return free.Max();
     }
 
+    /// <summary>For each of <paramref name="workers"/> workers, the row it rendered each piece in last (none yet).</summary>
+    private int[][] LastRows(int workers) => [.. Enumerable.Range(0, workers).Select(_ => Enumerable.Repeat(-2, profile.Pieces).ToArray())];
+
+    /// <summary>Whether <paramref name="band"/> follows the same piece of the row above on a worker whose pieces' last rows are <paramref name="lastRow"/>; notes the band.</summary>
+    private bool Follows(int[] lastRow, int band)
+    {
+        int row = band / profile.Pieces, piece = band % profile.Pieces;
+        bool follows = lastRow[piece] == row - 1;
+        lastRow[piece] = row;
+        return follows;
+    }
+
     /// <summary>
     /// The bands handed out in order, <paramref name="merge"/> at a time, each group to the thread free first: a
     /// group's first band costs its scattered time, or its in-order time where <paramref name="followOn"/> and the same
-    /// thread rendered the band above just before; the group's other bands their in-order time.
+    /// thread rendered the band above last; the group's other bands their in-order time.
     /// </summary>
     protected double InGroups(int threads, int merge, bool followOn)
     {
         int bands = profile.BandMs.Length;
         var free = new double[BandSchedule.Workers((bands + merge - 1) / merge, threads)];
-        var last = new int[free.Length];
-        Array.Fill(last, -2);
+        int[][] last = LastRows(free.Length);
         for (int b = 0; b < bands; b += merge)
         {
             int w = Array.IndexOf(free, free.Min());
             int end = Math.Min(bands, b + merge);
-            free[w] += followOn && b == last[w] + 1 ? profile.BandMs[b] : profile.ScatteredBandMs[b];
+            free[w] += Follows(last[w], b) && followOn ? profile.BandMs[b] : profile.ScatteredBandMs[b];
             for (int k = b + 1; k < end; k++)
             {
+                // A group's other bands follow on within the group.
+                _ = Follows(last[w], k);
                 free[w] += profile.BandMs[k];
             }
-
-            last[w] = end - 1;
         }
 
         return free.Max();

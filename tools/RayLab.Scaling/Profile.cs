@@ -9,7 +9,7 @@ namespace RayLab.Scaling;
 /// the work after the rows; and outside the clock the hierarchy (built once per scene), the image's buffer and the
 /// PNG encode. Each band is timed twice: in order (a thread that rendered the band above keeps its lines) and
 /// scattered (it did not). Times are the rendering thread's CPU time, so that other processes on a shared machine
-/// do not count.
+/// do not count, less one reading of that clock per band (<see cref="ThreadClock.ReadingTicks"/>).
 /// </summary>
 internal sealed class Profile
 {
@@ -17,6 +17,9 @@ internal sealed class Profile
     public required double ParallelPreparationMs { get; init; }
     public required double AfterMs { get; init; }
     public required double[] BandMs { get; init; }
+
+    /// <summary>Bands per row: each row's pieces are consecutive bands, left to right.</summary>
+    public int Pieces { get; init; } = 1;
     public required double[] ScatteredBandMs { get; init; }
     public required double HierarchyMs { get; init; }
     public required double BuffersMs { get; init; }
@@ -25,8 +28,9 @@ internal sealed class Profile
     public double RowsMs => BandMs.Sum();
 
     /// <summary>
-    /// A what-if: the same render with each row cut into <paramref name="pieces"/> bands of equal cost (in order, then
-    /// the next row's), as a loop over pieces of rows would schedule it if a row's cost were spread evenly along it.
+    /// A what-if: the same render with each band cut into <paramref name="pieces"/> bands of equal cost (in order, then
+    /// the next band's: a row's bands stay consecutive), as a loop over smaller bands would schedule it if a band's
+    /// cost were spread evenly along it.
     /// </summary>
     public Profile InPieces(int pieces)
     {
@@ -37,6 +41,7 @@ internal sealed class Profile
             ParallelPreparationMs = ParallelPreparationMs,
             AfterMs = AfterMs,
             BandMs = Cut(BandMs),
+            Pieces = Pieces * pieces,
             ScatteredBandMs = Cut(ScatteredBandMs),
             HierarchyMs = HierarchyMs,
             BuffersMs = BuffersMs,
@@ -44,30 +49,38 @@ internal sealed class Profile
         };
     }
 
-    public static Profile Take(Case c, int rounds)
+    /// <summary>
+    /// The profiles of case <paramref name="c"/>, one for each count of pieces in <paramref name="pieces"/> that the
+    /// adaptive renderer cuts its rows into (0: its own choice), their renders taken in the same rounds, so that the
+    /// machine's speed drifting between rounds does not read as a difference between the cuts.
+    /// </summary>
+    public static Dictionary<int, Profile> Take(Case c, int rounds, int[] pieces)
     {
         Scene scene = c.Description.Scene;
         double hierarchy = Median(rounds, () => Time(() => SphereHierarchy.Build(scene.Spheres)));
-        var renderer = new Renderer { MaxDegreeOfParallelism = 1 };
+        Renderer[] renderers = [.. pieces.Select(p => new Renderer { MaxDegreeOfParallelism = 1, RowPieces = p })];
         Image image = c.Prepared.CreateImage();
-        c.Prepared.Render(renderer, image); // the JIT, the hierarchy, the pool's buffers
-        var inOrder = new List<RowLoopTrace>();
-        var scattered = new List<RowLoopTrace>();
+        foreach (Renderer renderer in renderers)
+        {
+            c.Prepared.Render(renderer, image); // the JIT, the hierarchy, the pool's buffers
+        }
+
+        var traces = pieces.Select(_ => (InOrder: new List<RowLoopTrace>(), Scattered: new List<RowLoopTrace>())).ToArray();
         for (int r = 0; r < rounds; r++)
         {
-            foreach ((List<RowLoopTrace> list, bool scatter) in new[] { (inOrder, false), (scattered, true) })
+            for (int i = 0; i < renderers.Length; i++)
             {
-                var trace = new RowLoopTrace { Scattered = scatter, Clock = ThreadClock.Now, Frequency = ThreadClock.Frequency };
-                renderer.Trace = trace;
-                c.Prepared.Render(renderer, image);
-                renderer.Trace = null;
-                list.Add(trace);
+                foreach ((List<RowLoopTrace> list, bool scatter) in new[] { (traces[i].InOrder, false), (traces[i].Scattered, true) })
+                {
+                    var trace = new RowLoopTrace { Scattered = scatter, Clock = ThreadClock.Now, Frequency = ThreadClock.Frequency };
+                    renderers[i].Trace = trace;
+                    c.Prepared.Render(renderers[i], image);
+                    renderers[i].Trace = null;
+                    list.Add(trace);
+                }
             }
         }
 
-        // The set-up's part that runs in parallel, the exact outlines' crossing search, from the same renders' steps
-        // (timed apart, the machine's speed between the two measurements would count as serial work).
-        double crossings = Median(inOrder.Select(t => StepMs(t, "crossings")));
         double buffers = Median(rounds, () => Wall(() =>
         {
             var fresh = new Image(image.Width, image.Height);
@@ -77,18 +90,30 @@ internal sealed class Profile
             }
         }));
         double encode = Median(rounds, () => Wall(() => image.Save(Stream.Null, ImageFormat.Png)));
-        int bands = inOrder[0].RowTicks.Length;
-        return new Profile
+        long reading = ThreadClock.ReadingTicks();
+        double Band(RowLoopTrace t, int b) => Cpu(Math.Max(0, t.BandTicks[b] - reading));
+        var profiles = new Dictionary<int, Profile>();
+        for (int i = 0; i < pieces.Length; i++)
         {
-            PreparationMs = Median(inOrder.Select(t => Cpu(t.RowsStarted - t.Started))),
-            ParallelPreparationMs = crossings,
-            AfterMs = Median(inOrder.Select(t => Cpu(t.Finished - t.RowsEnded))),
-            BandMs = [.. Enumerable.Range(0, bands).Select(b => Median(inOrder.Select(t => Cpu(t.RowTicks[b]))))],
-            ScatteredBandMs = [.. Enumerable.Range(0, bands).Select(b => Median(scattered.Select(t => Cpu(t.RowTicks[b]))))],
-            HierarchyMs = scene.UsesHierarchy ? hierarchy : 0,
-            BuffersMs = buffers,
-            EncodeMs = encode,
-        };
+            (List<RowLoopTrace> inOrder, List<RowLoopTrace> scattered) = traces[i];
+            int bands = inOrder[0].BandTicks.Length;
+            profiles[pieces[i]] = new Profile
+            {
+                Pieces = bands / c.Description.Height,
+                PreparationMs = Median(inOrder.Select(t => Cpu(t.RowsStarted - t.Started))),
+                // The set-up's part that runs in parallel, the exact outlines' crossing search, from the same renders'
+                // steps (timed apart, the machine's speed between the two measurements would count as serial work).
+                ParallelPreparationMs = Median(inOrder.Select(t => StepMs(t, "crossings"))),
+                AfterMs = Median(inOrder.Select(t => Cpu(t.Finished - t.RowsEnded))),
+                BandMs = [.. Enumerable.Range(0, bands).Select(b => Median(inOrder.Select(t => Band(t, b))))],
+                ScatteredBandMs = [.. Enumerable.Range(0, bands).Select(b => Median(scattered.Select(t => Band(t, b))))],
+                HierarchyMs = scene.UsesHierarchy ? hierarchy : 0,
+                BuffersMs = buffers,
+                EncodeMs = encode,
+            };
+        }
+
+        return profiles;
     }
 
     public void PrintPhases()

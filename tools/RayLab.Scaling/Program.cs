@@ -1,19 +1,24 @@
 using System.Globalization;
+using RayLab.Rendering.Adaptive;
 using RayLab.Scaling;
 
-// Usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [CASE ...]
+// Usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [--pieces P] [CASE ...]
 // Per case: the phases of one render on one thread, the model's speed-up at each N (and the model of the loop before
 // work stealing: Parallel.For over bands of 16 rows for adaptive, 1 for the others), and the speed-up measured here.
-// The summary adds two what-ifs at the most threads: each row cut into 4 pieces of equal cost, and the rows' work
-// divided evenly, so the cost of the row as the unit of work shows.
+// The summary adds two what-ifs at the most threads: each band (a row, or an adaptive render's piece of a row) cut into
+// 4 pieces of equal cost, and the rows' work divided evenly, so the cost of the band as the unit of work shows.
+// Adaptive rows are modelled at each thread count cut as the renderer cuts them there (AdaptiveRenderer.Pieces), from a
+// one-thread profile of that cut; --pieces P cuts them into P pieces (1: whole rows) at every thread count instead.
+// --cuts 2,4,8 adds, for adaptive, the model at the most threads with rows cut into each of those counts (profiled in
+// the same rounds), so the renderer's own choice can be weighed against others.
 // A CASE is one row of the issue's table: bench-jittered16, bench-jittered256, bench-adaptive, bench-guard, bench-exact,
 // field-jittered16, field-adaptive, field-guard, field-exact; none: all but bench-jittered256.
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
-const string Usage = "usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [CASE ...]\n"
+const string Usage = "usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [--pieces P] [--cuts 2,4,8] [CASE ...]\n"
     + "  CASE: SCENE-METHOD, SCENE bench or field, METHOD jittered16, jittered256, adaptive, guard or exact\n"
     + "  (none: every case but bench-jittered256)";
-int rounds = 5;
-int[] measured = [1, 2], modelled = [1, 2, 4, 8, 16];
+int rounds = 5, pieces = 0;
+int[] measured = [1, 2], modelled = [1, 2, 4, 8, 16], cuts = [];
 var names = new List<string>();
 Case[] cases;
 try
@@ -26,6 +31,8 @@ try
             case "--rounds": rounds = Positive(args, ++i, "--rounds")[0]; break;
             case "--threads": measured = Positive(args, ++i, "--threads"); break;
             case "--model": modelled = Positive(args, ++i, "--model"); break;
+            case "--pieces": pieces = Positive(args, ++i, "--pieces")[0]; break;
+            case "--cuts": cuts = Positive(args, ++i, "--cuts"); break;
             case ['-', ..]: throw new ArgumentException($"{args[i]}: unknown option");
             default: names.Add(args[i]); break;
         }
@@ -41,31 +48,46 @@ catch (Exception e) when (e is ArgumentException or IOException or InvalidOperat
     return 2;
 }
 
-Console.WriteLine($"# {Environment.ProcessorCount} processors, {rounds} rounds; load average {File.ReadAllText("/proc/loadavg").Trim()}");
+Console.WriteLine($"# {Environment.ProcessorCount} processors, {rounds} rounds, adaptive rows in {(pieces == 0 ? "the renderer's pieces" : $"{pieces} pieces")}; load average {File.ReadAllText("/proc/loadavg").Trim()}");
 var summary = new List<string>();
 var poolSummary = new List<string>();
+var cutSummary = new List<string>();
 int[] all = [.. modelled.Union(measured).Order()];
 foreach (Case c in cases)
 {
-    Profile profile = Profile.Take(c, rounds);
     // The row loop's order for the case: ranges for adaptive (its rows reuse the row above), in order for the others.
     bool inOrder = c.Description.Sampler.Type != "adaptive";
-    var model = new Model(profile, inOrder);
+    // Adaptive rows are cut into pieces on many threads: a profile for each cut the thread counts use, and each
+    // thread count modelled with its own (the one-thread render, whole rows, the baseline of every speed-up).
+    int PiecesAt(int threads) => inOrder ? 1 : pieces > 0 ? pieces : AdaptiveRenderer.Pieces(c.Description.Width, threads, c.Description.Scene.UsesHierarchy);
+    Dictionary<int, Profile> profiles = Profile.Take(c, rounds, [.. all.Select(PiecesAt).Append(PiecesAt(1)).Concat(inOrder || cuts.Length == 0 ? [] : [.. cuts, 1]).Distinct().Order()]);
+    Profile profile = profiles[PiecesAt(1)];
+    Model ModelAt(int threads) => new(profiles[PiecesAt(threads)], inOrder);
     // The loop before work stealing: Parallel.For over bands of 16 rows for adaptive, of 1 row for the others.
     Model before = Model.Old(profile, inOrder ? 1 : 16);
     Console.WriteLine();
     Console.WriteLine($"## {c.Name}: {c.Description.Width}×{c.Description.Height}, {c.Description.Scene.Spheres.Count} spheres, {c.Description.Sampler.Type}{(c.Description.Sampler.Guard ? " --guard" : "")}");
-    profile.PrintPhases();
-    var walls = Measure.Interleaved(c, measured, rounds);
+    foreach ((int cutInto, Profile p) in profiles)
+    {
+        if (profiles.Count > 1)
+        {
+            Console.WriteLine();
+            Console.WriteLine($"Rows in {cutInto} piece{(cutInto == 1 ? "" : "s")} (at {string.Join(", ", all.Where(n => PiecesAt(n) == cutInto))} threads):");
+        }
+
+        p.PrintPhases();
+    }
+
+    var walls = Measure.Interleaved(c, measured, rounds, pieces);
     Dictionary<int, double> times = walls.Where(p => p.Key.Loop == "crew").ToDictionary(p => p.Key.Threads, p => p.Value.Ms);
     Console.WriteLine();
     Console.WriteLine("| threads | model ms | model speed-up | model of the loop before | measured ms (median) | measured speed-up |");
     Console.WriteLine("|---:|---:|---:|---:|---:|---:|");
-    double model1 = model.Predict(1), before1 = before.Predict(1), measured1 = times.GetValueOrDefault(1, double.NaN);
+    double model1 = ModelAt(1).Predict(1), before1 = before.Predict(1), measured1 = times.GetValueOrDefault(1, double.NaN);
     var cells = new List<string>();
     foreach (int n in all)
     {
-        double predicted = model.Predict(n);
+        double predicted = ModelAt(n).Predict(n);
         string m = times.TryGetValue(n, out double t) ? $"{t:F2} | {measured1 / t:F2}×" : "– | –";
         Console.WriteLine($"| {n} | {predicted:F2} | {model1 / predicted:F2}× | {before1 / before.Predict(n):F2}× | {m} |");
         cells.Add($"{model1 / predicted:F2}×");
@@ -89,17 +111,32 @@ foreach (Case c in cases)
     poolSummary.Add($"| {c.Name} | {string.Join(" | ", measured.Select(n => $"{measured1 / walls[("crew", n)].Ms:F2}× / {pool1 / walls[("thread pool", n)].Ms:F2}×"))} |");
 
     int most = all[^1];
-    // What the row as the unit of work costs at the most threads: the model with each row in 4 pieces of equal cost,
+    // What the band as the unit of work costs at the most threads: the model with each band in 4 pieces of equal cost,
     // and the rows' work divided evenly (no unit at all).
-    double pieces = model1 / new Model(profile.InPieces(4), inOrder).Predict(most);
+    double cut = model1 / new Model(profiles[PiecesAt(most)].InPieces(4), inOrder).Predict(most);
+    // And with whole rows at the most threads, where the renderer cuts them.
+    string whole = PiecesAt(most) == 1 || !profiles.TryGetValue(1, out Profile? rows) ? "–" : $"{model1 / new Model(rows, inOrder).Predict(most):F2}×";
     double even = model1 / (model1 - profile.RowsMs + (profile.RowsMs / most) - profile.ParallelPreparationMs + (profile.ParallelPreparationMs / most));
-    summary.Add($"| {c.Name} | {model1:F1} | {string.Join(" | ", cells)} | {pieces:F2}× | {even:F2}× | {before1 / before.Predict(most):F2}× | {(times.TryGetValue(2, out double two) ? $"{measured1 / two:F2}×" : "–")} |");
+    foreach (int cutInto in inOrder ? [] : cuts)
+    {
+        cutSummary.Add($"| {c.Name} | {cutInto} | {profiles[cutInto].RowsMs / profiles[1].RowsMs:F3} | {model1 / new Model(profiles[cutInto], inOrder).Predict(most):F2}× |");
+    }
+
+    summary.Add($"| {c.Name} | {model1:F1} | {string.Join(" | ", cells)} | {whole} | {cut:F2}× | {even:F2}× | {before1 / before.Predict(most):F2}× | {(times.TryGetValue(2, out double two) ? $"{measured1 / two:F2}×" : "–")} |");
 }
 
 Console.WriteLine();
-Console.WriteLine($"| case | 1 thread, model ms (CPU) | {string.Join(" | ", all.Select(n => $"model {n}"))} | model {all[^1]}, rows in 4 pieces | {all[^1]}, rows' work divided evenly | loop before, model {all[^1]} | measured 2 |");
-Console.WriteLine($"|---|---:|{string.Join("", all.Select(_ => "---:|"))}---:|---:|---:|---:|");
+Console.WriteLine($"| case | 1 thread, model ms (CPU) | {string.Join(" | ", all.Select(n => $"model {n}"))} | model {all[^1]}, whole rows | model {all[^1]}, bands in 4 pieces | {all[^1]}, rows' work divided evenly | loop before, model {all[^1]} | measured 2 |");
+Console.WriteLine($"|---|---:|{string.Join("", all.Select(_ => "---:|"))}---:|---:|---:|---:|---:|");
 summary.ForEach(Console.WriteLine);
+if (cutSummary.Count != 0)
+{
+    Console.WriteLine();
+    Console.WriteLine($"| case | rows cut into | rows' work / whole rows' | model {all[^1]} |");
+    Console.WriteLine("|---|---:|---:|---:|");
+    cutSummary.ForEach(Console.WriteLine);
+}
+
 Console.WriteLine();
 Console.WriteLine("Measured speed-up, the crew's threads / the thread pool's:");
 Console.WriteLine();

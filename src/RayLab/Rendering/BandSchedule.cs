@@ -23,6 +23,7 @@ internal sealed class BandSchedule
     private readonly Range[] _ranges;
     private readonly int _first;
     private readonly bool _scattered;
+    private readonly int _group;
     private readonly int _bands;
     private readonly bool _inOrder;
     private Range _next;
@@ -31,11 +32,13 @@ internal sealed class BandSchedule
     /// <param name="first">The first band.</param>
     /// <param name="end">One past the last band.</param>
     /// <param name="workers">The threads that take bands, numbered 0 to <paramref name="workers"/> − 1.</param>
-    /// <param name="scattered">For one worker only: the even bands, then the odd ones, so no band follows the one above it (what a band costs on a thread that did not render the band above).</param>
-    public BandSchedule(int first, int end, int workers, bool scattered = false)
+    /// <param name="scattered">For one worker only: the even rows of bands, then the odd ones, so no band follows the one above it (what a band costs on a thread that did not render the band above).</param>
+    /// <param name="group">Bands per row, for <paramref name="scattered"/>: the band above a band is <paramref name="group"/> bands back.</param>
+    public BandSchedule(int first, int end, int workers, bool scattered = false, int group = 1)
     {
         _first = first;
         _scattered = scattered;
+        _group = group;
         _ranges = new Range[workers];
         int bands = end - first;
         _bands = bands;
@@ -83,7 +86,7 @@ internal sealed class BandSchedule
 
             if (Interlocked.CompareExchange(ref own, Pack(lo + 1, hi), state) == state)
             {
-                band = _first + (_scattered ? Scatter(lo, hi) : lo);
+                band = _first + (_scattered ? Scatter(lo, hi, _group) : lo);
                 return true;
             }
         }
@@ -120,11 +123,14 @@ internal sealed class BandSchedule
         }
     }
 
-    /// <summary>The scattered order's band for the <paramref name="lo"/>-th take of <paramref name="hi"/>: even bands, then odd ones.</summary>
-    private static int Scatter(int lo, int hi)
+    /// <summary>
+    /// The scattered order's band for the <paramref name="lo"/>-th take of <paramref name="hi"/>, in rows of
+    /// <paramref name="group"/> bands: the even rows' bands, then the odd rows'.
+    /// </summary>
+    private static int Scatter(int lo, int hi, int group)
     {
-        int half = (hi + 1) / 2;
-        return lo < half ? 2 * lo : (2 * (lo - half)) + 1;
+        int half = ((hi / group) + 1) / 2, row = lo / group, within = lo % group;
+        return ((row < half ? 2 * row : (2 * (row - half)) + 1) * group) + within;
     }
 
     private static long Pack(int lo, int hi) => ((long)lo << 32) | (uint)hi;

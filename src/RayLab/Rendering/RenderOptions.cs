@@ -21,6 +21,9 @@ internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, Render
     /// <summary>The rows [Start, End) of an image <paramref name="height"/> rows tall that this render fills.</summary>
     public (int Start, int End) Rows(int height) => (Math.Min(FirstRow, height), Math.Min(EndRow, height));
 
+    /// <summary>Pieces per row for a renderer that cuts its rows (the adaptive renderer), for the scaling tool; 0 (the default) lets the renderer choose.</summary>
+    public int RowPieces { get; init; }
+
     /// <summary>Records the row loop's phases and band times, for the scaling tool; null (the default) records nothing.</summary>
     public RowLoopTrace? Trace { get; init; }
 

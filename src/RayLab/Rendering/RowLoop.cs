@@ -3,8 +3,9 @@ using System.Diagnostics;
 namespace RayLab.Rendering;
 
 /// <summary>
-/// A renderer as <see cref="RowLoop"/> sees it: a scratch for each thread, and one row at a time. A row's pixels must depend only on the row, never on which thread or scratch renders it,
-/// so the bytes are the same whatever the thread count.
+/// A renderer as <see cref="RowLoop"/> sees it: a scratch for each thread, and one row (or one piece of a row) at a
+/// time. A row's pixels must depend only on the row, never on which thread or scratch renders it, so the bytes are the
+/// same whatever the thread count.
 /// </summary>
 /// <typeparam name="TScratch">One thread's working space.</typeparam>
 internal interface IRowRenderer<TScratch>
@@ -25,6 +26,16 @@ internal interface IRowRenderer<TScratch>
     /// its corner lines): the loop then gives each thread runs of consecutive rows, else the rows in order.
     /// </summary>
     bool ReusesRowAbove => false;
+
+    /// <summary>
+    /// How many pieces, left to right, each row is cut into as units of work (1: whole rows). A renderer whose rows
+    /// may cost many times a mean row cuts them, so that the last unit a thread takes is short and the threads finish
+    /// together.
+    /// </summary>
+    int PiecesPerRow => 1;
+
+    /// <summary>Renders piece <paramref name="piece"/> (0 at the left) of row <paramref name="row"/>; with one piece a row, the row.</summary>
+    void RenderPiece(int row, int piece, ref TScratch scratch) => RenderRow(row, ref scratch);
 }
 
 /// <summary>The scratch of a renderer that needs none.</summary>
@@ -67,11 +78,13 @@ internal readonly struct RowLoop
     public static RowLoop Start(RenderOptions options, int rows) => new(options, rows);
 
     /// <summary>
-    /// Renders every row, the token checked before each, on <see cref="CrewFor"/> (<see cref="BandSchedule"/>): where
-    /// a row reuses the row above (<see cref="IRowRenderer{TScratch}.ReusesRowAbove"/>) each thread renders a range of
-    /// consecutive rows and steals half of the fullest range when its own is done; else each takes the next row in
-    /// order. Either way the threads finish together wherever the costly rows are. A renderer's own exception is
-    /// rethrown as it was thrown.
+    /// Renders every row, the token checked before each band, on <see cref="CrewFor"/> (<see cref="BandSchedule"/>). A
+    /// band is a row, or where the renderer cuts rows (<see cref="IRowRenderer{TScratch}.PiecesPerRow"/>) one piece of
+    /// a row, numbered row by row, each row's pieces left to right: a thread writes the image a row at a time, and the
+    /// band P bands back is the same piece of the row above. Where a row reuses the row above
+    /// (<see cref="IRowRenderer{TScratch}.ReusesRowAbove"/>) each thread renders a range of consecutive bands and
+    /// steals half of the fullest range when its own is done; else each takes the next band in order. Either way the
+    /// threads finish together wherever the costly rows are. A renderer's own exception is rethrown as it was thrown.
     /// </summary>
     /// <returns>What the threads counted.</returns>
     /// <exception cref="OperationCanceledException">The render was cancelled.</exception>
@@ -84,18 +97,26 @@ internal readonly struct RowLoop
         stop = Math.Max(start, stop);
         RenderProgress? progress = _options.Progress;
         RowLoopTrace? trace = _options.Trace;
-        int workers = BandSchedule.Workers(stop - start, _options.MaxDegreeOfParallelism);
+        int rows = stop - start, pieces = rows == 0 ? 1 : renderer.PiecesPerRow, bands = rows * pieces;
+        int workers = BandSchedule.Workers(bands, _options.MaxDegreeOfParallelism);
         bool scattered = trace is { Scattered: true } && workers == 1;
         BandSchedule schedule = renderer.ReusesRowAbove || scattered
-            ? new BandSchedule(start, stop, workers, scattered)
-            : BandSchedule.InOrder(start, stop, workers);
-        trace?.Begin(start, stop);
-        CrewFor.Run(schedule, renderer.Rent, (int row, int worker, ref TScratch scratch) =>
+            ? new BandSchedule(0, bands, workers, scattered, pieces)
+            : BandSchedule.InOrder(0, bands, workers);
+        if (pieces > 1)
+        {
+            progress?.Start(rows, pieces);
+        }
+
+        trace?.Begin(bands);
+        CrewFor.Run(schedule, renderer.Rent, (int band, int worker, ref TScratch scratch) =>
         {
             long began = trace?.Clock() ?? 0;
-            renderer.RenderRow(row, ref scratch);
-            progress?.CompleteRow();
-            trace?.Row(row, worker, began, trace.Clock());
+            int row = start + (band / pieces);
+            renderer.RenderPiece(row, band - ((row - start) * pieces), ref scratch);
+            progress?.CompletePiece();
+
+            trace?.Band(band, worker, began, trace.Clock());
         }, scratch =>
         {
             lock (gate)

@@ -4,8 +4,9 @@ namespace RayLab.Rendering;
 
 /// <summary>
 /// What a <see cref="RowLoop"/> did, for the scaling tool (<c>tools/RayLab.Scaling</c>): when the clock started, when
-/// the rows started (the renderer's set-up before them), each row's time, when the rows ended and when the clock
-/// stopped (the work after them), in ticks of <see cref="Clock"/>. One trace records one render.
+/// the rows started (the renderer's set-up before them), each band's time (a row, or a piece of a row: see
+/// <see cref="RowLoop.Run{TScratch}"/> for their numbering), when the rows ended and when the clock stopped (the work
+/// after them), in ticks of <see cref="Clock"/>. One trace records one render.
 /// </summary>
 internal sealed class RowLoopTrace
 {
@@ -15,7 +16,7 @@ internal sealed class RowLoopTrace
     /// <summary>Ticks of <see cref="Clock"/> per second.</summary>
     public long Frequency { get; init; } = Stopwatch.Frequency;
 
-    /// <summary>For a one-thread render: the rows one by one, the even ones then the odd ones (<see cref="BandSchedule"/>), so that every row starts on a thread that did not render the row above it.</summary>
+    /// <summary>For a one-thread render: the bands one by one, the even ones then the odd ones (<see cref="BandSchedule"/>), so that every band starts on a thread that did not render the band above it.</summary>
     public bool Scattered { get; init; }
 
     /// <summary>When the clock started.</summary>
@@ -30,17 +31,14 @@ internal sealed class RowLoopTrace
     /// <summary>When the clock stopped.</summary>
     public long Finished { get; private set; }
 
-    /// <summary>The first row.</summary>
-    public int FirstRow { get; private set; }
+    /// <summary>Each band's time in ticks.</summary>
+    public long[] BandTicks { get; private set; } = [];
 
-    /// <summary>Each row's time in ticks, from <see cref="FirstRow"/> on.</summary>
-    public long[] RowTicks { get; private set; } = [];
+    /// <summary>When each band began.</summary>
+    public long[] BandBegan { get; private set; } = [];
 
-    /// <summary>When each row began, from <see cref="FirstRow"/> on.</summary>
-    public long[] RowBegan { get; private set; } = [];
-
-    /// <summary>The worker that rendered each row, from <see cref="FirstRow"/> on.</summary>
-    public int[] RowWorker { get; private set; } = [];
+    /// <summary>The worker that rendered each band.</summary>
+    public int[] BandWorker { get; private set; } = [];
 
     /// <summary>Steps of the set-up before the rows, each with when it ended (the exact outlines, their crossings).</summary>
     public List<(string Step, long Ended)> SetUpSteps { get; } = [];
@@ -51,22 +49,21 @@ internal sealed class RowLoopTrace
     /// <summary>The clock starts.</summary>
     public void Start() => Started = Clock();
 
-    /// <summary>The rows start: rows <paramref name="firstRow"/> to <paramref name="endRow"/> − 1.</summary>
-    public void Begin(int firstRow, int endRow)
+    /// <summary>The rows start: <paramref name="bands"/> bands.</summary>
+    public void Begin(int bands)
     {
         RowsStarted = Clock();
-        FirstRow = firstRow;
-        RowTicks = new long[endRow - firstRow];
-        RowBegan = new long[endRow - firstRow];
-        RowWorker = new int[endRow - firstRow];
+        BandTicks = new long[bands];
+        BandBegan = new long[bands];
+        BandWorker = new int[bands];
     }
 
-    /// <summary>Row <paramref name="row"/> ran on worker <paramref name="worker"/> from <paramref name="began"/> to <paramref name="ended"/>.</summary>
-    public void Row(int row, int worker, long began, long ended)
+    /// <summary>Band <paramref name="band"/> ran on worker <paramref name="worker"/> from <paramref name="began"/> to <paramref name="ended"/>.</summary>
+    public void Band(int band, int worker, long began, long ended)
     {
-        RowTicks[row - FirstRow] = ended - began;
-        RowBegan[row - FirstRow] = began;
-        RowWorker[row - FirstRow] = worker;
+        BandTicks[band] = ended - began;
+        BandBegan[band] = began;
+        BandWorker[band] = worker;
     }
 
     /// <summary>The rows are done.</summary>

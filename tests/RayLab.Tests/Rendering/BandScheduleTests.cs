@@ -24,6 +24,10 @@ public class BandScheduleTests
         Assert.Equal([0, 2, 4, 6, 1, 3, 5], TakeAll(new BandSchedule(0, 7, 1, scattered: true), 0));
 
     [Fact]
+    public void InRowsOfPiecesTheScatteredOrderTakesTheEvenRowsThenTheOddOnes() =>
+        Assert.Equal([0, 1, 2, 6, 7, 8, 3, 4, 5, 9, 10, 11], TakeAll(new BandSchedule(0, 12, 1, scattered: true, group: 3), 0));
+
+    [Fact]
     public void AWorkerWhoseRangeIsDoneStealsTheBackHalfOfTheFullestRange()
     {
         // Three workers over 12 bands: [0, 4), [4, 8), [8, 12).

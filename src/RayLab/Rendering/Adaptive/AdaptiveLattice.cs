@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Rendering.Packets;
@@ -8,20 +9,22 @@ namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
 /// The points an adaptive render traces, each once, kept as the index of what they hit (0 the background,
-/// k + 1 sphere k: the scenes' colours are flat), a row of pixels at a time by a thread's <see cref="Source"/>, in
-/// memory of O(W) per thread: the row's two lines of W + 1 pixel corners (by the SIMD packet tracer where the frame
-/// allows it, <see cref="LatticeHits"/>), then the points the recursion asks for, without a dictionary or an
-/// allocation per point. Nothing of size W×H is kept.
+/// k + 1 sphere k: the scenes' colours are flat), a piece of a row of pixels at a time (pixels u0 to u1 − 1) by a
+/// thread's <see cref="Source"/>, in memory of O(W) per thread: the piece's two lines of pixel corners (by the SIMD
+/// packet tracer where the frame allows it, <see cref="LatticeHits"/>), then the points the recursion asks for,
+/// without a dictionary or an allocation per point. Nothing of size W×H is kept.
 /// </summary>
 /// <remarks>
-/// <para>The row loop hands a thread runs of consecutive rows, top to bottom: a row's top corner line is the bottom
-/// line of the row above when the same thread rendered that row just before (the lines roll), else traced again (the
-/// value is the same either way, and the count of rays and of points traced again in double counts each line once).</para>
+/// <para>The row loop hands a thread runs of consecutive rows, each row's pieces left to right: a piece's top corner
+/// line is the bottom line of the piece above when the same thread rendered that piece last (the lines roll, two
+/// corner lines kept by parity, each piece in its own part of them), else traced again (the value is the same either
+/// way, and the count of rays and of points traced again in double counts each point of a line once: a corner on the
+/// line between two pieces is the left piece's).</para>
 /// <para>Points on a pixel's left and right edges are shared with the pixel beside it in the same row, which the same
 /// thread evaluates next, so they are kept in a buffer per vertical pixel line. Points on a pixel's top and bottom
-/// edges are shared with another row: each row traces those it needs and notes which, so that a point both rows
-/// traced is counted as one ray — at once when the same thread rendered the row above just before, else once the
-/// render is done.</para>
+/// edges are shared with another row, and those on the line between two pieces with the other piece: each piece
+/// traces those it needs and notes which, so that a point both traced is counted as one ray — at once when the same
+/// thread rendered the piece above last, else once the render is done.</para>
 /// </remarks>
 internal sealed class AdaptiveLattice
 {
@@ -102,27 +105,42 @@ internal sealed class AdaptiveLattice
     public long RetracedPoints => Interlocked.Read(ref _retraced);
 
     /// <summary>
-    /// Traces lattice points (<paramref name="lxStart"/> + k·<paramref name="lxStep"/>, <paramref name="ly"/>) into
-    /// <paramref name="ids"/>, by the packet path or the double loop; returns the points traced again in double.
+    /// Traces points <paramref name="from"/> to <paramref name="to"/> of a lattice line of <paramref name="length"/>
+    /// points, point k at (<paramref name="lxStart"/> + k·<paramref name="lxStep"/>, <paramref name="ly"/>), into
+    /// those entries of <paramref name="line"/>, by the packet path or the double loop; returns how many of points
+    /// <paramref name="countFrom"/> to <paramref name="to"/> were traced again in double. The packet path traces the
+    /// whole line's packets that hold the points (<see cref="LatticeHits.TraceRow{TL, TP}"/>) into
+    /// <paramref name="scratch"/>, and copies the points alone: no entry outside the range is written.
     /// </summary>
-    private int TraceLine(long ly, long lxStart, long lxStep, Span<int> ids)
+    private int TraceLine(long ly, long lxStart, long lxStep, int length, Span<int> line, int from, int to, int countFrom, Span<int> scratch)
     {
         if (_hits is null)
         {
-            for (int i = 0; i < ids.Length; i++)
+            for (int k = from; k <= to; k++)
             {
-                ids[i] = LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lxStart + (i * lxStep), ly);
+                line[k] = LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lxStart + (k * lxStep), ly);
             }
 
             return 0;
         }
 
-        return Kernel switch
+        int lanes = Kernel switch { RenderKernel.Vector512 => 16, RenderKernel.Vector256 => 8, _ => 4 };
+        int first = from - (from % lanes), end = Math.Min(length, ((to / lanes) + 1) * lanes);
+        // The packets hold exactly the points (a whole line, say): straight into the line.
+        bool exact = first == from && end == to + 1;
+        Span<int> ids = exact ? line[from..end] : scratch[..(end - first)];
+        int retraced = Kernel switch
         {
-            RenderKernel.Vector512 => _hits.TraceRow<Lanes512>(ly, lxStart, lxStep, ids),
-            RenderKernel.Vector256 => _hits.TraceRow<Lanes256>(ly, lxStart, lxStep, ids),
-            _ => _hits.TraceRow<Lanes128>(ly, lxStart, lxStep, ids),
+            RenderKernel.Vector512 => _hits.TraceRow<Lanes512>(ly, lxStart, lxStep, ids, first, countFrom, to + 1),
+            RenderKernel.Vector256 => _hits.TraceRow<Lanes256>(ly, lxStart, lxStep, ids, first, countFrom, to + 1),
+            _ => _hits.TraceRow<Lanes128>(ly, lxStart, lxStep, ids, first, countFrom, to + 1),
         };
+        if (!exact)
+        {
+            ids[(from - first)..(to - first + 1)].CopyTo(line[from..]);
+        }
+
+        return retraced;
     }
 
     /// <summary>The silhouette guard, when the sampler has one.</summary>
@@ -144,30 +162,28 @@ internal sealed class AdaptiveLattice
     public Intensity Colour(int id) => _palette[id];
 
     /// <summary>
-    /// Points on the horizontal pixel lines (other than corners) that both rows beside the line traced, where the two
-    /// rows were not rendered one after the other by one thread: each thread's notes of a row's top-edge points
-    /// against the notes of the row above's bottom-edge points, matched by line. The threads' buffers then go back to
-    /// the pool.
+    /// Points that two pieces both traced and did not match at once: on a horizontal pixel line (other than corners)
+    /// where the pieces above and below it were not rendered one after the other by one thread, and on the vertical
+    /// line between two pieces of a row. Every thread noted such points as keys (<see cref="Source.Buffers.Key"/>);
+    /// a key noted twice is one duplicate. The threads' buffers then go back to the pool.
     /// </summary>
     public long SharedEdgeDuplicates()
     {
-        var notes = new List<(int Line, bool Top, Source.Buffers Owner, int Note)>();
-        foreach (Source.Buffers buffers in _returned)
-        {
-            for (int n = 0; n < buffers.EdgeNotes.Count; n++)
-            {
-                (int row, bool top, _, _) = buffers.EdgeNotes[n];
-                notes.Add((top ? row : row + 1, top, buffers, n));
-            }
-        }
-
-        notes.Sort((a, b) => a.Line != b.Line ? a.Line.CompareTo(b.Line) : a.Top.CompareTo(b.Top));
         long duplicates = 0;
-        for (int k = 1; k < notes.Count; k++)
+        if (_returned.Count != 0)
         {
-            if (notes[k].Line == notes[k - 1].Line && notes[k].Top && !notes[k - 1].Top)
+            // The first thread's list takes everyone's keys: it is cleared when its buffers are next prepared.
+            List<long> keys = _returned[0].SharedPoints;
+            for (int i = 1; i < _returned.Count; i++)
             {
-                duplicates += Common(notes[k - 1].Owner.EdgeNote(notes[k - 1].Note), notes[k].Owner.EdgeNote(notes[k].Note));
+                keys.AddRange(_returned[i].SharedPoints);
+            }
+
+            Span<long> sorted = CollectionsMarshal.AsSpan(keys);
+            sorted.Sort();
+            for (int k = 1; k < sorted.Length; k++)
+            {
+                duplicates += sorted[k] == sorted[k - 1] ? 1 : 0;
             }
         }
 
@@ -205,18 +221,21 @@ internal sealed class AdaptiveLattice
         return common;
     }
 
-    /// <summary>A thread's source for one row at a time, its buffers kept across rows, threads and renders (<see cref="RenderOptions.Pool"/>).</summary>
-    public Source Rent()
+    /// <summary>
+    /// A thread's source for a piece of a row at a time, rows cut into <paramref name="pieces"/>, its buffers kept
+    /// across rows, threads and renders (<see cref="RenderOptions.Pool"/>).
+    /// </summary>
+    public Source Rent(int pieces)
     {
         var buffers = _options.Rent<Source.Buffers>();
-        buffers.Prepare(_plane.Width, _size, DenseDepth == 0 ? 0 : ((2 << DenseDepth) + 1) * DenseStride, CentreLine, _palette.Length);
+        buffers.Prepare(_plane.Width, _size, DenseDepth == 0 ? 0 : (2 << DenseDepth) + 1, DenseStride, CentreLine, _palette.Length, pieces);
         return new Source(this, buffers);
     }
 
     /// <summary>A thread is done (called under the row loop's lock): its last row's bottom-edge notes are kept, and its buffers go back to the pool after <see cref="SharedEdgeDuplicates"/>.</summary>
     public void Return(Source source)
     {
-        source.Storage.FlushBottomPoints();
+        source.Storage.FlushAllBottomPoints();
         _returned.Add(source.Storage);
     }
 
@@ -233,7 +252,7 @@ internal sealed class AdaptiveLattice
         private readonly AdaptiveLattice _lattice;
         private readonly Buffers _buffers;
         private long _x0, _y0;
-        private int _row, _pixel;
+        private int _row, _pixel, _piece, _begin, _end;
         private uint _pixelStamp;
 
         public Source(AdaptiveLattice lattice, Buffers buffers)
@@ -248,11 +267,11 @@ internal sealed class AdaptiveLattice
         /// <summary>Rays this source traced: centres, inner points, points on vertical and horizontal pixel lines.</summary>
         public long Rays { get; private set; }
 
-        /// <summary>What the pixel corners on the row's top edge hit, W + 1 entries.</summary>
-        public readonly ReadOnlySpan<int> TopCorners => _buffers.TopCorners;
+        /// <summary>What the pixel corners on the row's top edge hit, corner u at [u] (those of the piece, u0 to u1).</summary>
+        public readonly ReadOnlySpan<int> TopCorners => _buffers.Corners(_row, _piece);
 
-        /// <summary>What the pixel corners on the row's bottom edge hit, W + 1 entries.</summary>
-        public readonly ReadOnlySpan<int> BottomCorners => _buffers.BottomCorners;
+        /// <summary>What the pixel corners on the row's bottom edge hit, corner u at [u] (those of the piece, u0 to u1).</summary>
+        public readonly ReadOnlySpan<int> BottomCorners => _buffers.Corners(_row + 1, _piece);
 
         /// <summary>
         /// The guard's notes on the blocks of block row <paramref name="blockRow"/>, <paramref name="count"/> of them:
@@ -276,18 +295,30 @@ internal sealed class AdaptiveLattice
             return buffers.GuardBlocks;
         }
 
+        /// <summary>The first pixel of the piece of the row being rendered (u0).</summary>
+        public readonly int Begin => _begin;
+
+        /// <summary>One past the last pixel of the piece (u1).</summary>
+        public readonly int End => _end;
+
         /// <summary>
-        /// Starts a row: its two corner lines (the top one taken from the row above when this thread rendered it),
-        /// its centres with the quincunx, and with a minimum depth its band of minimum-depth points, line by line.
+        /// Starts piece <paramref name="piece"/> of a row, pixels <paramref name="begin"/> to <paramref name="end"/> − 1:
+        /// their two corner lines (the top one taken from the piece above when this thread rendered that piece last),
+        /// their centres with the quincunx, and with a minimum depth their band of minimum-depth points, line by line.
         /// </summary>
-        public readonly void BeginRow(int row)
+        public void BeginRow(int row, int piece, int begin, int end)
         {
+            _row = row;
+            _piece = piece;
+            _begin = begin;
+            _end = end;
             AdaptiveLattice lattice = _lattice;
             int m = lattice.DenseDepth;
             TraceCorners(row);
             if (lattice.CentreLine)
             {
-                long centres = lattice.TraceLine((row * lattice._size) + (lattice._size / 2), lattice._size / 2, lattice._size, _buffers.Centres);
+                long size = lattice._size;
+                long centres = lattice.TraceLine((row * size) + (size / 2), size / 2, size, lattice._plane.Width, _buffers.Centres, begin, end - 1, begin, _buffers.Scratch);
                 if (centres != 0)
                 {
                     Interlocked.Add(ref lattice._retraced, centres);
@@ -300,29 +331,33 @@ internal sealed class AdaptiveLattice
             }
 
             long g = lattice._size >> (m + 1), y0 = row * lattice._size;
-            int stride = lattice.DenseStride, last = 2 << m, first = 0;
+            Buffers buffers = _buffers;
+            int stride = buffers.DenseStride, points = lattice.DenseStride, last = 2 << m, first = 0, lo = begin << m, across = (end - begin) << m;
             long again = 0;
-            if (row > 0 && _buffers.DenseRow == row - 1)
+            if (row > 0 && buffers.DenseRowOf[piece] == row - 1)
             {
-                // This thread's last row was the one above: its bottom line is this row's top line, taken rather than
-                // traced again (its points traced again in double counted as if it were, so the count does not
-                // depend on which thread took which row).
-                _buffers.Dense.AsSpan(last * stride, stride).CopyTo(_buffers.Dense);
-                again += _buffers.BottomLineRetraced;
+                // This thread rendered the piece above last: its bottom line is this piece's top line, taken rather
+                // than traced again (its points traced again in double counted as if it were, so the count does not
+                // depend on which thread took which piece).
+                buffers.Dense.AsSpan((last * stride) + piece + lo, across + 1).CopyTo(buffers.Dense.AsSpan(piece + lo));
+                again += buffers.BottomLineRetracedOf[piece];
                 first = 1;
             }
 
             for (int k = first; k <= last; k++)
             {
-                // Even lines: the depth-m squares' corners, every 2g; odd lines: their centres, between them.
+                // Even lines: the depth-m squares' corners, every 2g (the first one the piece on the left's too);
+                // odd lines: their centres, between them. Each piece's part of a line starts `piece` entries on, so
+                // the corner two pieces share is kept twice.
+                Span<int> line = buffers.Dense.AsSpan((k * stride) + piece, stride - piece);
                 int traced = (k & 1) == 0
-                    ? lattice.TraceLine(y0 + (k * g), 0, 2 * g, _buffers.Dense.AsSpan(k * stride, stride))
-                    : lattice.TraceLine(y0 + (k * g), g, 2 * g, _buffers.Dense.AsSpan(k * stride, stride - 1));
+                    ? lattice.TraceLine(y0 + (k * g), 0, 2 * g, points, line, lo, lo + across, begin == 0 ? 0 : lo + 1, buffers.Scratch)
+                    : lattice.TraceLine(y0 + (k * g), g, 2 * g, points - 1, line, lo, lo + across - 1, lo, buffers.Scratch);
                 again += traced;
-                _buffers.BottomLineRetraced = traced;
+                buffers.BottomLineRetracedOf[piece] = traced;
             }
 
-            _buffers.DenseRow = row;
+            buffers.DenseRowOf[piece] = row;
 
             if (again != 0)
             {
@@ -331,27 +366,25 @@ internal sealed class AdaptiveLattice
         }
 
         /// <summary>
-        /// The row's corner lines: the top one is the last row's bottom one when this thread rendered the row above,
-        /// else traced; the bottom one traced. Points traced again in double count once per line: the bottom line's
-        /// always, the top line's only on row 0.
+        /// The piece's corner lines, corners u0 to u1: the top one is kept from the piece above when this thread
+        /// rendered that piece last, else traced; the bottom one traced. Points traced again in double count once per
+        /// line: the bottom line's always, the top line's only on row 0; and corner u0 only in the first piece (it is
+        /// the piece on the left's last).
         /// </summary>
         private readonly void TraceCorners(int row)
         {
             AdaptiveLattice lattice = _lattice;
             Buffers buffers = _buffers;
-            long again = 0;
-            if (buffers.CornerLine == row)
+            long size = lattice._size, again = 0;
+            int begin = _begin, end = _end, piece = _piece, countFrom = begin == 0 ? 0 : begin + 1, length = lattice._plane.Width + 1;
+            if (buffers.CornerLineOf[piece] != row)
             {
-                (buffers.Top, buffers.Bottom) = (buffers.Bottom, buffers.Top);
-            }
-            else
-            {
-                int traced = lattice.TraceLine(row * lattice._size, 0, lattice._size, buffers.TopCorners);
+                int traced = lattice.TraceLine(row * size, 0, size, length, buffers.Corners(row, piece), begin, end, countFrom, buffers.Scratch);
                 again += row == 0 ? traced : 0;
             }
 
-            again += lattice.TraceLine((row + 1) * lattice._size, 0, lattice._size, buffers.BottomCorners);
-            buffers.CornerLine = row + 1;
+            again += lattice.TraceLine((row + 1) * size, 0, size, length, buffers.Corners(row + 1, piece), begin, end, countFrom, buffers.Scratch);
+            buffers.CornerLineOf[piece] = row + 1;
             if (again != 0)
             {
                 Interlocked.Add(ref lattice._retraced, again);
@@ -359,18 +392,18 @@ internal sealed class AdaptiveLattice
         }
 
         /// <summary>
-        /// How many pixels from <paramref name="x"/> on have every minimum-depth point hit the same thing,
-        /// <paramref name="id"/> (what the first one's top-left point hit): no square of theirs is refined further, so
-        /// their value and rays are those of that thing alone (<see cref="Uniform"/>). The pixel after the run is not
-        /// uniform.
+        /// How many pixels from <paramref name="x"/> to the piece's end have every minimum-depth point hit the same
+        /// thing, <paramref name="id"/> (what the first one's top-left point hit): no square of theirs is refined
+        /// further, so their value and rays are those of that thing alone (<see cref="Uniform"/>). The pixel after the
+        /// run is not uniform.
         /// </summary>
         public readonly int UniformRun(int x, out int id)
         {
             AdaptiveLattice lattice = _lattice;
-            int m = lattice.DenseDepth, stride = lattice.DenseStride, first = x << m, across = 1 << m;
+            int m = lattice.DenseDepth, stride = _buffers.DenseStride, first = _piece + (x << m), across = 1 << m;
             int[] dense = _buffers.Dense;
             id = dense[first];
-            int run = lattice._plane.Width - x;
+            int run = _end - x;
             for (int k = 0, offset = first; k <= 2 << m && run > 0; k++, offset += stride)
             {
                 // Even lines: pixel x + i needs its across + 1 corners from first + i·across equal; odd lines: its
@@ -394,7 +427,7 @@ internal sealed class AdaptiveLattice
         /// </summary>
         public readonly bool TryUniformWithCentre(AdaptiveSampler sampler, int x, int row, out Intensity value, out double samples)
         {
-            ReadOnlySpan<int> top = _buffers.TopCorners, bottom = _buffers.BottomCorners;
+            ReadOnlySpan<int> top = TopCorners, bottom = BottomCorners;
             int id = top[x];
             if (top[x + 1] != id || bottom[x] != id || bottom[x + 1] != id || _buffers.Centres[x] != id)
             {
@@ -440,30 +473,31 @@ internal sealed class AdaptiveLattice
         }
 
         /// <summary>
-        /// Ends a row: its notes of horizontal-line points, sorted. Its top-edge points that the row above traced too
-        /// are taken off its rays when this thread rendered that row just before; else its top-edge notes, and the
-        /// bottom-edge notes of the row this thread rendered last, go to the lattice for <see cref="SharedEdgeDuplicates"/>.
+        /// Ends a piece of a row: its notes of horizontal-line points, sorted. Its top-edge points that the piece above
+        /// traced too are taken off its rays when this thread rendered that piece last; else its top-edge notes, and
+        /// the bottom-edge notes this thread kept for the piece, go to the lattice for <see cref="SharedEdgeDuplicates"/>.
         /// </summary>
         public void EndRow(int row)
         {
             Buffers buffers = _buffers;
+            int piece = _piece;
             buffers.TopPoints.Sort();
             buffers.BottomPoints.Sort();
-            if (row > 0 && buffers.PointsRow == row - 1)
+            if (row > 0 && buffers.PointsRowOf[piece] == row - 1)
             {
-                Rays -= Common(CollectionsMarshal.AsSpan(buffers.AboveBottomPoints), CollectionsMarshal.AsSpan(buffers.TopPoints));
+                Rays -= Common(CollectionsMarshal.AsSpan(buffers.AboveBottomPointsOf[piece]), CollectionsMarshal.AsSpan(buffers.TopPoints));
             }
             else
             {
-                buffers.FlushBottomPoints();
+                buffers.FlushBottomPoints(piece);
                 if (row > 0)
                 {
                     buffers.Note(row, top: true, buffers.TopPoints);
                 }
             }
 
-            (buffers.AboveBottomPoints, buffers.BottomPoints) = (buffers.BottomPoints, buffers.AboveBottomPoints);
-            buffers.PointsRow = row;
+            (buffers.AboveBottomPointsOf[piece], buffers.BottomPoints) = (buffers.BottomPoints, buffers.AboveBottomPointsOf[piece]);
+            buffers.PointsRowOf[piece] = row;
             buffers.TopPoints.Clear();
             buffers.BottomPoints.Clear();
         }
@@ -499,7 +533,7 @@ internal sealed class AdaptiveLattice
 
             if (onColumn && onRow)
             {
-                return lattice._palette[(ly == _y0 ? _buffers.TopCorners : _buffers.BottomCorners)[(int)(lx / size)]];
+                return lattice._palette[(ly == _y0 ? TopCorners : BottomCorners)[(int)(lx / size)]];
             }
 
             if (onRow)
@@ -510,36 +544,44 @@ internal sealed class AdaptiveLattice
                 return lattice._palette[lattice.Trace(lx, ly)];
             }
 
-            ulong[] slots;
-            int index;
-            ulong stamp;
             if (onColumn)
             {
-                // Left or right pixel edge: the right one is the next pixel's left one.
+                // Left or right pixel edge: the right one is the next pixel's left one; on the line between two
+                // pieces, the other piece's too.
                 int line = lx == _x0 ? _pixel : _pixel + 1;
-                slots = _buffers.Lines;
-                index = ((line & 1) * (int)(size + 1)) + (int)(ly - _y0);
-                stamp = ((ulong)(uint)(_row + 1) << 32) | (uint)line;
-            }
-            else
-            {
-                // Inside the pixel: every such point has even coordinates (no square below MaxDepth is refined).
-                slots = _buffers.Interior;
-                index = ((int)((ly - _y0) >> 1) * (int)((size >> 1) + 1)) + (int)((lx - _x0) >> 1);
-                stamp = _pixelStamp;
+                int index = ((line & 1) * (int)(size + 1)) + (int)(ly - _y0);
+                bool betweenPieces = (line == _begin && line != 0) || (line == _end && line != lattice._plane.Width);
+                return lattice._palette[Kept(_buffers.Lines, index, ((ulong)(uint)(_row + 1) << 32) | (uint)line, lx, ly, betweenPieces)];
             }
 
-            ulong slot = slots[index + index];
-            if (slot == stamp)
+            // Inside the pixel: every such point has even coordinates (no square below MaxDepth is refined).
+            int inside = ((int)((ly - _y0) >> 1) * (int)((size >> 1) + 1)) + (int)((lx - _x0) >> 1);
+            return lattice._palette[Kept(_buffers.Interior, inside, _pixelStamp, lx, ly, shared: false)];
+        }
+
+        /// <summary>
+        /// What (<paramref name="lx"/>, <paramref name="ly"/>) hit: from entry <paramref name="index"/> of
+        /// <paramref name="slots"/> while its stamp is <paramref name="stamp"/>, else traced and kept there (and noted
+        /// for <see cref="SharedEdgeDuplicates"/> when another piece may trace it too).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private int Kept(ulong[] slots, int index, ulong stamp, long lx, long ly, bool shared)
+        {
+            if (slots[index + index] == stamp)
             {
-                return lattice._palette[(int)slots[index + index + 1]];
+                return (int)slots[index + index + 1];
             }
 
-            int id = lattice.Trace(lx, ly);
+            int id = _lattice.Trace(lx, ly);
             slots[index + index] = stamp;
             slots[index + index + 1] = (ulong)id;
+            if (shared)
+            {
+                _buffers.SharedPoints.Add(_buffers.Key(lx, ly));
+            }
+
             Rays++;
-            return lattice._palette[id];
+            return id;
         }
 
         /// <summary>The value at (lx, ly) when it is one of the row's minimum-depth points, already traced.</summary>
@@ -556,7 +598,7 @@ internal sealed class AdaptiveLattice
                     long k = y >> shift, x = lx & ((2 * g) - 1);
                     if (x == ((k & 1) == 0 ? 0 : g))
                     {
-                        value = lattice._palette[_buffers.Dense[(k * lattice.DenseStride) + (lx >> (shift + 1))]];
+                        value = lattice._palette[_buffers.Dense[(k * _buffers.DenseStride) + _piece + (lx >> (shift + 1))]];
                         return true;
                     }
                 }
@@ -573,18 +615,20 @@ internal sealed class AdaptiveLattice
         /// </summary>
         internal sealed class Buffers
         {
-            public int[] Top { get; set; } = [];
+            private readonly int[][] _corners = [[], []];
 
-            public int[] Bottom { get; set; } = [];
+            /// <summary>
+            /// Corner line <paramref name="line"/>'s entries for piece <paramref name="piece"/>, corner u at [u]: the
+            /// lines are kept by parity, each piece's part starting <paramref name="piece"/> entries on, so the corner
+            /// two pieces share is kept once for each and no piece writes another's.
+            /// </summary>
+            public Span<int> Corners(int line, int piece) => _corners[line & 1].AsSpan(piece);
 
-            /// <summary>The row's top corner line, W + 1 entries.</summary>
-            public Span<int> TopCorners => Top;
+            /// <summary>For each piece, the corner line its part of <see cref="Corners"/> holds last (−1: none yet).</summary>
+            public int[] CornerLineOf { get; private set; } = [];
 
-            /// <summary>The row's bottom corner line, W + 1 entries.</summary>
-            public Span<int> BottomCorners => Bottom;
-
-            /// <summary>The pixel line whose corners <see cref="Bottom"/> holds (−1: none yet).</summary>
-            public int CornerLine { get; set; } = -1;
+            /// <summary>Room for a line's packets: the whole packets that hold a piece's points, traced before the points are copied out.</summary>
+            public int[] Scratch { get; private set; } = [];
 
             public int[] Centres { get; private set; } = [];
 
@@ -604,19 +648,25 @@ internal sealed class AdaptiveLattice
 
             public List<long> BottomPoints { get; set; } = [];
 
-            /// <summary>The bottom-edge notes, sorted, of the row this thread rendered last (<see cref="PointsRow"/>).</summary>
-            public List<long> AboveBottomPoints { get; set; } = [];
+            /// <summary>For each piece, the bottom-edge notes, sorted, of the row this thread rendered it in last (<see cref="PointsRowOf"/>).</summary>
+            public List<long>[] AboveBottomPointsOf { get; private set; } = [];
 
-            /// <summary>The row whose bottom-edge notes <see cref="AboveBottomPoints"/> holds (−1: none).</summary>
-            public int PointsRow { get; set; } = -1;
+            /// <summary>For each piece, the row whose bottom-edge notes <see cref="AboveBottomPointsOf"/> holds (−1: none).</summary>
+            public int[] PointsRowOf { get; private set; } = [];
 
             public uint Stamp { get; set; }
 
-            /// <summary>The row whose band of minimum-depth points <see cref="Dense"/> holds (−1: none yet).</summary>
-            public int DenseRow { get; set; } = -1;
+            /// <summary>
+            /// Entries per line of <see cref="Dense"/>: W·2^m + 1, plus one per piece (each piece's part of a line
+            /// starts <c>piece</c> entries on, as in <see cref="Corners"/>).
+            /// </summary>
+            public int DenseStride { get; private set; }
 
-            /// <summary>Points of that band's bottom line traced again in double.</summary>
-            public int BottomLineRetraced { get; set; }
+            /// <summary>For each piece, the row whose band of minimum-depth points its part of <see cref="Dense"/> holds (−1: none yet).</summary>
+            public int[] DenseRowOf { get; private set; } = [];
+
+            /// <summary>For each piece, the points of that band's bottom line traced again in double.</summary>
+            public int[] BottomLineRetracedOf { get; private set; } = [];
 
             /// <summary>The guard's notes on one block row's blocks (see <see cref="GuardBlocks"/>).</summary>
             public sbyte[] GuardBlocks { get; set; } = [];
@@ -624,46 +674,71 @@ internal sealed class AdaptiveLattice
             /// <summary>The block row <see cref="GuardBlocks"/> holds (−1: none).</summary>
             public int GuardBlockRow { get; set; } = -1;
 
-            /// <summary>The rows whose top or bottom-edge points this thread noted for <see cref="SharedEdgeDuplicates"/>, each a slice of <see cref="EdgePoints"/>.</summary>
-            public List<(int Row, bool Top, int Start, int Count)> EdgeNotes { get; } = [];
+            /// <summary>
+            /// The points shared with another piece that this thread traced and could not match at once, as keys
+            /// (<see cref="Key"/>), for <see cref="SharedEdgeDuplicates"/>.
+            /// </summary>
+            public List<long> SharedPoints { get; } = [];
 
-            /// <summary>The noted points, sorted within each note.</summary>
-            public List<long> EdgePoints { get; } = [];
+            /// <summary>Lattice points per lattice line, W·S + 1, and lattice steps per pixel side, S.</summary>
+            private long _lineLength, _size;
 
-            /// <summary>Notes row <paramref name="row"/>'s top or bottom-edge points (nothing when there are none).</summary>
+            /// <summary>Lattice point (<paramref name="lx"/>, <paramref name="ly"/>)'s number, row by row: one key per point.</summary>
+            public long Key(long lx, long ly) => (ly * _lineLength) + lx;
+
+            /// <summary>Notes the points <paramref name="points"/> (their lx) on row <paramref name="row"/>'s top or bottom edge.</summary>
             public void Note(int row, bool top, List<long> points)
             {
-                if (points.Count != 0)
+                long ly = (top ? row : row + 1) * _size;
+                foreach (long lx in points)
                 {
-                    EdgeNotes.Add((row, top, EdgePoints.Count, points.Count));
-                    EdgePoints.AddRange(points);
+                    SharedPoints.Add(Key(lx, ly));
                 }
             }
 
-            /// <summary>The points of note <paramref name="note"/>.</summary>
-            public ReadOnlySpan<long> EdgeNote(int note) => CollectionsMarshal.AsSpan(EdgePoints).Slice(EdgeNotes[note].Start, EdgeNotes[note].Count);
-
-            /// <summary>Notes the last row's bottom-edge points (the next row is not this thread's, or it is done).</summary>
-            public void FlushBottomPoints()
+            /// <summary>Notes the bottom-edge points this thread kept for piece <paramref name="piece"/> (its next row is not this thread's, or it is done).</summary>
+            public void FlushBottomPoints(int piece)
             {
-                if (PointsRow >= 0)
+                if (PointsRowOf[piece] >= 0)
                 {
-                    Note(PointsRow, top: false, AboveBottomPoints);
-                    AboveBottomPoints.Clear();
-                    PointsRow = -1;
+                    Note(PointsRowOf[piece], top: false, AboveBottomPointsOf[piece]);
+                    AboveBottomPointsOf[piece].Clear();
+                    PointsRowOf[piece] = -1;
+                }
+            }
+
+            /// <summary>Notes every piece's kept bottom-edge points: the thread is done.</summary>
+            public void FlushAllBottomPoints()
+            {
+                for (int piece = 0; piece < PointsRowOf.Length; piece++)
+                {
+                    FlushBottomPoints(piece);
                 }
             }
 
             /// <summary>
-            /// Sizes the buffers for a render of <paramref name="width"/> pixels a row and <paramref name="size"/>
-            /// lattice steps a pixel side (arrays of another length are replaced), and forgets the last render.
+            /// Sizes the buffers for a render of <paramref name="width"/> pixels a row, cut into
+            /// <paramref name="pieces"/>, and <paramref name="size"/> lattice steps a pixel side, with
+            /// <paramref name="denseLines"/> lines of <paramref name="densePoints"/> minimum-depth points (arrays of another
+            /// length are replaced), and forgets the last render.
             /// </summary>
-            public void Prepare(int width, long size, int denseEntries, bool centres, int paletteLength)
+            public void Prepare(int width, long size, int denseLines, int densePoints, bool centres, int paletteLength, int pieces)
             {
-                Top = Sized(Top, width + 1);
-                Bottom = Sized(Bottom, width + 1);
+                _corners[0] = Sized(_corners[0], width + 1 + pieces);
+                _corners[1] = Sized(_corners[1], width + 1 + pieces);
+                CornerLineOf = Sized(CornerLineOf, pieces);
+                DenseStride = denseLines == 0 ? 0 : densePoints + pieces;
+                Scratch = Sized(Scratch, Math.Max(width + 1, densePoints) + 16);
                 Centres = Sized(Centres, centres ? width : 0);
-                Dense = Sized(Dense, denseEntries);
+                Dense = Sized(Dense, denseLines * DenseStride);
+                DenseRowOf = Sized(DenseRowOf, pieces);
+                BottomLineRetracedOf = Sized(BottomLineRetracedOf, pieces);
+                PointsRowOf = Sized(PointsRowOf, pieces);
+                if (AboveBottomPointsOf.Length != pieces)
+                {
+                    AboveBottomPointsOf = [.. Enumerable.Range(0, pieces).Select(_ => new List<long>())];
+                }
+
                 UniformValue = Sized(UniformValue, paletteLength);
                 UniformSamples = Sized(UniformSamples, paletteLength);
                 UniformKnown = Sized(UniformKnown, paletteLength);
@@ -672,14 +747,22 @@ internal sealed class AdaptiveLattice
                 Array.Clear(UniformKnown);
                 Array.Clear(Interior);
                 Array.Clear(Lines);
+                Array.Fill(CornerLineOf, -1);
+                Array.Fill(DenseRowOf, -1);
+                Array.Fill(PointsRowOf, -1);
+                Array.Clear(BottomLineRetracedOf);
                 TopPoints.Clear();
                 BottomPoints.Clear();
-                AboveBottomPoints.Clear();
-                EdgeNotes.Clear();
-                EdgePoints.Clear();
+                foreach (List<long> kept in AboveBottomPointsOf)
+                {
+                    kept.Clear();
+                }
+
+                SharedPoints.Clear();
+                _size = size;
+                _lineLength = (width * size) + 1;
                 Stamp = 0;
-                CornerLine = DenseRow = GuardBlockRow = PointsRow = -1;
-                BottomLineRetraced = 0;
+                GuardBlockRow = -1;
 
                 static T[] Sized<T>(T[] kept, int length) => kept.Length == length ? kept : new T[length];
             }

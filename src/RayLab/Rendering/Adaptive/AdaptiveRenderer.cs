@@ -4,8 +4,10 @@ using RayLab.Cameras;
 namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
-/// The lab's adaptive antialiasing (section 4.1.4) as a renderer: on the <see cref="RowLoop"/>, row by row, each row's pixel corners are traced as two lines (<see cref="AdaptiveLattice"/>), then each pixel is
-/// subdivided where its values disagree (<see cref="AdaptivePixel"/>), each thread with its own reusable buffers. It relies
+/// The lab's adaptive antialiasing (section 4.1.4) as a renderer: on the <see cref="RowLoop"/>, a piece of a row at a
+/// time (<see cref="Pieces"/>: whole rows but for costly rows on <see cref="PiecesFrom"/> threads or more), each piece's pixel corners are traced as two lines (<see cref="AdaptiveLattice"/>),
+/// then each pixel is subdivided where its values disagree (<see cref="AdaptivePixel"/>), each thread with its own
+/// reusable buffers. It relies
 /// on the scene's flat shading: a point is kept as the index of what it hit, its value that index's
 /// <see cref="Scene.ColourOf"/>.
 /// </summary>
@@ -77,18 +79,44 @@ internal static class AdaptiveRenderer
         return x - start;
     }
 
+    /// <summary>The fewest threads for which rows are cut into pieces.</summary>
+    public const int PiecesFrom = 8;
+
+    /// <summary>The most pieces a row is cut into.</summary>
+    public const int MostPieces = 8;
+
+    /// <summary>The narrowest piece: one 16-lane packet of corners.</summary>
+    public const int NarrowestPiece = 16;
+
+    /// <summary>
+    /// The pieces each row of a <paramref name="width"/>-pixel render on <paramref name="threads"/> threads is cut into,
+    /// left to right: <paramref name="requested"/> (at most one a pixel) when it is positive; else, where rows are
+    /// costly (<paramref name="costlyRows"/>: the scene is traced through its hierarchy, many spheres) and there are
+    /// <see cref="PiecesFrom"/> threads or more, one piece per two threads, at most <see cref="MostPieces"/>, none
+    /// narrower than <see cref="NarrowestPiece"/>; else whole rows. A piece is the row loop's unit of work: a row of the
+    /// sphere field's horizon costs many times a mean row, and the frame ends when the last unit does. A piece costs
+    /// its own set-up, about 160 ns, which is lost in a costly row and not in a cheap one (a two-sphere row costs some
+    /// 12 µs). The image, the rays and the points traced again in double are the same however the rows are cut.
+    /// </summary>
+    public static int Pieces(int width, int threads, bool costlyRows, int requested = 0) =>
+        requested > 0 ? Math.Min(requested, Math.Max(1, width))
+        : !costlyRows || threads < PiecesFrom ? 1
+        : Math.Clamp(Math.Min(threads / 2, width / NarrowestPiece), 1, MostPieces);
+
     /// <summary>Renders with <paramref name="sampler"/>'s settings; <paramref name="raysPerPixel"/>, if given, receives each pixel's rays.</summary>
     public static RenderStatistics Render(Scene scene, ImagePlane plane, AdaptiveSampler sampler, PixelTarget image, RenderOptions options, float[]? raysPerPixel)
     {
         var loop = RowLoop.Start(options, image.Height);
         var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, sampler.Quincunx, sampler.Guard, options);
-        RowTotals totals = loop.Run(new Rows(lattice, sampler, image, raysPerPixel));
+        (int first, int end) = options.Rows(image.Height);
+        int threads = BandSchedule.Workers(Math.Max(0, end - first), options.MaxDegreeOfParallelism);
+        RowTotals totals = loop.Run(new Rows(lattice, sampler, image, raysPerPixel, Pieces(image.Width, threads, scene.UsesHierarchy, options.RowPieces)));
         long rays = lattice.CornerRays + lattice.DenseRays + lattice.CentreRays + totals.Rays - lattice.SharedEdgeDuplicates();
         return loop.Finish(rays, lattice.Kernel, lattice.RetracedPoints);
     }
 
-    /// <summary>The adaptive rows, each thread with its lattice <see cref="AdaptiveLattice.Source"/>.</summary>
-    private sealed class Rows(AdaptiveLattice lattice, AdaptiveSampler sampler, PixelTarget image, float[]? raysPerPixel) : IRowRenderer<AdaptiveLattice.Source>
+    /// <summary>The adaptive rows in <paramref name="pieces"/> pieces, each thread with its lattice <see cref="AdaptiveLattice.Source"/>.</summary>
+    private sealed class Rows(AdaptiveLattice lattice, AdaptiveSampler sampler, PixelTarget image, float[]? raysPerPixel, int pieces) : IRowRenderer<AdaptiveLattice.Source>
     {
         private readonly bool _flatWithoutCentre = !sampler.Quincunx && sampler.MinDepth == 0;
 
@@ -96,9 +124,11 @@ internal static class AdaptiveRenderer
         private readonly bool _dense = lattice.DenseDepth != 0 && lattice.Guard is null;
         private readonly bool _centres = lattice.CentreLine && lattice.Guard is null;
 
-        public AdaptiveLattice.Source Rent() => lattice.Rent();
+        public AdaptiveLattice.Source Rent() => lattice.Rent(pieces);
 
         public bool ReusesRowAbove => true;
+
+        public int PiecesPerRow => pieces;
 
         public void Return(AdaptiveLattice.Source source, ref RowTotals totals)
         {
@@ -108,17 +138,26 @@ internal static class AdaptiveRenderer
 
         public void RenderRow(int row, ref AdaptiveLattice.Source source)
         {
+            for (int piece = 0; piece < pieces; piece++)
+            {
+                RenderPiece(row, piece, ref source);
+            }
+        }
+
+        public void RenderPiece(int row, int piece, ref AdaptiveLattice.Source source)
+        {
             TargetRow pixels = image.Row(row);
-            source.BeginRow(row);
+            int begin = (int)((long)pixels.Length * piece / pieces), end = (int)((long)pixels.Length * (piece + 1) / pieces);
+            source.BeginRow(row, piece, begin, end);
             Span<float> counts = raysPerPixel is null ? default : raysPerPixel.AsSpan((int)((long)row * pixels.Length), pixels.Length);
             var guard = new GuardState(lattice.Guard, lattice.Size, lattice.Guard is null ? default : source.GuardBlocks(row / GuardBlock, (pixels.Length / GuardBlock) + 1));
-            for (int x = 0; x < pixels.Length; x++)
+            for (int x = begin; x < end; x++)
             {
                 // Runs first: with neither minimum depth nor quincunx, flat pixels; with a minimum depth, uniform ones.
                 x += _flatWithoutCentre ? FlatRun(source, pixels, counts, x, row, ref guard)
                     : _dense ? UniformRun(source, pixels, counts, x, row)
                     : 0;
-                if (x == pixels.Length)
+                if (x == end)
                 {
                     break;
                 }
@@ -146,14 +185,15 @@ internal static class AdaptiveRenderer
 
         /// <summary>
         /// Most pixels: four corners on the same sphere (or the background), nothing more to trace. The run of flat
-        /// pixels from x that hit what corner x hit ends where either corner line first hits something else; the
-        /// pixel after the run is not flat. Writes the run (up to where the guard stops it); returns its length.
+        /// pixels from x that hit what corner x hit ends where either corner line first hits something else, or at the
+        /// piece's end; the pixel after the run is not flat. Writes the run (up to where the guard stops it); returns
+        /// its length.
         /// </summary>
         private int FlatRun(in AdaptiveLattice.Source source, TargetRow pixels, Span<float> counts, int x, int row, ref GuardState guard)
         {
-            ReadOnlySpan<int> top = source.TopCorners, bottom = source.BottomCorners;
-            int id = top[x];
-            int run = Math.Min(RunLength(top[x..], id), RunLength(bottom[x..], id)) - 1;
+            ReadOnlySpan<int> top = source.TopCorners[x..(source.End + 1)], bottom = source.BottomCorners[x..(source.End + 1)];
+            int id = top[0];
+            int run = Math.Min(RunLength(top, id), RunLength(bottom, id)) - 1;
             if (run <= 0)
             {
                 return 0;

@@ -115,20 +115,24 @@ internal sealed class LatticeHits
     /// Fills <paramref name="ids"/> with the indices hit by lattice points (<paramref name="lxStart"/> + k·<paramref name="lxStep"/>,
     /// <paramref name="ly"/>), k = 0 … ids.Length − 1, compiled for the plane's projection; returns how many were traced again in double.
     /// </summary>
-    public int TraceRow<TL>(long ly, long lxStart, long lxStep, Span<int> ids)
+    public int TraceRow<TL>(long ly, long lxStart, long lxStep, Span<int> ids, int first = 0, int countFrom = 0, int countTo = int.MaxValue)
         where TL : struct, ILanes<TL>
     {
-        var line = new LineTrace<TL>(this, ly, lxStart, lxStep, ids);
+        var line = new LineTrace<TL>(this, ly, lxStart, lxStep, ids, first, countFrom, countTo);
         return _plane.Dispatch<LineTrace<TL>, int>(ref line);
     }
 
     /// <summary>
     /// Fills <paramref name="ids"/> with the indices hit by lattice points (<paramref name="lxStart"/> + k·<paramref name="lxStep"/>,
-    /// <paramref name="ly"/>), k = 0 … ids.Length − 1; returns how many were traced again in double.
+    /// <paramref name="ly"/>), k = <paramref name="first"/> … <paramref name="first"/> + ids.Length − 1, in packets of
+    /// k = <paramref name="first"/> + j·lanes on; returns how many with <paramref name="countFrom"/> ≤ k &lt;
+    /// <paramref name="countTo"/> were traced again in double (the others are another piece's, which counts them). A
+    /// point's float ray depends on k alone; whether it is traced again may depend on the other lanes of its packet
+    /// (the hierarchy visits what any lane needs), so a piece of a line traces the same packets as the whole line.
     /// </summary>
     // Long: one packet loop over the row whose lane registers (window, α step, rays, nearest, closest) a split would pass through memory per packet.
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    public int TraceRow<TL, TP>(long ly, long lxStart, long lxStep, Span<int> ids)
+    public int TraceRow<TL, TP>(long ly, long lxStart, long lxStep, Span<int> ids, int first = 0, int countFrom = 0, int countTo = int.MaxValue)
         where TL : struct, ILanes<TL>
         where TP : struct, ILaneRays
     {
@@ -145,7 +149,7 @@ internal sealed class LatticeHits
         int retraced = 0;
         for (int k0 = 0; k0 < ids.Length; k0 += lanes)
         {
-            TL alpha = TL.MultiplyAdd(TL.Broadcast(k0) + TL.Indices, step, start);
+            TL alpha = TL.MultiplyAdd(TL.Broadcast(first + k0) + TL.Indices, step, start);
             TP.GetRays(window, alpha, beta, out Lanes3<TL> origin, out Lanes3<TL> ray);
             (TL dx, TL dy, TL dz) = (ray.X, ray.Y, ray.Z);
             TL dd = TL.MultiplyAdd(dx, dx, TL.MultiplyAdd(dy, dy, dz * dz));
@@ -190,8 +194,9 @@ internal sealed class LatticeHits
             for (uint rest = uncertain & (uint)((1UL << count) - 1); rest != 0; rest &= rest - 1)
             {
                 int lane = System.Numerics.BitOperations.TrailingZeroCount(rest);
-                ids[k0 + lane] = TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lxStart + ((k0 + lane) * lxStep), ly);
-                retraced++;
+                ids[k0 + lane] = TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lxStart + ((first + k0 + (long)lane) * lxStep), ly);
+                int k = first + k0 + lane;
+                retraced += k >= countFrom && k < countTo ? 1 : 0;
             }
         }
 
@@ -218,12 +223,12 @@ internal sealed class LatticeHits
     }
 
     /// <summary>One line of the lattice, traced by the packet loop compiled for the plane's projection.</summary>
-    private readonly ref struct LineTrace<TL>(LatticeHits hits, long ly, long lxStart, long lxStep, Span<int> ids) : IProjectionAction<int>
+    private readonly ref struct LineTrace<TL>(LatticeHits hits, long ly, long lxStart, long lxStep, Span<int> ids, int first, int countFrom, int countTo) : IProjectionAction<int>
         where TL : struct, ILanes<TL>
     {
         private readonly Span<int> _ids = ids;
 
         public int Run<TP>(ImagePlane<TP> plane)
-            where TP : struct, IProjection => hits.TraceRow<TL, TP>(ly, lxStart, lxStep, _ids);
+            where TP : struct, IProjection => hits.TraceRow<TL, TP>(ly, lxStart, lxStep, _ids, first, countFrom, countTo);
     }
 }
