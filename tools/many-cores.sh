@@ -108,7 +108,7 @@ run() {
     echo "round $r done: $(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg)" >> "$out/machine.txt"
   done
   cp "$dir/field.json" "${TMPDIR:-/tmp}/raylab-scaling-field-24-40.json"
-  "$dir/raylab-scaling-$isa" --rounds 3 --threads "$(echo $threads | tr ' ' ',')" --model "$(echo $threads | tr ' ' ',')" \
+  "$dir/raylab-scaling-$isa" --rounds 3 --threads "$(echo $threads | tr ' ' ',')" --model "$(echo $threads | tr ' ' ',')" --cuts 2,4,8 \
     > "$out/scaling.md" 2>> "$out/errors.txt" || echo "raylab-scaling failed: $?" >> "$out/errors.txt"
   rm -rf "$tmp"
 }

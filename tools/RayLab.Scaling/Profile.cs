@@ -50,6 +50,27 @@ internal sealed class Profile
     }
 
     /// <summary>
+    /// The same render with every band's time scaled so the rows' work is <paramref name="rowsMs"/>: what a cut of the
+    /// rows gains from the schedule alone, with the machine's drift between profiles and the cut's own cost left out.
+    /// </summary>
+    public Profile WithRowsWork(double rowsMs)
+    {
+        double scale = rowsMs / RowsMs;
+        return new Profile
+        {
+            PreparationMs = PreparationMs,
+            ParallelPreparationMs = ParallelPreparationMs,
+            AfterMs = AfterMs,
+            BandMs = [.. BandMs.Select(ms => ms * scale)],
+            Pieces = Pieces,
+            ScatteredBandMs = [.. ScatteredBandMs.Select(ms => ms * scale)],
+            HierarchyMs = HierarchyMs,
+            BuffersMs = BuffersMs,
+            EncodeMs = EncodeMs,
+        };
+    }
+
+    /// <summary>
     /// The profiles of case <paramref name="c"/>, one for each count of pieces in <paramref name="pieces"/> that the
     /// adaptive renderer cuts its rows into (0: its own choice), their renders taken in the same rounds, so that the
     /// machine's speed drifting between rounds does not read as a difference between the cuts.

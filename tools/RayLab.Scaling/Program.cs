@@ -10,7 +10,8 @@ using RayLab.Scaling;
 // Adaptive rows are modelled at each thread count cut as the renderer cuts them there (AdaptiveRenderer.Pieces), from a
 // one-thread profile of that cut; --pieces P cuts them into P pieces (1: whole rows) at every thread count instead.
 // --cuts 2,4,8 adds, for adaptive, the model at the most threads with rows cut into each of those counts (profiled in
-// the same rounds), so the renderer's own choice can be weighed against others.
+// the same rounds), so the renderer's own choice can be weighed against others: as profiled, and with the cut's rows'
+// work scaled to whole rows' (the schedule's gain alone).
 // A CASE is one row of the issue's table: bench-jittered16, bench-jittered256, bench-adaptive, bench-guard, bench-exact,
 // field-jittered16, field-adaptive, field-guard, field-exact; none: all but bench-jittered256.
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
@@ -72,7 +73,8 @@ foreach (Case c in cases)
         if (profiles.Count > 1)
         {
             Console.WriteLine();
-            Console.WriteLine($"Rows in {cutInto} piece{(cutInto == 1 ? "" : "s")} (at {string.Join(", ", all.Where(n => PiecesAt(n) == cutInto))} threads):");
+            int[] at = [.. all.Where(n => PiecesAt(n) == cutInto)];
+            Console.WriteLine($"Rows in {cutInto} piece{(cutInto == 1 ? "" : "s")} ({(at.Length == 0 ? "--cuts" : $"at {string.Join(", ", at)} threads")}):");
         }
 
         p.PrintPhases();
@@ -119,7 +121,7 @@ foreach (Case c in cases)
     double even = model1 / (model1 - profile.RowsMs + (profile.RowsMs / most) - profile.ParallelPreparationMs + (profile.ParallelPreparationMs / most));
     foreach (int cutInto in inOrder ? [] : cuts)
     {
-        cutSummary.Add($"| {c.Name} | {cutInto} | {profiles[cutInto].RowsMs / profiles[1].RowsMs:F3} | {model1 / new Model(profiles[cutInto], inOrder).Predict(most):F2}× |");
+        cutSummary.Add($"| {c.Name} | {cutInto} | {profiles[cutInto].RowsMs / profiles[1].RowsMs:F3} | {model1 / new Model(profiles[cutInto], inOrder).Predict(most):F2}× | {model1 / new Model(profiles[cutInto].WithRowsWork(profiles[1].RowsMs), inOrder).Predict(most):F2}× |");
     }
 
     summary.Add($"| {c.Name} | {model1:F1} | {string.Join(" | ", cells)} | {whole} | {cut:F2}× | {even:F2}× | {before1 / before.Predict(most):F2}× | {(times.TryGetValue(2, out double two) ? $"{measured1 / two:F2}×" : "–")} |");
@@ -132,8 +134,8 @@ summary.ForEach(Console.WriteLine);
 if (cutSummary.Count != 0)
 {
     Console.WriteLine();
-    Console.WriteLine($"| case | rows cut into | rows' work / whole rows' | model {all[^1]} |");
-    Console.WriteLine("|---|---:|---:|---:|");
+    Console.WriteLine($"| case | rows cut into | rows' work / whole rows' | model {all[^1]} | model {all[^1]}, rows' work as whole rows' |");
+    Console.WriteLine("|---|---:|---:|---:|---:|");
     cutSummary.ForEach(Console.WriteLine);
 }
 
