@@ -9,7 +9,7 @@ namespace RayLab.Rendering.Adaptive;
 
 /// <summary>
 /// The points an adaptive render traces, each once, kept as the index of what they hit (0 the background,
-/// k + 1 sphere k: the scenes' colours are flat), a piece of a row of pixels at a time (pixels u0 to u1 − 1) by a
+/// k + 1 sphere k: the scenes' colours are flat), a piece of a row of pixels at a time (pixels x0 to x1 − 1) by a
 /// thread's <see cref="Source"/>, in memory of O(W) per thread: the piece's two lines of pixel corners (by the SIMD
 /// packet tracer where the frame allows it, <see cref="LatticeHits"/>), then the points the recursion asks for,
 /// without a dictionary or an allocation per point. Nothing of size W×H is kept.
@@ -267,10 +267,10 @@ internal sealed class AdaptiveLattice
         /// <summary>Rays this source traced: centres, inner points, points on vertical and horizontal pixel lines.</summary>
         public long Rays { get; private set; }
 
-        /// <summary>What the pixel corners on the row's top edge hit, corner u at [u] (those of the piece, u0 to u1).</summary>
+        /// <summary>What the pixel corners on the row's top edge hit, corner x at [x] (those of the piece, x0 to x1).</summary>
         public readonly ReadOnlySpan<int> TopCorners => _buffers.Corners(_row, _piece);
 
-        /// <summary>What the pixel corners on the row's bottom edge hit, corner u at [u] (those of the piece, u0 to u1).</summary>
+        /// <summary>What the pixel corners on the row's bottom edge hit, corner x at [x] (those of the piece, x0 to x1).</summary>
         public readonly ReadOnlySpan<int> BottomCorners => _buffers.Corners(_row + 1, _piece);
 
         /// <summary>
@@ -295,10 +295,10 @@ internal sealed class AdaptiveLattice
             return buffers.GuardBlocks;
         }
 
-        /// <summary>The first pixel of the piece of the row being rendered (u0).</summary>
+        /// <summary>The first pixel of the piece of the row being rendered (x0).</summary>
         public readonly int Begin => _begin;
 
-        /// <summary>One past the last pixel of the piece (u1).</summary>
+        /// <summary>One past the last pixel of the piece (x1).</summary>
         public readonly int End => _end;
 
         /// <summary>
@@ -366,9 +366,9 @@ internal sealed class AdaptiveLattice
         }
 
         /// <summary>
-        /// The piece's corner lines, corners u0 to u1: the top one is kept from the piece above when this thread
+        /// The piece's corner lines, corners x0 to x1: the top one is kept from the piece above when this thread
         /// rendered that piece last, else traced; the bottom one traced. Points traced again in double count once per
-        /// line: the bottom line's always, the top line's only on row 0; and corner u0 only in the first piece (it is
+        /// line: the bottom line's always, the top line's only on row 0; and corner x0 only in the first piece (it is
         /// the piece on the left's last).
         /// </summary>
         private readonly void TraceCorners(int row)
@@ -618,7 +618,7 @@ internal sealed class AdaptiveLattice
             private readonly int[][] _corners = [[], []];
 
             /// <summary>
-            /// Corner line <paramref name="line"/>'s entries for piece <paramref name="piece"/>, corner u at [u]: the
+            /// Corner line <paramref name="line"/>'s entries for piece <paramref name="piece"/>, corner x at [x]: the
             /// lines are kept by parity, each piece's part starting <paramref name="piece"/> entries on, so the corner
             /// two pieces share is kept once for each and no piece writes another's.
             /// </summary>
