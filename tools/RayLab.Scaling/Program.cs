@@ -2,7 +2,7 @@ using System.Globalization;
 using RayLab.Rendering.Adaptive;
 using RayLab.Scaling;
 
-// Usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [--pieces P] [CASE ...]
+// Usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [--pieces P] [--cuts 2,4,8] [CASE ...]
 // Per case: the phases of one render on one thread, the model's speed-up at each N (and the model of the loop before
 // work stealing: Parallel.For over bands of 16 rows for adaptive, 1 for the others), and the speed-up measured here.
 // The summary adds two what-ifs at the most threads: each band (a row, or an adaptive render's piece of a row) cut into

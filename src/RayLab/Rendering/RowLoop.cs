@@ -77,6 +77,16 @@ internal readonly struct RowLoop
     /// <summary>Starts the clock and the progress count for a render of <paramref name="rows"/> rows.</summary>
     public static RowLoop Start(RenderOptions options, int rows) => new(options, rows);
 
+    /// <summary>The threads the loop runs whole rows on: at most one a row of this render's band of rows.</summary>
+    public int Threads
+    {
+        get
+        {
+            (int first, int end) = _options.Rows(_rows);
+            return BandSchedule.Workers(Math.Max(0, end - first), _options.MaxDegreeOfParallelism);
+        }
+    }
+
     /// <summary>
     /// Renders every row, the token checked before each band, on <see cref="CrewFor"/> (<see cref="BandSchedule"/>). A
     /// band is a row, or where the renderer cuts rows (<see cref="IRowRenderer{TScratch}.PiecesPerRow"/>) one piece of
@@ -115,7 +125,6 @@ internal readonly struct RowLoop
             int row = start + (band / pieces);
             renderer.RenderPiece(row, band - ((row - start) * pieces), ref scratch);
             progress?.CompletePiece();
-
             trace?.Band(band, worker, began, trace.Clock());
         }, scratch =>
         {

@@ -124,17 +124,24 @@ internal sealed class AdaptiveLattice
             return 0;
         }
 
-        int lanes = Kernel switch { RenderKernel.Vector512 => 16, RenderKernel.Vector256 => 8, _ => 4 };
+        return Kernel switch
+        {
+            RenderKernel.Vector512 => TracePackets<Lanes512>(_hits, ly, lxStart, lxStep, length, line, from, to, countFrom, scratch),
+            RenderKernel.Vector256 => TracePackets<Lanes256>(_hits, ly, lxStart, lxStep, length, line, from, to, countFrom, scratch),
+            _ => TracePackets<Lanes128>(_hits, ly, lxStart, lxStep, length, line, from, to, countFrom, scratch),
+        };
+    }
+
+    /// <summary><see cref="TraceLine"/>'s packet path, in packets of <typeparamref name="TL"/>'s lanes.</summary>
+    private static int TracePackets<TL>(LatticeHits hits, long ly, long lxStart, long lxStep, int length, Span<int> line, int from, int to, int countFrom, Span<int> scratch)
+        where TL : struct, ILanes<TL>
+    {
+        int lanes = TL.Count;
         int first = from - (from % lanes), end = Math.Min(length, ((to / lanes) + 1) * lanes);
         // The packets hold exactly the points (a whole line, say): straight into the line.
         bool exact = first == from && end == to + 1;
         Span<int> ids = exact ? line[from..end] : scratch[..(end - first)];
-        int retraced = Kernel switch
-        {
-            RenderKernel.Vector512 => _hits.TraceRow<Lanes512>(ly, lxStart, lxStep, ids, first, countFrom, to + 1),
-            RenderKernel.Vector256 => _hits.TraceRow<Lanes256>(ly, lxStart, lxStep, ids, first, countFrom, to + 1),
-            _ => _hits.TraceRow<Lanes128>(ly, lxStart, lxStep, ids, first, countFrom, to + 1),
-        };
+        int retraced = hits.TraceRow<TL>(ly, lxStart, lxStep, ids, first, countFrom, to + 1);
         if (!exact)
         {
             ids[(from - first)..(to - first + 1)].CopyTo(line[from..]);
@@ -294,9 +301,6 @@ internal sealed class AdaptiveLattice
 
             return buffers.GuardBlocks;
         }
-
-        /// <summary>The first pixel of the piece of the row being rendered (x0).</summary>
-        public readonly int Begin => _begin;
 
         /// <summary>One past the last pixel of the piece (x1).</summary>
         public readonly int End => _end;

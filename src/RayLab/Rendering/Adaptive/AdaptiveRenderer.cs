@@ -108,9 +108,7 @@ internal static class AdaptiveRenderer
     {
         var loop = RowLoop.Start(options, image.Height);
         var lattice = new AdaptiveLattice(scene, plane, sampler.MinDepth, sampler.MaxDepth, sampler.Quincunx, sampler.Guard, options);
-        (int first, int end) = options.Rows(image.Height);
-        int threads = BandSchedule.Workers(Math.Max(0, end - first), options.MaxDegreeOfParallelism);
-        RowTotals totals = loop.Run(new Rows(lattice, sampler, image, raysPerPixel, Pieces(image.Width, threads, scene.UsesHierarchy, options.RowPieces)));
+        RowTotals totals = loop.Run(new Rows(lattice, sampler, image, raysPerPixel, Pieces(image.Width, loop.Threads, scene.UsesHierarchy, options.RowPieces)));
         long rays = lattice.CornerRays + lattice.DenseRays + lattice.CentreRays + totals.Rays - lattice.SharedEdgeDuplicates();
         return loop.Finish(rays, lattice.Kernel, lattice.RetracedPoints);
     }
