@@ -122,9 +122,10 @@ internal sealed class Profile
             {
                 Pieces = bands / c.Description.Height,
                 PreparationMs = Median(inOrder.Select(t => Cpu(t.RowsStarted - t.Started))),
-                // The set-up's part that runs in parallel, the exact outlines' crossing search, from the same renders'
-                // steps (timed apart, the machine's speed between the two measurements would count as serial work).
-                ParallelPreparationMs = Median(inOrder.Select(t => StepMs(t, "crossings"))),
+                // The set-up's part that runs in parallel, the exact outlines' search for crossing pairs, from the same
+                // renders' steps (timed apart, the machine's speed between the two measurements would count as serial
+                // work); gathering the crossings by row after it is serial.
+                ParallelPreparationMs = Median(inOrder.Select(t => StepMs(t, "crossing pairs"))),
                 AfterMs = Median(inOrder.Select(t => Cpu(t.Finished - t.RowsEnded))),
                 BandMs = [.. Enumerable.Range(0, bands).Select(b => Median(inOrder.Select(t => Band(t, b))))],
                 ScatteredBandMs = [.. Enumerable.Range(0, bands).Select(b => Median(scattered.Select(t => Band(t, b))))],
@@ -143,7 +144,7 @@ internal sealed class Profile
         Console.WriteLine("| phase (one thread, medians) | ms | in renderMs | scales |");
         Console.WriteLine("|---|---:|---|---|");
         Console.WriteLine($"| hierarchy (once per scene) | {HierarchyMs:F2} | no | – |");
-        Console.WriteLine($"| preparation (set-up in the clock) | {PreparationMs:F2} | yes | {(ParallelPreparationMs > 0 ? $"{ParallelPreparationMs:F2} of it (the outlines' crossings)" : "no")} |");
+        Console.WriteLine($"| preparation (set-up in the clock) | {PreparationMs:F2} | yes | {(ParallelPreparationMs > 0 ? $"{ParallelPreparationMs:F2} of it (the search for the outlines' crossings)" : "no")} |");
         Console.WriteLine($"| rows: {BandMs.Length}, one at a time | {RowsMs:F2} | yes | by the schedule |");
         Console.WriteLine($"| rows, every row scattered | {ScatteredBandMs.Sum():F2} | – | – |");
         Console.WriteLine($"| slowest row | {BandMs.Max():F3} | – | – |");

@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using RayLab.Cameras;
 
 namespace RayLab.Rendering.Exact;
@@ -19,7 +20,7 @@ namespace RayLab.Rendering.Exact;
 /// span (<see cref="RowPixels"/>), so they cost nothing per pixel.</para>
 /// <para>3. The sweep (<see cref="RowSweep"/>): the strips are not cut afresh. The branches are kept in their left-to-right
 /// order down the row, and at a cut only the outlines with something there (their own break, or a crossing of
-/// theirs: <see cref="OutlineSet.Crossings"/> names the pair) are found, taken out and put back; a piece's area
+/// theirs: <see cref="OutlineSet.CrossingsInRow"/> names the pair) are found, taken out and put back; a piece's area
 /// is added once for the whole height over which its two branches stay neighbours, and its colour is traced
 /// once, or carried when the same two branches are neighbours again just below a cut (not where both their
 /// outlines cross or touch at that cut: the two sides of a touching point need not share a colour). So a row costs about
@@ -44,6 +45,7 @@ internal sealed class ExactRow
     private readonly RowSweep _sweep;
     private readonly List<double> _cuts = [];
     private readonly List<(double Y, int Outline, bool Crossing)> _events = [];
+    private readonly List<OutlineSet.Crossing> _crossings = [];
     private readonly bool _sweeps;
 
     public ExactRow(Scene scene, ImagePlane plane, OutlineSet outlines, bool sweep, RowPixels.Buffers buffers)
@@ -87,7 +89,7 @@ internal sealed class ExactRow
             return;
         }
 
-        CutAtCrossings(y0, y1);
+        CutAtCrossings(row);
         _cuts.Add(y0);
         _cuts.Add(y1);
         _cuts.Sort();
@@ -138,38 +140,19 @@ internal sealed class ExactRow
         return segment;
     }
 
-    // Cuts the row (y0, y1) at every crossing of two outlines inside it (an event of each).
+    // Cuts the row (y0, y1) at every crossing of two outlines inside it (an event of each), in the crossings' order.
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private void CutAtCrossings(double y0, double y1)
+    private void CutAtCrossings(int row)
     {
-        OutlineSet.Crossing[] crossings = _outlines.Crossings;
-        for (int at = FirstCrossingFrom(crossings, y0); at < crossings.Length && crossings[at].Y < y1; at++)
+        _outlines.CrossingsInRow(row, _crossings);
+        foreach (OutlineSet.Crossing crossing in CollectionsMarshal.AsSpan(_crossings))
         {
-            if (crossings[at].Y > y0)
+            if (crossing.Y > row)
             {
-                _cuts.Add(crossings[at].Y);
-                _events.Add((crossings[at].Y, crossings[at].First, true));
-                _events.Add((crossings[at].Y, crossings[at].Second, true));
+                _cuts.Add(crossing.Y);
+                _events.Add((crossing.Y, crossing.First, true));
+                _events.Add((crossing.Y, crossing.Second, true));
             }
         }
-    }
-
-    private static int FirstCrossingFrom(OutlineSet.Crossing[] crossings, double y)
-    {
-        int lo = 0, hi = crossings.Length;
-        while (lo < hi)
-        {
-            int mid = (lo + hi) >>> 1;
-            if (crossings[mid].Y < y)
-            {
-                lo = mid + 1;
-            }
-            else
-            {
-                hi = mid;
-            }
-        }
-
-        return lo;
     }
 }

@@ -1,4 +1,5 @@
 using System.Globalization;
+using System.Runtime.InteropServices;
 using RayLab.Cameras;
 using RayLab.Geometry;
 
@@ -21,11 +22,13 @@ namespace RayLab.Rendering.Exact;
 /// </remarks>
 internal sealed class OutlineSet
 {
-    private OutlineSet(Outline[] outlines, Crossing[] crossings)
+    private readonly Crossing[] _crossings;
+    private readonly int[] _rowStarts;
+
+    private OutlineSet(Outline[] outlines, (Crossing[] Crossings, int[] RowStarts) byRow)
     {
         Outlines = outlines;
-        Crossings = crossings;
-        CrossingHeights = [.. crossings.Select(c => c.Y)];
+        (_crossings, _rowStarts) = byRow;
     }
 
     /// <summary>The most spheres in view the exact renderer draws (above it, <see cref="Build"/> refuses the scene).</summary>
@@ -34,11 +37,22 @@ internal sealed class OutlineSet
     /// <summary>The outlines that reach into the image.</summary>
     public Outline[] Outlines { get; }
 
-    /// <summary>The heights Y, sorted, where two outlines cross (and, to be safe, where they nearly touch).</summary>
-    public double[] CrossingHeights { get; }
+    /// <summary>How many heights there are where two outlines cross (and, to be safe, where they nearly touch).</summary>
+    public int CrossingCount => _crossings.Length;
 
-    /// <summary>The same crossings with the two outlines (indices into <see cref="Outlines"/>) that cross there, sorted by Y.</summary>
-    public Crossing[] Crossings { get; }
+    /// <summary>
+    /// The crossings with Y in [<paramref name="row"/>, <paramref name="row"/> + 1) (pixel row <paramref name="row"/>,
+    /// and those on its top edge), each with the two outlines that cross there, into <paramref name="into"/>
+    /// (cleared first), sorted by Y, then by the pair: the same list at every thread count.
+    /// </summary>
+    /// <param name="row">The pixel row, 0 at the top; the image's height gives the crossings on its bottom edge.</param>
+    /// <param name="into">The list to fill.</param>
+    public void CrossingsInRow(int row, List<Crossing> into)
+    {
+        into.Clear();
+        into.AddRange(_crossings.AsSpan(_rowStarts[row], _rowStarts[row + 1] - _rowStarts[row]));
+        CollectionsMarshal.AsSpan(into).Sort();
+    }
 
     /// <summary>Finds the outlines of <paramref name="scene"/> as <paramref name="plane"/> sees it.</summary>
     /// <param name="scene">The scene.</param>
@@ -92,7 +106,7 @@ internal sealed class OutlineSet
         Outline[] inImage = outlines.Where(o => (o.Hx > 0 || o.Hy > 0)
             && o.Right >= 0 && o.Left <= plane.Width && o.Bottom >= 0 && o.Top <= plane.Height).ToArray();
         trace?.SetUpStep("outlines");
-        Crossing[] crossings = FindCrossings(inImage, plane.Height, parallel);
+        (Crossing[], int[]) crossings = FindCrossings(inImage, plane.Height, parallel, trace);
         trace?.SetUpStep("crossings");
         return new OutlineSet(inImage, crossings);
     }
@@ -237,14 +251,14 @@ internal sealed class OutlineSet
         return (a.Centre + (along * n), radius, n);
     }
 
-    internal static Crossing[] FindCrossings(Outline[] outlines, int height, ParallelOptions? parallel)
+    internal static (Crossing[] Crossings, int[] RowStarts) FindCrossings(Outline[] outlines, int height, ParallelOptions? parallel, RowLoopTrace? trace = null)
     {
         var lists = new List<List<Crossing>>();
 
         // Only pairs whose heights overlap can cross: outlines by their top, each paired with those starting
         // above its bottom (a sweep down the image; every pair the all-pairs loop would find, as i < j). The pairs
-        // are solved in parallel, each thread sorts its crossings (by height, then the pair) and the sorted lists are
-        // merged, so the order is always the same.
+        // are solved in parallel, each thread keeps its crossings in a list, and the lists are gathered by pixel row;
+        // a row sorts its own (CrossingsInRow), in parallel, so the order is always the same.
         int[] byTop = [.. Enumerable.Range(0, outlines.Length).OrderBy(k => outlines[k].Top)];
         parallel ??= new ParallelOptions();
         // Outlines low in a deep scene overlap many others in height: their pairs are taken by stealing, as rows are.
@@ -280,41 +294,53 @@ internal sealed class OutlineSet
             }
         }, found =>
         {
-            found.Sort();
             lock (lists)
             {
                 lists.Add(found);
             }
         }, parallel.CancellationToken);
 
-        return Merge(lists);
+        trace?.SetUpStep("crossing pairs");
+        return ByRow(lists, height);
     }
 
-    /// <summary>The sorted lists merged into one sorted array: the least head of each list in a heap (log k steps for k lists).</summary>
-    private static Crossing[] Merge(List<List<Crossing>> lists)
+    /// <summary>
+    /// The crossings of every list gathered by pixel row: counted by row, then placed, so row r's are
+    /// <c>Crossings[RowStarts[r]..RowStarts[r + 1]]</c>, in no set order. Two steps per crossing on one thread, where
+    /// sorting them all here would take some log n steps each (on the 960-sphere field, 16 000 crossings, a thousand
+    /// of them in the horizon's rows).
+    /// </summary>
+    /// <param name="lists">The crossings each thread found.</param>
+    /// <param name="height">The image's height: every crossing's <see cref="Crossing.Y"/> is in [0, height].</param>
+    private static (Crossing[] Crossings, int[] RowStarts) ByRow(List<List<Crossing>> lists, int height)
     {
-        var merged = new Crossing[lists.Sum(l => l.Count)];
-        var next = new int[lists.Count];
-        var heads = new PriorityQueue<int, Crossing>(lists.Count);
-        for (int l = 0; l < lists.Count; l++)
+        var starts = new int[height + 2];
+        foreach (List<Crossing> list in lists)
         {
-            if (lists[l].Count > 0)
+            foreach (Crossing c in CollectionsMarshal.AsSpan(list))
             {
-                heads.Enqueue(l, lists[l][0]);
+                starts[Row(c.Y) + 1]++;
             }
         }
 
-        for (int k = 0; k < merged.Length; k++)
+        for (int r = 0; r <= height; r++)
         {
-            int l = heads.Dequeue();
-            merged[k] = lists[l][next[l]++];
-            if (next[l] < lists[l].Count)
+            starts[r + 1] += starts[r];
+        }
+
+        var placed = new Crossing[starts[height + 1]];
+        int[] next = starts[..(height + 1)];
+        foreach (List<Crossing> list in lists)
+        {
+            foreach (Crossing c in CollectionsMarshal.AsSpan(list))
             {
-                heads.Enqueue(l, lists[l][next[l]]);
+                placed[next[Row(c.Y)]++] = c;
             }
         }
 
-        return merged;
+        return (placed, starts);
+
+        int Row(double y) => Math.Clamp((int)y, 0, height);
     }
 
     /// <summary>A height where two outlines cross (or nearly touch).</summary>

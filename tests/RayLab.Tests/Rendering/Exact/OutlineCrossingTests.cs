@@ -2,7 +2,7 @@ using RayLab.Rendering.Exact;
 
 namespace RayLab.Tests.Rendering.Exact;
 
-/// <summary>The crossings of the outlines, found in parallel and merged, are sorted and the same at every thread count.</summary>
+/// <summary>The crossings of the outlines, found in parallel and gathered by row, are each row's, sorted, and the same at every thread count.</summary>
 public class OutlineCrossingTests
 {
     [Fact]
@@ -22,9 +22,21 @@ public class OutlineCrossingTests
         var plane = camera.GetImagePlane(320, 180);
         OutlineSet one = OutlineSet.Build(scene, plane, parallel: new ParallelOptions { MaxDegreeOfParallelism = 1 });
         OutlineSet many = OutlineSet.Build(scene, plane, parallel: new ParallelOptions { MaxDegreeOfParallelism = 8 });
-        Assert.True(one.Crossings.Length > 100);
-        Assert.Equal(one.Crossings, many.Crossings);
-        Assert.Equal(one.Crossings.Order(), one.Crossings);
-        Assert.Equal(one.Crossings.Select(c => c.Y), one.CrossingHeights);
+        Assert.True(one.CrossingCount > 100);
+        Assert.Equal(one.CrossingCount, many.CrossingCount);
+        List<OutlineSet.Crossing> fromOne = [], fromMany = [];
+        int seen = 0;
+        for (int row = 0; row <= plane.Height; row++)
+        {
+            one.CrossingsInRow(row, fromOne);
+            many.CrossingsInRow(row, fromMany);
+            Assert.Equal(fromOne, fromMany);
+            Assert.Equal(fromOne.Order(), fromOne);
+            Assert.All(fromOne, c => Assert.InRange(c.Y, row, row + 1));
+            Assert.All(fromOne, c => Assert.NotEqual(row + 1, c.Y));
+            seen += fromOne.Count;
+        }
+
+        Assert.Equal(one.CrossingCount, seen);
     }
 }
