@@ -101,8 +101,8 @@ internal sealed class AdaptiveLattice
     /// <summary>Rays for the pixel centres of <see cref="CentreLine"/>.</summary>
     public long CentreRays => CentreLine ? (long)_plane.Width * _plane.Height : 0;
 
-    /// <summary>Points whose float answer was uncertain and were traced again in double.</summary>
-    public long RetracedPoints => Interlocked.Read(ref _retraced);
+    /// <summary>Points whose float answer was uncertain and were traced again in double (the threads' counts, summed as each returns its buffers).</summary>
+    public long RetracedPoints => _retraced;
 
     /// <summary>
     /// Traces points <paramref name="from"/> to <paramref name="to"/> of a lattice line of <paramref name="length"/>
@@ -243,6 +243,7 @@ internal sealed class AdaptiveLattice
     public void Return(Source source)
     {
         source.Storage.FlushAllBottomPoints();
+        _retraced += source.Storage.Retraced;
         _returned.Add(source.Storage);
     }
 
@@ -323,10 +324,7 @@ internal sealed class AdaptiveLattice
             {
                 long size = lattice._size;
                 long centres = lattice.TraceLine((row * size) + (size / 2), size / 2, size, lattice._plane.Width, _buffers.Centres, begin, end - 1, begin, _buffers.Scratch);
-                if (centres != 0)
-                {
-                    Interlocked.Add(ref lattice._retraced, centres);
-                }
+                _buffers.Retraced += centres;
             }
 
             if (m == 0)
@@ -362,11 +360,7 @@ internal sealed class AdaptiveLattice
             }
 
             buffers.DenseRowOf[piece] = row;
-
-            if (again != 0)
-            {
-                Interlocked.Add(ref lattice._retraced, again);
-            }
+            buffers.Retraced += again;
         }
 
         /// <summary>
@@ -389,10 +383,7 @@ internal sealed class AdaptiveLattice
 
             again += lattice.TraceLine((row + 1) * size, 0, size, length, buffers.Corners(row + 1, piece), begin, end, countFrom, buffers.Scratch);
             buffers.CornerLineOf[piece] = row + 1;
-            if (again != 0)
-            {
-                Interlocked.Add(ref lattice._retraced, again);
-            }
+            buffers.Retraced += again;
         }
 
         /// <summary>
@@ -661,6 +652,13 @@ internal sealed class AdaptiveLattice
             public uint Stamp { get; set; }
 
             /// <summary>
+            /// The points this thread traced again in double, summed into <see cref="RetracedPoints"/> when it returns its
+            /// buffers: a count every thread added to at once would sit on the lattice's cache line, which every thread
+            /// reads, and each add would take that line from the others.
+            /// </summary>
+            public long Retraced { get; set; }
+
+            /// <summary>
             /// Entries per line of <see cref="Dense"/>: W·2^m + 1, plus one per piece (each piece's part of a line
             /// starts <c>piece</c> entries on, as in <see cref="Corners"/>).
             /// </summary>
@@ -766,6 +764,7 @@ internal sealed class AdaptiveLattice
                 _size = size;
                 _lineLength = (width * size) + 1;
                 Stamp = 0;
+                Retraced = 0;
                 GuardBlockRow = -1;
 
                 static T[] Sized<T>(T[] kept, int length) => kept.Length == length ? kept : new T[length];
