@@ -94,6 +94,11 @@ internal sealed class Profile
                 foreach ((List<RowLoopTrace> list, bool scatter) in new[] { (traces[i].InOrder, false), (traces[i].Scattered, true) })
                 {
                     var trace = new RowLoopTrace { Scattered = scatter, Clock = ThreadClock.Now, Frequency = ThreadClock.Frequency };
+                    // The garbage of the renders before (their traces, a field's frame constants) is collected here,
+                    // not inside the next render: the collection would land in the same render of every round (the
+                    // renders allocate alike) and read as that cut's set-up.
+                    GC.Collect();
+                    GC.WaitForPendingFinalizers();
                     renderers[i].Trace = trace;
                     c.Prepared.Render(renderers[i], image);
                     renderers[i].Trace = null;
