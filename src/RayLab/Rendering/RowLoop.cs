@@ -124,7 +124,7 @@ internal readonly struct RowLoop
             long began = trace?.Clock() ?? 0;
             int row = start + (band / pieces);
             renderer.RenderPiece(row, band - ((row - start) * pieces), ref scratch);
-            progress?.CompletePiece();
+            progress?.CompletePiece(worker);
             trace?.Band(band, worker, began, trace.Clock());
         }, scratch =>
         {

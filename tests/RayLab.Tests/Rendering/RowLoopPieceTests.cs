@@ -54,4 +54,30 @@ public class RowLoopPieceTests
         Assert.Equal([.. Enumerable.Range(0, 37).SelectMany(row => Enumerable.Range(0, 5).Select(piece => (row, piece)))], all);
         Assert.Equal((37, 37), (progress.RowsCompleted, progress.TotalRows));
     }
+
+    [Theory]
+    [InlineData(1)]
+    [InlineData(6)]
+    public void ProgressCountsEveryPieceOnceOnAnyThreadCountAndStartsAfreshEachRender(int threads)
+    {
+        var progress = new RenderProgress();
+        RowLoop.Start(new RenderOptions(threads, RenderKernel.Auto, progress, default), 150).Run(new Recorder(2, reusesRowAbove: true));
+        Assert.Equal((150, 150), (progress.RowsCompleted, progress.TotalRows));
+        RowLoop.Start(new RenderOptions(threads, RenderKernel.Auto, progress, default), 40).Run(new Recorder(1, reusesRowAbove: false));
+        Assert.Equal((40, 40), (progress.RowsCompleted, progress.TotalRows));
+    }
+
+    [Fact]
+    public void ProgressCountsThePiecesOfEveryThreadNumberThoseBeyondTheSlotsToo()
+    {
+        // Each thread counts in a slot of its own; past the 64th, threads share slots.
+        var progress = new RenderProgress();
+        progress.Start(150, 2);
+        for (int worker = 0; worker < 300; worker++)
+        {
+            progress.CompletePiece(worker);
+        }
+
+        Assert.Equal((150, 150, 1.0), (progress.RowsCompleted, progress.TotalRows, progress.Fraction));
+    }
 }
