@@ -68,6 +68,13 @@ internal interface ILanes<TSelf>
     /// </summary>
     static abstract TSelf Select(TSelf mask, TSelf whenTrue, TSelf whenFalse);
 
+    /// <summary>
+    /// Lanes of <paramref name="whenTrue"/> where <c>a &lt; b</c>, else of <paramref name="whenFalse"/>: <see cref="Select"/>
+    /// of <see cref="LessThan"/> written as one step, so that with AVX-512 the comparison's mask register drives a
+    /// masked blend. A mask kept in lanes is turned into a mask register and back at every use.
+    /// </summary>
+    static abstract TSelf SelectWhereLess(TSelf a, TSelf b, TSelf whenTrue, TSelf whenFalse);
+
     static abstract TSelf operator &(TSelf a, TSelf b);
 
     static abstract TSelf operator |(TSelf a, TSelf b);

@@ -20,6 +20,9 @@ internal readonly partial record struct Lanes128
         new(Sse41.IsSupported ? Sse41.BlendVariable(whenFalse.V, whenTrue.V, mask.V) : Vector128.ConditionalSelect(mask.V, whenTrue.V, whenFalse.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 SelectWhereLess(Lanes128 a, Lanes128 b, Lanes128 whenTrue, Lanes128 whenFalse) => Select(LessThan(a, b), whenTrue, whenFalse);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static uint MaskBits(Lanes128 mask) => mask.V.ExtractMostSignificantBits();
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -20,6 +20,9 @@ internal readonly partial record struct Lanes256
         new(Avx.IsSupported ? Avx.BlendVariable(whenFalse.V, whenTrue.V, mask.V) : Vector256.ConditionalSelect(mask.V, whenTrue.V, whenFalse.V));
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes256 SelectWhereLess(Lanes256 a, Lanes256 b, Lanes256 whenTrue, Lanes256 whenFalse) => Select(LessThan(a, b), whenTrue, whenFalse);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static uint MaskBits(Lanes256 mask) => mask.V.ExtractMostSignificantBits();
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

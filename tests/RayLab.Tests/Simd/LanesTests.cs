@@ -175,6 +175,25 @@ public class LanesTests
         {
             Assert.Equal(a[lane] < b[lane] ? a[lane] : b[lane], result[lane]);
         }
+
+        // SelectWhereLess: the same choice in one step, NaN on either side choosing whenFalse.
+        float[] values = [.. Values, float.NaN];
+        for (int shift = 0; shift < values.Length; shift++)
+        {
+            float[] x = new float[n], y = new float[n], whenTrue = new float[n], whenFalse = new float[n];
+            for (int lane = 0; lane < n; lane++)
+            {
+                x[lane] = values[lane % values.Length];
+                y[lane] = values[(lane + shift) % values.Length];
+                (whenTrue[lane], whenFalse[lane]) = (lane + 0.25f, -lane - 0.75f);
+            }
+
+            TL.SelectWhereLess(TL.Load(x), TL.Load(y), TL.Load(whenTrue), TL.Load(whenFalse)).Store(result);
+            for (int lane = 0; lane < n; lane++)
+            {
+                Assert.Equal(x[lane] < y[lane] ? whenTrue[lane] : whenFalse[lane], result[lane]);
+            }
+        }
     }
 
     private static void CheckLessThanOrEqualBits<TL>()

@@ -173,8 +173,9 @@ internal sealed class LatticeHits
                     TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
                     TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
                     TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
-                    TL hit = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, TL.Broadcast(sphere.RadiusSquared), TL.Broadcast(sphere.InverseBound), sphere.Bound, checkOrder, ref nearest, ref nearestError, ref closest, ref unsure);
-                    id = TL.Select(hit, TL.BroadcastBits(sphere.Id), id);
+                    TL negatedT = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, TL.Broadcast(sphere.RadiusSquared), TL.Broadcast(sphere.InverseBound), sphere.Bound, checkOrder, nearest, ref nearestError, ref closest, ref unsure);
+                    id = TL.SelectWhereLess(nearest, negatedT, TL.BroadcastBits(sphere.Id), id);
+                    nearest = TL.SelectWhereLess(nearest, negatedT, negatedT, nearest);
                 }
             }
 

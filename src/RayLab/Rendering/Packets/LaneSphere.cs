@@ -54,9 +54,11 @@ internal static class LaneSphere
     }
 
     /// <summary>
-    /// One sphere against a packet of rays, the nearest hit so far kept per lane: the step the hierarchy's leaves
-    /// (<see cref="PacketHierarchy"/>) and the adaptive lattice repeat per sphere. Returns the lanes where this
-    /// sphere is the new nearest hit (the caller takes its colour or index there).
+    /// One sphere against a packet of rays: the step the hierarchy's leaves (<see cref="PacketHierarchy"/>) and the
+    /// adaptive lattice repeat per sphere. Returns −t (NaN where the ray misses). The sphere is the new nearest hit
+    /// where <c>nearest &lt; −t</c>: the caller takes its colour or index there and then keeps −t as the nearest, each
+    /// with <see cref="ILanes{TSelf}.SelectWhereLess"/>, the comparison written at each use, so that with AVX-512 it
+    /// stays in a mask register.
     /// </summary>
     /// <remarks>
     /// <para>Besides the hit, each lane keeps the smallest |Δ| / bound (<paramref name="closest"/>: ≤ 1 means the
@@ -86,26 +88,24 @@ internal static class LaneSphere
     /// <param name="inverseBound">1 / the bound of Δ's error, broadcast.</param>
     /// <param name="bound">The sphere's depth error constants.</param>
     /// <param name="checkOrder">Whether hits close in depth are marked (the frame has close spheres).</param>
-    /// <param name="nearest">−t of the nearest hit so far (−∞ before one).</param>
-    /// <param name="nearestError">The error bound of that hit's t.</param>
+    /// <param name="nearest">−t of the nearest hit so far (−∞ before one); the caller updates it.</param>
+    /// <param name="nearestError">The error bound of that hit's t, updated here.</param>
     /// <param name="closest">The smallest |Δ| / bound so far.</param>
     /// <param name="unsure">The lanes with two hits closer than their error bounds.</param>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static TL Test<TL>(TL fx, TL fy, TL fz, TL dx, TL dy, TL dz, TL dd, TL rdd, TL inverseLength, TL radiusSquared, TL inverseBound, DepthBound bound, bool checkOrder, ref TL nearest, ref TL nearestError, ref TL closest, ref TL unsure)
+    public static TL Test<TL>(TL fx, TL fy, TL fz, TL dx, TL dy, TL dz, TL dd, TL rdd, TL inverseLength, TL radiusSquared, TL inverseBound, DepthBound bound, bool checkOrder, TL nearest, ref TL nearestError, ref TL closest, ref TL unsure)
         where TL : struct, ILanes<TL>
     {
         TL negatedT = NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, radiusSquared, out TL disc, out TL root);
-        TL hit = TL.LessThan(nearest, negatedT);                                 // t < best (false for NaN)
         closest = TL.MinAbs(closest, disc * inverseBound);
         if (checkOrder)
         {
             TL error = TL.MultiplyAdd(TL.Broadcast(bound.Silhouette), TL.Broadcast(1f) / root, TL.Broadcast(bound.Rounding) * inverseLength);
             unsure |= TL.LessThanOrEqual(TL.Abs(negatedT - nearest), error + nearestError);   // either order: a farther sphere tested later too
-            nearestError = TL.Select(hit, error, nearestError);
+            nearestError = TL.SelectWhereLess(nearest, negatedT, error, nearestError);        // t < best (false for NaN)
         }
 
-        nearest = TL.Select(hit, negatedT, nearest);
-        return hit;
+        return negatedT;
     }
     /// <summary>
     /// The lanes whose float answer may be wrong, as bits: the smallest |Δ| / bound over the spheres at most 1

@@ -250,10 +250,11 @@ internal sealed class PacketHierarchy
             TL fx = TP.AddOrigin(TL.Broadcast(sphere.Offset.X), origin.X);
             TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
             TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
-            TL hit = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, TL.Broadcast(sphere.RadiusSquared), TL.Broadcast(sphere.InverseBound), bounds[i], checkOrder, ref nearest, ref nearestError, ref closest, ref unsure);
-            red = TL.Select(hit, TL.Broadcast(sphere.Colour.X), red);
-            green = TL.Select(hit, TL.Broadcast(sphere.Colour.Y), green);
-            blue = TL.Select(hit, TL.Broadcast(sphere.Colour.Z), blue);
+            TL negatedT = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, TL.Broadcast(sphere.RadiusSquared), TL.Broadcast(sphere.InverseBound), bounds[i], checkOrder, nearest, ref nearestError, ref closest, ref unsure);
+            red = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.X), red);
+            green = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.Y), green);
+            blue = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.Z), blue);
+            nearest = TL.SelectWhereLess(nearest, negatedT, negatedT, nearest);
         }
 
         state = new LaneHit<TL>(nearest, red, green, blue, closest, unsure, nearestError);

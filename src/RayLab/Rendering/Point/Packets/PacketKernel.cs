@@ -125,17 +125,17 @@ internal static partial class PacketKernel
                     TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
                     TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
                     TL negatedT = LaneSphere.NegatedNearRoot(fx, fy, fz, dx, dy, dz, dd, rdd, TL.Broadcast(sphere.RadiusSquared), out TL disc);
-                    TL hit = TL.LessThan(nearest, negatedT);                             // t < best (false for NaN)
                     closest = TL.MinAbs(closest, disc * TL.Broadcast(sphere.InverseBound));
                     if (checkOrder)
                     {
                         unsure |= TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);   // either order: a farther sphere tested later too
                     }
 
-                    nearest = TL.Select(hit, negatedT, nearest);
-                    red = TL.Select(hit, TL.Broadcast(sphere.Colour.X), red);
-                    green = TL.Select(hit, TL.Broadcast(sphere.Colour.Y), green);
-                    blue = TL.Select(hit, TL.Broadcast(sphere.Colour.Z), blue);
+                    // Where t < best (false for NaN): the comparison written at each use, so AVX-512 keeps it in a mask register.
+                    red = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.X), red);
+                    green = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.Y), green);
+                    blue = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.Z), blue);
+                    nearest = TL.SelectWhereLess(nearest, negatedT, negatedT, nearest);
                 }
 
                 // The colour of the nearest sphere hit in each lane, or the background. Uncertain lanes: the fast
