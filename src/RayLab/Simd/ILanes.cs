@@ -70,10 +70,18 @@ internal interface ILanes<TSelf>
 
     /// <summary>
     /// Lanes of <paramref name="whenTrue"/> where <c>a &lt; b</c>, else of <paramref name="whenFalse"/>: <see cref="Select"/>
-    /// of <see cref="LessThan"/> written as one step, so that with AVX-512 the comparison's mask register drives a
-    /// masked blend. A mask kept in lanes is turned into a mask register and back at every use.
+    /// of <see cref="LessThan"/> written as one step, so that where <see cref="BlendsByMaskRegister"/> the comparison's
+    /// mask register drives a masked blend.
     /// </summary>
     static abstract TSelf SelectWhereLess(TSelf a, TSelf b, TSelf whenTrue, TSelf whenFalse);
+
+    /// <summary>
+    /// True where several blends on one comparison are cheapest as <see cref="SelectWhereLess"/> at each use (AVX-512 at
+    /// 512 bits: the comparison stays in a mask register, one masked blend per use); false where one
+    /// <see cref="LessThan"/> kept in lanes and a <see cref="Select"/> per use are (a mask kept in lanes at 512 bits is
+    /// widened and narrowed again at every use; below 512 bits no blend takes a mask register).
+    /// </summary>
+    static abstract bool BlendsByMaskRegister { get; }
 
     static abstract TSelf operator &(TSelf a, TSelf b);
 

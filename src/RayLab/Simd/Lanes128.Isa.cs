@@ -22,6 +22,8 @@ internal readonly partial record struct Lanes128
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 SelectWhereLess(Lanes128 a, Lanes128 b, Lanes128 whenTrue, Lanes128 whenFalse) => Select(LessThan(a, b), whenTrue, whenFalse);
 
+    public static bool BlendsByMaskRegister => false;
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static uint MaskBits(Lanes128 mask) => mask.V.ExtractMostSignificantBits();
 

@@ -22,6 +22,8 @@ internal readonly partial record struct Lanes256
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 SelectWhereLess(Lanes256 a, Lanes256 b, Lanes256 whenTrue, Lanes256 whenFalse) => Select(LessThan(a, b), whenTrue, whenFalse);
 
+    public static bool BlendsByMaskRegister => false;
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static uint MaskBits(Lanes256 mask) => mask.V.ExtractMostSignificantBits();
 

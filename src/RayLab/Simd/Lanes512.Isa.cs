@@ -23,6 +23,8 @@ internal readonly partial record struct Lanes512
     public static Lanes512 SelectWhereLess(Lanes512 a, Lanes512 b, Lanes512 whenTrue, Lanes512 whenFalse) =>
         new(Avx512F.IsSupported ? Avx512F.BlendVariable(whenFalse.V, whenTrue.V, Vector512.LessThan(a.V, b.V)) : Vector512.ConditionalSelect(Vector512.LessThan(a.V, b.V), whenTrue.V, whenFalse.V));
 
+    public static bool BlendsByMaskRegister => Avx512F.IsSupported;
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static uint MaskBits(Lanes512 mask) => (uint)mask.V.ExtractMostSignificantBits();
 

@@ -174,8 +174,7 @@ internal sealed class LatticeHits
                     TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
                     TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
                     TL negatedT = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, TL.Broadcast(sphere.RadiusSquared), TL.Broadcast(sphere.InverseBound), sphere.Bound, checkOrder, nearest, ref nearestError, ref closest, ref unsure);
-                    id = TL.SelectWhereLess(nearest, negatedT, TL.BroadcastBits(sphere.Id), id);
-                    nearest = TL.SelectWhereLess(nearest, negatedT, negatedT, nearest);
+                    LaneSphere.TakeNearer(ref nearest, negatedT, ref id, TL.BroadcastBits(sphere.Id));
                 }
             }
 

@@ -56,9 +56,8 @@ internal static class LaneSphere
     /// <summary>
     /// One sphere against a packet of rays: the step the hierarchy's leaves (<see cref="PacketHierarchy"/>) and the
     /// adaptive lattice repeat per sphere. Returns −t (NaN where the ray misses). The sphere is the new nearest hit
-    /// where <c>nearest &lt; −t</c>: the caller takes its colour or index there and then keeps −t as the nearest, each
-    /// with <see cref="ILanes{TSelf}.SelectWhereLess"/>, the comparison written at each use, so that with AVX-512 it
-    /// stays in a mask register.
+    /// where <c>nearest &lt; −t</c>: the caller takes its colour or index there and then keeps −t as the nearest
+    /// (<see cref="TakeNearer{TL}(ref TL, TL, ref TL, TL)"/>).
     /// </summary>
     /// <remarks>
     /// <para>Besides the hit, each lane keeps the smallest |Δ| / bound (<paramref name="closest"/>: ≤ 1 means the
@@ -107,6 +106,60 @@ internal static class LaneSphere
 
         return negatedT;
     }
+    /// <summary>
+    /// Where this sphere is the new nearest hit (<c>nearest &lt; −t</c>, false for NaN): <paramref name="red"/>,
+    /// <paramref name="green"/> and <paramref name="blue"/> take its colour, then <paramref name="nearest"/> its −t.
+    /// One comparison, blended in the way the width does best (<see cref="ILanes{TSelf}.BlendsByMaskRegister"/>).
+    /// </summary>
+    /// <param name="nearest">−t of the nearest hit so far.</param>
+    /// <param name="negatedT">This sphere's −t (<see cref="Test{TL}"/>).</param>
+    /// <param name="red">The nearest hit's red so far.</param>
+    /// <param name="green">Its green.</param>
+    /// <param name="blue">Its blue.</param>
+    /// <param name="colour">This sphere's colour, each channel broadcast.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void TakeNearer<TL>(ref TL nearest, TL negatedT, ref TL red, ref TL green, ref TL blue, (TL R, TL G, TL B) colour)
+        where TL : struct, ILanes<TL>
+    {
+        if (TL.BlendsByMaskRegister)
+        {
+            red = TL.SelectWhereLess(nearest, negatedT, colour.R, red);
+            green = TL.SelectWhereLess(nearest, negatedT, colour.G, green);
+            blue = TL.SelectWhereLess(nearest, negatedT, colour.B, blue);
+            nearest = TL.SelectWhereLess(nearest, negatedT, negatedT, nearest);
+        }
+        else
+        {
+            TL hit = TL.LessThan(nearest, negatedT);
+            red = TL.Select(hit, colour.R, red);
+            green = TL.Select(hit, colour.G, green);
+            blue = TL.Select(hit, colour.B, blue);
+            nearest = TL.Select(hit, negatedT, nearest);
+        }
+    }
+
+    /// <summary>As <see cref="TakeNearer{TL}(ref TL, TL, ref TL, ref TL, ref TL, ValueTuple{TL, TL, TL})"/> for one value: <paramref name="id"/> takes <paramref name="sphereId"/>.</summary>
+    /// <param name="nearest">−t of the nearest hit so far.</param>
+    /// <param name="negatedT">This sphere's −t.</param>
+    /// <param name="id">The nearest hit's index so far.</param>
+    /// <param name="sphereId">This sphere's index, broadcast.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void TakeNearer<TL>(ref TL nearest, TL negatedT, ref TL id, TL sphereId)
+        where TL : struct, ILanes<TL>
+    {
+        if (TL.BlendsByMaskRegister)
+        {
+            id = TL.SelectWhereLess(nearest, negatedT, sphereId, id);
+            nearest = TL.SelectWhereLess(nearest, negatedT, negatedT, nearest);
+        }
+        else
+        {
+            TL hit = TL.LessThan(nearest, negatedT);
+            id = TL.Select(hit, sphereId, id);
+            nearest = TL.Select(hit, negatedT, nearest);
+        }
+    }
+
     /// <summary>
     /// The lanes whose float answer may be wrong, as bits: the smallest |Δ| / bound over the spheres at most 1
     /// (<paramref name="closest"/>), or, where the frame checks the depth order, two hits closer than their error bounds

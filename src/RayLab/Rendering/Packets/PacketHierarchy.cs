@@ -251,10 +251,7 @@ internal sealed class PacketHierarchy
             TL fy = TP.AddOrigin(TL.Broadcast(sphere.Offset.Y), origin.Y);
             TL fz = TP.AddOrigin(TL.Broadcast(sphere.Offset.Z), origin.Z);
             TL negatedT = LaneSphere.Test(fx, fy, fz, dx, dy, dz, dd, rdd, inverseLength, TL.Broadcast(sphere.RadiusSquared), TL.Broadcast(sphere.InverseBound), bounds[i], checkOrder, nearest, ref nearestError, ref closest, ref unsure);
-            red = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.X), red);
-            green = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.Y), green);
-            blue = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.Z), blue);
-            nearest = TL.SelectWhereLess(nearest, negatedT, negatedT, nearest);
+            LaneSphere.TakeNearer(ref nearest, negatedT, ref red, ref green, ref blue, (TL.Broadcast(sphere.Colour.X), TL.Broadcast(sphere.Colour.Y), TL.Broadcast(sphere.Colour.Z)));
         }
 
         state = new LaneHit<TL>(nearest, red, green, blue, closest, unsure, nearestError);

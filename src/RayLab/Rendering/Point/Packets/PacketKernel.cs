@@ -131,11 +131,7 @@ internal static partial class PacketKernel
                         unsure |= TL.LessThanOrEqual(TL.Abs(negatedT - nearest), depthTolerance);   // either order: a farther sphere tested later too
                     }
 
-                    // Where t < best (false for NaN): the comparison written at each use, so AVX-512 keeps it in a mask register.
-                    red = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.X), red);
-                    green = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.Y), green);
-                    blue = TL.SelectWhereLess(nearest, negatedT, TL.Broadcast(sphere.Colour.Z), blue);
-                    nearest = TL.SelectWhereLess(nearest, negatedT, negatedT, nearest);
+                    LaneSphere.TakeNearer(ref nearest, negatedT, ref red, ref green, ref blue, (TL.Broadcast(sphere.Colour.X), TL.Broadcast(sphere.Colour.Y), TL.Broadcast(sphere.Colour.Z)));   // t < best
                 }
 
                 // The colour of the nearest sphere hit in each lane, or the background. Uncertain lanes: the fast
