@@ -140,7 +140,7 @@ internal sealed class ExactRow
         return segment;
     }
 
-    // Cuts the row (y0, y1) at every crossing of two outlines inside it (an event of each), in the crossings' order.
+    // Cuts row `row`, (row, row + 1), at every crossing of two outlines inside it (an event of each), in the crossings' order.
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void CutAtCrossings(int row)
     {
