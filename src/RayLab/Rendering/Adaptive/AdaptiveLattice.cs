@@ -74,6 +74,9 @@ internal sealed class AdaptiveLattice
 
     private long _retraced;
 
+    /// <summary>This render's meeting places of horizontal-line notes (<see cref="Meet"/>), rented at the first note, or null.</summary>
+    private EdgeSlots? _edges;
+
     /// <summary>
     /// With a minimum depth m ≥ 1, every pixel's squares at depth m have their corners and centres traced whatever
     /// the values: m, when those points are traced a row of pixels at a time as lattice lines (0 when not).
@@ -169,10 +172,10 @@ internal sealed class AdaptiveLattice
     public Intensity Colour(int id) => _palette[id];
 
     /// <summary>
-    /// Points that two pieces both traced and did not match at once: on a horizontal pixel line (other than corners)
-    /// where the pieces above and below it were not rendered one after the other by one thread, and on the vertical
-    /// line between two pieces of a row. Every thread noted such points as keys (<see cref="Source.Buffers.Key"/>);
-    /// a key noted twice is one duplicate. The threads' buffers then go back to the pool.
+    /// Points on the vertical line between two pieces of a row that both pieces traced: every thread noted such points
+    /// as keys (<see cref="Source.Buffers.Key"/>), and a key noted twice is one duplicate. (Points on a horizontal
+    /// pixel line that two threads traced are taken off as the rows run: <see cref="Meet"/>.) The threads' buffers
+    /// then go back to the pool.
     /// </summary>
     public long SharedEdgeDuplicates()
     {
@@ -200,7 +203,73 @@ internal sealed class AdaptiveLattice
         }
 
         _returned.Clear();
+        if (_edges is { } edges)
+        {
+            Array.Clear(edges.Slots);
+            _options.Return(edges);
+            _edges = null;
+        }
+
         return duplicates;
+    }
+
+    /// <summary>
+    /// Piece <paramref name="piece"/>'s notes <paramref name="points"/> (sorted lx) on horizontal pixel line
+    /// <paramref name="line"/> (0 the top of row 0), from the row above or the row below, where one thread did not
+    /// render both pieces one after the other: the two pieces' notes meet in the line's slot. The first to come leaves
+    /// a copy there; the second counts the points both traced and returns that count, for its rays. Each side comes
+    /// at most once a render, so every point two threads traced is counted once, while the rows run, on whichever
+    /// thread finishes the pair: nothing is left to merge on one thread after the rows.
+    /// </summary>
+    private int Meet(Source.Buffers buffers, int line, int piece, List<long> points)
+    {
+        if (points.Count == 0)
+        {
+            return 0; // nothing in common with anything
+        }
+
+        int pieces = buffers.PointsRowOf.Length;
+        EdgeNotes?[] slots = Edges(pieces);
+        ref EdgeNotes? slot = ref slots[(line * pieces) + piece];
+        EdgeNotes? other = Volatile.Read(ref slot);
+        if (other is null)
+        {
+            EdgeNotes mine = buffers.Keep(points);
+            other = Interlocked.CompareExchange(ref slot, mine, null);
+            if (other is null)
+            {
+                return 0;
+            }
+
+            buffers.Unkeep();
+        }
+
+        return Common(other.Points.AsSpan(0, other.Count), CollectionsMarshal.AsSpan(points));
+    }
+
+    /// <summary>The slots of <see cref="Meet"/>, one per horizontal pixel line and piece, rented by the first thread that needs them.</summary>
+    private EdgeNotes?[] Edges(int pieces)
+    {
+        EdgeSlots? edges = Volatile.Read(ref _edges);
+        if (edges is null)
+        {
+            var rented = _options.Rent<EdgeSlots>();
+            int length = (_plane.Height + 1) * pieces;
+            if (rented.Slots.Length != length)
+            {
+                rented.Slots = new EdgeNotes?[length];
+            }
+
+            edges = Interlocked.CompareExchange(ref _edges, rented, null);
+            if (edges is null)
+            {
+                return rented.Slots;
+            }
+
+            _options.Return(rented);
+        }
+
+        return edges.Slots;
     }
 
     /// <summary>How many values two ascending lists have in common.</summary>
@@ -239,12 +308,42 @@ internal sealed class AdaptiveLattice
         return new Source(this, buffers);
     }
 
-    /// <summary>A thread is done (called under the row loop's lock): its last row's bottom-edge notes are kept, and its buffers go back to the pool after <see cref="SharedEdgeDuplicates"/>.</summary>
-    public void Return(Source source)
+    /// <summary>
+    /// A thread is done (called under the row loop's lock): its kept bottom-edge notes meet their rows below
+    /// (<see cref="Meet"/>), and its buffers go back to the pool after <see cref="SharedEdgeDuplicates"/>.
+    /// </summary>
+    /// <returns>Points this thread traced that another traced too, to take off its rays.</returns>
+    public long Return(Source source)
     {
-        source.Storage.FlushAllBottomPoints();
-        _retraced += source.Storage.Retraced;
-        _returned.Add(source.Storage);
+        Source.Buffers buffers = source.Storage;
+        long duplicates = 0;
+        for (int piece = 0; piece < buffers.PointsRowOf.Length; piece++)
+        {
+            duplicates += FlushBottomPoints(buffers, piece);
+        }
+
+        _retraced += buffers.Retraced;
+        _returned.Add(buffers);
+        return duplicates;
+    }
+
+    /// <summary>
+    /// The bottom-edge notes <paramref name="buffers"/> kept for piece <paramref name="piece"/> meet the row below's
+    /// (<see cref="Meet"/>): that row is not this thread's next for the piece, or the thread is done.
+    /// </summary>
+    /// <returns>Points both traced.</returns>
+    private int FlushBottomPoints(Source.Buffers buffers, int piece)
+    {
+        int row = buffers.PointsRowOf[piece];
+        if (row < 0)
+        {
+            return 0;
+        }
+
+        int common = Meet(buffers, row + 1, piece, buffers.AboveBottomPointsOf[piece]);
+        buffers.AboveBottomPointsOf[piece].Clear();
+        buffers.PointsRowOf[piece] = -1;
+        return common;
     }
 
     private int Trace(long lx, long ly) => LatticeHits.TraceScalar(_scene, _plane, _latticeWidth, _latticeHeight, lx, ly);
@@ -470,7 +569,7 @@ internal sealed class AdaptiveLattice
         /// <summary>
         /// Ends a piece of a row: its notes of horizontal-line points, sorted. Its top-edge points that the piece above
         /// traced too are taken off its rays when this thread rendered that piece last; else its top-edge notes, and
-        /// the bottom-edge notes this thread kept for the piece, go to the lattice for <see cref="SharedEdgeDuplicates"/>.
+        /// the bottom-edge notes this thread kept for the piece, meet the other side's (<see cref="Meet"/>).
         /// </summary>
         public void EndRow(int row)
         {
@@ -484,10 +583,10 @@ internal sealed class AdaptiveLattice
             }
             else
             {
-                buffers.FlushBottomPoints(piece);
+                Rays -= _lattice.FlushBottomPoints(buffers, piece);
                 if (row > 0)
                 {
-                    buffers.Note(row, top: true, buffers.TopPoints);
+                    Rays -= _lattice.Meet(buffers, row, piece, buffers.TopPoints);
                 }
             }
 
@@ -677,46 +776,43 @@ internal sealed class AdaptiveLattice
             public int GuardBlockRow { get; set; } = -1;
 
             /// <summary>
-            /// The points shared with another piece that this thread traced and could not match at once, as keys
-            /// (<see cref="Key"/>), for <see cref="SharedEdgeDuplicates"/>.
+            /// The points on a vertical line between two pieces that this thread traced, as keys (<see cref="Key"/>),
+            /// for <see cref="SharedEdgeDuplicates"/>.
             /// </summary>
             public List<long> SharedPoints { get; } = [];
 
-            /// <summary>Lattice points per lattice line, W·S + 1, and lattice steps per pixel side, S.</summary>
-            private long _lineLength, _size;
+            /// <summary>Copies of this render's notes left in <see cref="Meet"/>'s slots, the first <see cref="_kept"/> in use; reused by the next render.</summary>
+            private readonly List<EdgeNotes> _keptNotes = [];
+
+            private int _kept;
+
+            /// <summary>Lattice points per lattice line, W·S + 1.</summary>
+            private long _lineLength;
 
             /// <summary>Lattice point (<paramref name="lx"/>, <paramref name="ly"/>)'s number, row by row: one key per point.</summary>
             public long Key(long lx, long ly) => (ly * _lineLength) + lx;
 
-            /// <summary>Notes the points <paramref name="points"/> (their lx) on row <paramref name="row"/>'s top or bottom edge.</summary>
-            public void Note(int row, bool top, List<long> points)
+            /// <summary>A copy of <paramref name="points"/> that stays as it is until the next render (<see cref="Prepare"/>).</summary>
+            public EdgeNotes Keep(List<long> points)
             {
-                long ly = (top ? row : row + 1) * _size;
-                foreach (long lx in points)
+                if (_kept == _keptNotes.Count)
                 {
-                    SharedPoints.Add(Key(lx, ly));
+                    _keptNotes.Add(new EdgeNotes());
                 }
+
+                EdgeNotes notes = _keptNotes[_kept++];
+                if (notes.Points.Length < points.Count)
+                {
+                    notes.Points = new long[Math.Max(points.Count, 2 * notes.Points.Length)];
+                }
+
+                points.CopyTo(notes.Points);
+                notes.Count = points.Count;
+                return notes;
             }
 
-            /// <summary>Notes the bottom-edge points this thread kept for piece <paramref name="piece"/> (its next row is not this thread's, or it is done).</summary>
-            public void FlushBottomPoints(int piece)
-            {
-                if (PointsRowOf[piece] >= 0)
-                {
-                    Note(PointsRowOf[piece], top: false, AboveBottomPointsOf[piece]);
-                    AboveBottomPointsOf[piece].Clear();
-                    PointsRowOf[piece] = -1;
-                }
-            }
-
-            /// <summary>Notes every piece's kept bottom-edge points: the thread is done.</summary>
-            public void FlushAllBottomPoints()
-            {
-                for (int piece = 0; piece < PointsRowOf.Length; piece++)
-                {
-                    FlushBottomPoints(piece);
-                }
-            }
+            /// <summary>The copy <see cref="Keep"/> made last is not needed.</summary>
+            public void Unkeep() => _kept--;
 
             /// <summary>
             /// Sizes the buffers for a render of <paramref name="width"/> pixels a row, cut into
@@ -761,7 +857,7 @@ internal sealed class AdaptiveLattice
                 }
 
                 SharedPoints.Clear();
-                _size = size;
+                _kept = 0;
                 _lineLength = (width * size) + 1;
                 Stamp = 0;
                 Retraced = 0;
@@ -771,6 +867,23 @@ internal sealed class AdaptiveLattice
             }
         }
     }
+}
+
+/// <summary>A piece's notes of the points it traced on a horizontal pixel line (sorted lx), left for the piece on the line's other side.</summary>
+internal sealed class EdgeNotes
+{
+    /// <summary>The notes, the first <see cref="Count"/> in use.</summary>
+    public long[] Points { get; set; } = [];
+
+    /// <summary>How many of <see cref="Points"/> are notes.</summary>
+    public int Count { get; set; }
+}
+
+/// <summary>One render's slots where two pieces' <see cref="EdgeNotes"/> meet, one per horizontal pixel line and piece; kept across renders.</summary>
+internal sealed class EdgeSlots
+{
+    /// <summary>The slots, (H + 1)·pieces, each null until a piece leaves its notes.</summary>
+    public EdgeNotes?[] Slots { get; set; } = [];
 }
 
 /// <summary>A lattice whose every point has one value: a pixel none of whose traced points disagree.</summary>

@@ -130,8 +130,7 @@ internal static class AdaptiveRenderer
 
         public void Return(AdaptiveLattice.Source source, ref RowTotals totals)
         {
-            totals.Rays += source.Rays;
-            lattice.Return(source);
+            totals.Rays += source.Rays - lattice.Return(source);
         }
 
         public void RenderRow(int row, ref AdaptiveLattice.Source source)
