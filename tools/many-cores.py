@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """The tables of a `tools/many-cores.sh run` folder: the median ms of each case and build at each thread count, the
-speed-up over 1 thread, and RayLab's jittered 16 against the C++ anchors at every count (the anchor's time over RayLab's).
+speed-up over 1 thread, the median of the rounds' own speed-ups (each round's 1-thread time over its time at N, which
+takes out what drifts between rounds) with its 95 % interval, and RayLab's jittered 16 against the C++ anchors at
+every count (the anchor's time over RayLab's).
 
 Usage: python3 tools/many-cores.py OUT   (OUT: the folder `tools/many-cores.sh run DIR OUT` or `pair` wrote)
 """
@@ -26,6 +28,7 @@ with open(os.path.join(out, "raw.tsv")) as f:
             rounds_of[(case, build)][r] = float(ms)
         elif ms != "NaN":
             times[(case, int(threads))].append(float(ms))
+            rounds_of[(case, int(threads))][r] = float(ms)
 
 
 if pairs:
@@ -57,6 +60,18 @@ for case in order:
     cells = [f"{one / median[(case, t)]:.2f}×" if (case, t) in median else "–" for t in threads[1:]]
     last = median.get((case, threads[-1]), math.nan)
     print(f"| {case} | {one:.1f} | " + " | ".join(cells) + f" | {last:.1f} |")
+print("\nThe median of the rounds' own speed-ups (a round's 1-thread time over its time at N), with its 95 % interval\n")
+print("| case | " + " | ".join(f"{t}" for t in threads[1:]) + " |")
+print("|---|" + "---:|" * (len(threads) - 1))
+for case in order:
+    cells = []
+    for t in threads[1:]:
+        one, many = rounds_of.get((case, 1), {}), rounds_of.get((case, t), {})
+        own = [one[r] / many[r] for r in one if r in many]
+        interval = median_interval(own) if own else None
+        cells.append(f"{statistics.median(own):.2f}× ({interval[0]:.2f}–{interval[1]:.2f})" if interval
+                     else f"{statistics.median(own):.2f}×" if own else "–")
+    print(f"| {case} | " + " | ".join(cells) + " |")
 anchors = [c for c in order if "-anchor-" in c and c.startswith("bench-jittered16")]
 if anchors and any(("bench-jittered16", t) in median for t in threads):
     print("\nThe anchor's bench-jittered16 time over RayLab's (above 1: RayLab is faster)\n")

@@ -47,6 +47,15 @@ prepare() {
   ls -la "$dir"
 }
 
+# The time the hypervisor took the vCPUs from this VM since /proc/stat's cpu line read "$1": its steal ticks as a share
+# of the ticks the vCPUs ran or were taken (user, nice, system, irq, softirq, steal), idle left out. A render's wall
+# time holds the time its threads' vCPUs were taken, its CPU time does not.
+steal_since() {
+  head -1 /proc/stat | awk -v before="$1" 'BEGIN { split(before, b, " ") }
+    { busy = 0; for (i = 2; i <= 9; i++) if (i != 5 && i != 6) busy += $i - b[i]
+      printf "steal %.1f %% of %d busy ticks", busy ? 100 * ($9 - b[9]) / busy : 0, busy }'
+}
+
 # One render's milliseconds: raylab's renderMs, or the anchor's seconds × 1000. Prints nothing when it failed.
 render_ms() {
   local build=$1 threads=$2; shift 2
@@ -97,6 +106,7 @@ run() {
   [ $isa = x86-64-v4 ] && cases+=("bench-jittered16-anchor-avx512|anchor-avx512|")
   echo -e "round\tcase\tbuild\tthreads\tms" > "$out/raw.tsv"
   for ((r = 1; r <= rounds; r++)); do
+    stat=$(head -1 /proc/stat)
     for c in "${cases[@]}"; do
       IFS='|' read -r name build rest <<< "$c"
       for t in $threads; do
@@ -105,7 +115,7 @@ run() {
         echo -e "$r\t$name\t$build-$isa\t$t\t${ms:-NaN}" >> "$out/raw.tsv"
       done
     done
-    echo "round $r done: $(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg)" >> "$out/machine.txt"
+    echo "round $r done: $(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg), $(steal_since "$stat")" >> "$out/machine.txt"
   done
   cp "$dir/field.json" "${TMPDIR:-/tmp}/raylab-scaling-field-24-40.json"
   "$dir/raylab-scaling-$isa" --rounds 3 --threads "$(echo $threads | tr ' ' ',')" --model "$(echo $threads | tr ' ' ',')" --cuts 2,4,8 \
@@ -132,6 +142,7 @@ pair() {
   methods+=("adaptive|--sampler adaptive" "guard|--sampler adaptive --guard" "exact|--sampler exact")
   echo -e "round\tcase\tbuild\tthreads\tms" > "$out/raw.tsv"
   for ((r = 1; r <= rounds; r++)); do
+    stat=$(head -1 /proc/stat)
     for scene in bench field; do
       for m in "${methods[@]}"; do
         IFS='|' read -r name rest <<< "$m"
@@ -148,7 +159,7 @@ pair() {
         done
       done
     done
-    echo "round $r done: $(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg)" >> "$out/machine.txt"
+    echo "round $r done: $(date -u +%T), load $(cut -d' ' -f1-3 /proc/loadavg), $(steal_since "$stat")" >> "$out/machine.txt"
   done
   rm -rf "$tmp"
 }

@@ -32,7 +32,9 @@ internal static class Measure
 
                     var trace = new RowLoopTrace();
                     renderers[i].Trace = trace;
+                    TimeSpan cpu = Environment.CpuUsage.TotalTime;
                     double ms = c.Prepared.Render(renderers[i], image).RenderTime.TotalMilliseconds;
+                    double cpuMs = (Environment.CpuUsage.TotalTime - cpu).TotalMilliseconds;
                     renderers[i].Trace = null;
                     if (round < 0) // round −1 warms up: the JIT, the threads, the pools
                     {
@@ -41,7 +43,7 @@ internal static class Measure
 
                     foreach ((string source, _) in threads[i] == 1 ? Loops : [(loop, crew)])
                     {
-                        (times.TryGetValue((source, threads[i]), out var list) ? list : times[(source, threads[i])] = []).Add((ms, Wall.Of(trace)));
+                        (times.TryGetValue((source, threads[i]), out var list) ? list : times[(source, threads[i])] = []).Add((ms, Wall.Of(trace, cpuMs)));
                     }
                 }
             }
@@ -55,14 +57,17 @@ internal static class Measure
 /// <summary>
 /// Where one render's wall time went, in ms: the set-up before the rows, how long after the rows started the last
 /// worker took its first row, the rows from first to last, the rows' summed time over all threads, the mean time a
-/// worker sat idle between its last row and the end of the rows, the work after them, and the set-up's steps.
+/// worker sat idle between its last row and the end of the rows, the work after them, the set-up's steps, and the
+/// process's CPU time over the render (<see cref="Environment.CpuUsage"/>, user and kernel): where that is well below
+/// the rows' summed time, the threads' vCPUs were not running for part of their rows (another process, or the
+/// hypervisor taking them), which no change to the loop can win back.
 /// </summary>
-internal readonly record struct Wall(double SetUp, double LastStart, double Rows, double Work, double IdleAtEnd, double After, (string Step, double Ms)[] Steps)
+internal readonly record struct Wall(double SetUp, double LastStart, double Rows, double Work, double IdleAtEnd, double After, (string Step, double Ms)[] Steps, double Cpu)
 {
     /// <summary>The set-up's steps, each its own time: "outlines 0.61, crossings 3.20".</summary>
     public string StepsText => Steps.Length == 0 ? "–" : string.Join(", ", Steps.Select(s => $"{s.Step} {s.Ms:F2}"));
 
-    public static Wall Of(RowLoopTrace t)
+    public static Wall Of(RowLoopTrace t, double cpu)
     {
         double Ms(long ticks) => ticks * 1000.0 / Stopwatch.Frequency;
         int workers = t.BandWorker.Length == 0 ? 0 : t.BandWorker.Max() + 1;
@@ -84,7 +89,8 @@ internal readonly record struct Wall(double SetUp, double LastStart, double Rows
             Ms(t.BandTicks.Sum()),
             ended.Length == 0 ? 0 : ended.Average(e => Ms(t.RowsEnded - e)),
             Ms(t.Finished - t.RowsEnded),
-            [.. t.SetUpSteps.Select((s, i) => (s.Step, Ms(s.Ended - (i == 0 ? t.Started : t.SetUpSteps[i - 1].Ended))))]);
+            [.. t.SetUpSteps.Select((s, i) => (s.Step, Ms(s.Ended - (i == 0 ? t.Started : t.SetUpSteps[i - 1].Ended))))],
+            cpu);
     }
 
     public static Wall Median(IEnumerable<Wall> walls)
@@ -97,6 +103,7 @@ internal readonly record struct Wall(double SetUp, double LastStart, double Rows
             Profile.Median(all.Select(w => w.Work)),
             Profile.Median(all.Select(w => w.IdleAtEnd)),
             Profile.Median(all.Select(w => w.After)),
-            [.. all[0].Steps.Select((s, i) => (s.Step, Profile.Median(all.Select(w => w.Steps[i].Ms))))]);
+            [.. all[0].Steps.Select((s, i) => (s.Step, Profile.Median(all.Select(w => w.Steps[i].Ms))))],
+            Profile.Median(all.Select(w => w.Cpu)));
     }
 }

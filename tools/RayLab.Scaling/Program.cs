@@ -97,15 +97,15 @@ foreach (Case c in cases)
 
     // Where the measured wall time went, per source of threads (medians; ms).
     Console.WriteLine();
-    Console.WriteLine("| threads from | threads | renderMs | set-up | last worker starts | rows | rows' work, all threads | work / work on 1 thread | idle at the end, mean | after | set-up's steps |");
-    Console.WriteLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
+    Console.WriteLine("| threads from | threads | renderMs | set-up | last worker starts | rows | rows' work, all threads | work / work on 1 thread | idle at the end, mean | after | CPU, all threads | CPU / rows' work | set-up's steps |");
+    Console.WriteLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
     foreach ((string loop, _) in Measure.Loops)
     {
         foreach (int n in measured)
         {
             (double ms, Wall w) = walls[(loop, n)];
             double work1 = walls[(loop, measured.Min())].Wall.Work;
-            Console.WriteLine($"| {loop} | {n} | {ms:F2} | {w.SetUp:F2} | {w.LastStart:F3} | {w.Rows:F2} | {w.Work:F2} | {w.Work / work1:F2} | {w.IdleAtEnd:F3} | {w.After:F2} | {w.StepsText} |");
+            Console.WriteLine($"| {loop} | {n} | {ms:F2} | {w.SetUp:F2} | {w.LastStart:F3} | {w.Rows:F2} | {w.Work:F2} | {w.Work / work1:F2} | {w.IdleAtEnd:F3} | {w.After:F2} | {w.Cpu:F2} | {w.Cpu / w.Work:F2} | {w.StepsText} |");
         }
     }
 
