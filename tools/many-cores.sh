@@ -16,7 +16,8 @@
 #   python3 tools/many-cores.py OUT          the tables (medians, speed-ups, RayLab against the anchor, or the pair)
 #
 # DIR defaults to artifacts/many-cores. OUT gets machine.txt, raw.tsv (round, case, build, threads, ms) and
-# scaling.md. Each render is `raylab render SCENE --width 1920 --height 1080 --threads T --stats S --warmup` plus the
+# scaling.md. The lent machine takes at most 64 MiB and brings back only a few files: carry DIR (and BEFORE) as one
+# tar.gz (about 29 MB for both levels and one other build), and tar OUT into one file there. Each render is `raylab render SCENE --width 1920 --height 1080 --threads T --stats S --warmup` plus the
 # method's options; its time is the stats file's renderMs (the loop, after a scaled-down warm-up render and with the
 # image's memory committed, as the anchor commits its own before its clock).
 set -euo pipefail
