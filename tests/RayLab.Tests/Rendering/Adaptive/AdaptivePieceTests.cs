@@ -121,6 +121,26 @@ public class AdaptivePieceTests
         Assert.Equal((H, H, 1.0), (progress.RowsCompleted, progress.TotalRows, progress.Fraction));
     }
 
+    [Fact]
+    public void ARendererKeepingItsNotesAcrossRendersCountsEachRendersRaysAsAFreshOne()
+    {
+        // Where a piece's row above was another thread's, the two pieces' notes of the points both traced meet in a
+        // slot the renderer keeps for its next render: every render, of whatever height and cut, counts only its own.
+        var kept = new Renderer { MaxDegreeOfParallelism = 3 };
+        AdaptiveSampler sampler = Samplers[1];
+        foreach ((int pieces, int h) in new[] { (4, 32), (4, 32), (2, 20), (7, 32), (1, 24), (4, 32) })
+        {
+            kept.RowPieces = pieces;
+            var image = new Image(48, h);
+            var heat = new float[48 * h];
+            RenderStatistics stats = kept.Render(Field(), FieldCamera, sampler, image, heat);
+            (byte[] bytes, RenderStatistics fresh, float[] freshHeat) = Render(Field(), FieldCamera, sampler, 48, h, pieces, threads: 3);
+            Assert.Equal(bytes, image.PixelBytes.ToArray());
+            Assert.Equal((fresh.PrimaryRays, fresh.RetracedSamples), (stats.PrimaryRays, stats.RetracedSamples));
+            Assert.Equal(freshHeat, heat);
+        }
+    }
+
     private static (byte[] Bytes, RenderStatistics Stats, float[] Heat) Render(Scene scene, Camera camera, AdaptiveSampler sampler, int w, int h, int pieces, int threads)
     {
         var image = new Image(w, h);
