@@ -106,6 +106,7 @@ internal static class LaneSphere
 
         return negatedT;
     }
+
     /// <summary>
     /// Where this sphere is the new nearest hit (<c>nearest &lt; −t</c>, false for NaN): <paramref name="red"/>,
     /// <paramref name="green"/> and <paramref name="blue"/> take its colour, then <paramref name="nearest"/> its −t.
