@@ -7,7 +7,8 @@
 #   tools/many-cores.sh run DIR OUT [ROUNDS] there: ROUNDS (default 5) interleaved rounds of every case at 1, 2, 4, 8,
 #                                            16 threads (and every core, if more), with the anchor in the same rounds;
 #                                            then raylab-scaling's model, and its in-process speed-ups and wall-time
-#                                            breakdown (the row loop's crew against the .NET thread pool)
+#                                            breakdown (the row loop's crew against the .NET thread pool), and
+#                                            what waking the crew costs (wake.md)
 #   tools/many-cores.sh pair DIR BEFORE OUT [ROUNDS] [THREADS]
 #                                            there: this build against another's (BEFORE: that checkout's
 #                                            artifacts/many-cores, from its own prepare), every method on both
@@ -15,8 +16,8 @@
 #                                            whose name (e.g. field-guard) matches PAIR_EXCLUDE (grep -E) are left out
 #   python3 tools/many-cores.py OUT          the tables (medians, speed-ups, RayLab against the anchor, or the pair)
 #
-# DIR defaults to artifacts/many-cores. OUT gets machine.txt, raw.tsv (round, case, build, threads, ms) and
-# scaling.md. The lent machine takes at most 64 MiB and brings back only a few files: carry DIR (and BEFORE) as one
+# DIR defaults to artifacts/many-cores. OUT gets machine.txt, raw.tsv (round, case, build, threads, ms),
+# scaling.md and wake.md. The lent machine takes at most 64 MiB and brings back only a few files: carry DIR (and BEFORE) as one
 # tar.gz (about 29 MB for both levels and one other build), and tar OUT into one file there. Each render is `raylab render SCENE --width 1920 --height 1080 --threads T --stats S --warmup` plus the
 # method's options; its time is the stats file's renderMs (the loop, after a scaled-down warm-up render and with the
 # image's memory committed, as the anchor commits its own before its clock).
@@ -121,6 +122,8 @@ run() {
   cp "$dir/field.json" "${TMPDIR:-/tmp}/raylab-scaling-field-24-40.json"
   "$dir/raylab-scaling-$isa" --rounds 3 --threads "$(echo $threads | tr ' ' ',')" --model "$(echo $threads | tr ' ' ',')" --cuts 2,4,8 \
     > "$out/scaling.md" 2>> "$out/errors.txt" || echo "raylab-scaling failed: $?" >> "$out/errors.txt"
+  "$dir/raylab-scaling-$isa" --wake 100 --threads "$(echo $threads | tr ' ' ',')" \
+    > "$out/wake.md" 2>> "$out/errors.txt" || echo "raylab-scaling --wake failed: $?" >> "$out/errors.txt"
   rm -rf "$tmp"
 }
 

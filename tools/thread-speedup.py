@@ -6,7 +6,9 @@ For each case (bench-1080 = benchmarks/anchors/bench-1080.json; field = `tools/s
 --stats` (renderMs: the render loop only, after a warm-up render) at T = 1 and 2, ROUNDS times, every cell of a round
 in turn so that load drifts touch them alike. Prints the median renderMs per cell, the speed-up median(1 thread) /
 median(2 threads), the median over the rounds of each round's own speed-up (its 1-thread time over the 2-thread time
-that follows it, which takes out what drifts between rounds) with that median's 95 % interval, and with --before DIR
+that follows it, which takes out what drifts between rounds) with that median's 95 % interval, how many rounds' own
+speed-ups are below 1.25× (a 2-thread render that ran at about 1-thread speed: on the lab's VMs, the hypervisor did
+not run the second vCPU during it; docs/performance.md, "On 2 cores"), and with --before DIR
 (another checkout, built with `dotnet build samples/RayLab.Console -c Release`) the same for that build and this
 build's 1-thread time over the other's. With --native EXE it runs that native raylab (`tools/publish-native.sh`, or a
 `dotnet publish -r linux-x64` of this checkout) instead of this checkout's JIT build: no tiered compilation, so the
@@ -54,7 +56,7 @@ for _ in range(args.rounds):
             times[(case, build, threads)].append(json.load(f)["renderMs"])
 print(f"load average after: {' '.join(load())}")
 m = {cell: statistics.median(t) for cell, t in times.items()}
-head = "| case | 1 thread ms | 2 threads ms | speed-up | rounds' speed-ups, median | 95 % interval |" + (" before: 1 thread | before: 2 threads | before: speed-up | 1 thread, this / before |" if args.before else "")
+head = "| case | 1 thread ms | 2 threads ms | speed-up | rounds' speed-ups, median | 95 % interval | rounds below 1.25× |" + (" before: 1 thread | before: 2 threads | before: speed-up | 1 thread, this / before |" if args.before else "")
 print(head)
 print("|---|" + "---:|" * (head.count("|") - 2))
 for case in cases:
@@ -62,7 +64,7 @@ for case in cases:
     interval = median_interval(ratios)
     shown = f"{interval[0]:.2f}–{interval[1]:.2f}×" if interval else "–"
     row = (f"| {case} | {m[(case, 'this', 1)]:.1f} | {m[(case, 'this', 2)]:.1f} | {m[(case, 'this', 1)] / m[(case, 'this', 2)]:.2f}× |"
-           f" {statistics.median(ratios):.2f}× | {shown} |")
+           f" {statistics.median(ratios):.2f}× | {shown} | {sum(r < 1.25 for r in ratios)} of {len(ratios)} |")
     if args.before:
         row += (f" {m[(case, 'before', 1)]:.1f} | {m[(case, 'before', 2)]:.1f} | {m[(case, 'before', 1)] / m[(case, 'before', 2)]:.2f}× |"
                 f" {m[(case, 'this', 1)] / m[(case, 'before', 1)]:.3f} |")

@@ -2,7 +2,7 @@ using System.Globalization;
 using RayLab.Rendering.Adaptive;
 using RayLab.Scaling;
 
-// Usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [--pieces P] [--cuts 2,4,8] [CASE ...]
+// Usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [--pieces P] [--cuts 2,4,8] [--wake W] [CASE ...]
 // Per case: the phases of one render on one thread, the model's speed-up at each N (and the model of the loop before
 // work stealing: Parallel.For over bands of 16 rows for adaptive, 1 for the others), and the speed-up measured here.
 // The summary adds two what-ifs at the most threads: each band (a row, or an adaptive render's piece of a row) cut into
@@ -14,11 +14,14 @@ using RayLab.Scaling;
 // work scaled to whole rows' (the schedule's gain alone).
 // A CASE is one row of the issue's table: bench-jittered16, bench-jittered256, bench-adaptive, bench-guard, bench-exact,
 // field-jittered16, field-adaptive, field-guard, field-exact; none: all but bench-jittered256.
+// --wake W times waking the row loop's crew at each --threads count above 1, W wakes after each of four spells (Wake.cs),
+// and renders nothing.
 CultureInfo.CurrentCulture = CultureInfo.InvariantCulture;
-const string Usage = "usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [--pieces P] [--cuts 2,4,8] [CASE ...]\n"
+const string Usage = "usage: raylab-scaling [--rounds R] [--threads 1,2] [--model 1,2,4,8,16] [--pieces P] [--cuts 2,4,8] [--wake W] [CASE ...]\n"
     + "  CASE: SCENE-METHOD, SCENE bench or field, METHOD jittered16, jittered256, adaptive, guard or exact\n"
-    + "  (none: every case but bench-jittered256)";
-int rounds = 5, pieces = 0;
+    + "  (none: every case but bench-jittered256)\n"
+    + "  --wake W: time W wakes of the crew at each --threads count above 1, and render nothing";
+int rounds = 5, pieces = 0, wakes = 0;
 int[] measured = [1, 2], modelled = [1, 2, 4, 8, 16], cuts = [];
 var names = new List<string>();
 Case[] cases;
@@ -34,9 +37,17 @@ try
             case "--model": modelled = Positive(args, ++i, "--model"); break;
             case "--pieces": pieces = Positive(args, ++i, "--pieces")[0]; break;
             case "--cuts": cuts = Positive(args, ++i, "--cuts"); break;
+            case "--wake": wakes = Positive(args, ++i, "--wake")[0]; break;
             case ['-', ..]: throw new ArgumentException($"{args[i]}: unknown option");
             default: names.Add(args[i]); break;
         }
+    }
+
+    if (wakes > 0)
+    {
+        Console.WriteLine($"# {Environment.ProcessorCount} processors; load average {File.ReadAllText("/proc/loadavg").Trim()}");
+        Wake.Print(measured, wakes);
+        return 0;
     }
 
     string root = Case.FindRoot();
