@@ -4,8 +4,8 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// <c>raylab grade SUBMISSIONS --checks KIT/checks/KIND --out DIR [--feed KIT/feed] [--check-timeout S]
-/// [--run-timeout S] [--submission-timeout S] [--unsafe-no-sandbox]</c>: builds, checks and runs every submitted lab
-/// in a sandbox with the instructor's pinned checks and writes one class table (<see cref="GradeJob"/>).
+/// [--run-timeout S] [--submission-timeout S] [--jobs N] [--unsafe-no-sandbox]</c>: builds, checks and runs every
+/// submitted lab in a sandbox with the instructor's pinned checks and writes one class table (<see cref="GradeJob"/>).
 /// </summary>
 public static class GradeCommand
 {
@@ -22,10 +22,11 @@ public static class GradeCommand
         var checkTimeout = new Option<int>("--check-timeout") { Description = "Seconds one check may run before it is stopped and counted as timed out; the other checks go on.", DefaultValueFactory = _ => 60, HelpName = "S" };
         var runTimeout = new Option<int>("--run-timeout") { Description = "Seconds the lab's program (dotnet run --project src/Lab, the pictures) may run.", DefaultValueFactory = _ => 180, HelpName = "S" };
         var submissionTimeout = new Option<int>("--submission-timeout") { Description = "Seconds one submission may take in all (build, checks, program); what is left is stopped and the row says so.", DefaultValueFactory = _ => 600, HelpName = "S" };
+        var jobs = new Option<int>("--jobs", "-j") { Description = "How many submissions are built and checked at once (each takes about two cores); the programs, whose times the report compares, then run one at a time. Default: half the processor count, at least 1.", DefaultValueFactory = _ => GradeRequest.DefaultJobs, HelpName = "N" };
         var unsafeNoSandbox = new Option<bool>("--unsafe-no-sandbox") { Description = "Run the submissions' code without a sandbox, with this user's rights and network: only for labs you trust, or where bubblewrap cannot run (Windows, macOS)." };
         var grade = new Command("grade", "Grade a folder of submitted labs against the instructor's pinned checks: each one built, tested and run in a sandbox (bubblewrap: read-only system, no network, its own folder writable), its pictures scored against the exact image; writes grades.csv, grades.json and index.html.")
         {
-            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, unsafeNoSandbox,
+            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, jobs, unsafeNoSandbox,
         };
         grade.SetAction(result => GradeJob.Run(
             new GradeRequest(
@@ -36,7 +37,10 @@ public static class GradeCommand
                 TimeSpan.FromSeconds(result.GetRequiredValue(checkTimeout)),
                 TimeSpan.FromSeconds(result.GetRequiredValue(runTimeout)),
                 TimeSpan.FromSeconds(result.GetRequiredValue(submissionTimeout)),
-                result.GetValue(unsafeNoSandbox)),
+                result.GetValue(unsafeNoSandbox))
+            {
+                Jobs = result.GetRequiredValue(jobs),
+            },
             stdout,
             stderr,
             cancellation));
@@ -61,4 +65,11 @@ public sealed record GradeRequest(
     TimeSpan CheckTimeout,
     TimeSpan RunTimeout,
     TimeSpan SubmissionTimeout,
-    bool UnsafeNoSandbox);
+    bool UnsafeNoSandbox)
+{
+    /// <summary>Half the processor count, at least 1: a submission's build and checks take about two cores.</summary>
+    public static int DefaultJobs { get; } = Math.Max(1, Environment.ProcessorCount / 2);
+
+    /// <summary>How many submissions are built and checked at once (the programs run one at a time).</summary>
+    public int Jobs { get; init; } = DefaultJobs;
+}

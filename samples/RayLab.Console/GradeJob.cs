@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
+using System.Runtime.ExceptionServices;
 using System.Text;
 using System.Text.RegularExpressions;
 using System.Xml.Linq;
@@ -79,12 +80,33 @@ public static partial class GradeJob
             string staging = Path.Combine(work, "report");
             Directory.CreateDirectory(staging);
             reference.Save(staging);
+            var grading = Stopwatch.StartNew();
+            string[] folders = StudentFolders([.. setup.Students.Select(Path.GetFileName).Select(n => n!)]);
+            var labs = new GradedLab[setup.Students.Length];
+            int jobs = Math.Min(setup.Request.Jobs, labs.Length);
+            stdout.WriteLine($"building and checking {labs.Length} submissions, {jobs} at a time");
+            int done = 0;
+            SideBySide(labs.Length, jobs, (i, stop) =>
+            {
+                GradedLab lab = BuildAndCheck(setup, sandbox, setup.Students[i], folders[i], work, staging, stop);
+                labs[i] = lab;
+                int k = Interlocked.Increment(ref done);
+                lock (stdout)
+                {
+                    stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                        $"  [{k}/{labs.Length}] {lab.Row.Name}: {(lab.Built ? $"checks {lab.Row.Count("Passed")} passed, {lab.Row.Count("Failed")} failed, {lab.Row.Count("Timeout")} timed out" : lab.Row.Status)} ({lab.Clock.Elapsed.TotalSeconds:0} s)"));
+                }
+            }, cancellation);
+
+            // The programs one at a time, in name order: their times are in the report, side by side.
+            stdout.WriteLine("running the programs one at a time, so that their times compare");
             var rows = new List<StudentRow>();
-            foreach (string submission in setup.Students)
+            foreach (GradedLab lab in labs)
             {
                 cancellation.ThrowIfCancellationRequested();
-                StudentRow row = GradeOne(setup, sandbox, reference, submission, work, staging, cancellation);
+                RunProgram(setup, sandbox, reference, lab, grading, cancellation);
                 cancellation.ThrowIfCancellationRequested();
+                StudentRow row = lab.Row;
                 rows.Add(row);
                 stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
                     $"{row.Name}: {row.Status}; checks {row.Count("Passed")} passed, {row.Count("Failed")} failed, {row.Count("Timeout")} timed out ({row.Seconds:0} s)"));
@@ -124,71 +146,168 @@ public static partial class GradeJob
         }
     }
 
-    private static StudentRow GradeOne(GradeSetup setup, GradeSandbox sandbox, GradeReference reference, string submission, string work, string staging, CancellationToken cancellation)
+    /// <summary>
+    /// Runs <paramref name="body"/> for items 0 to <paramref name="count"/> − 1, <paramref name="jobs"/> at a time, each
+    /// on a thread of its own: the bodies wait minutes on child processes, and on the thread pool they would hold the
+    /// threads that read those children's output. After the first exception no item starts, the token the bodies get
+    /// is cancelled (which stops their children), and the exception is rethrown as it was thrown.
+    /// </summary>
+    private static void SideBySide(int count, int jobs, Action<int, CancellationToken> body, CancellationToken cancellation)
     {
-        var clock = Stopwatch.StartNew();
-        string name = Path.GetFileName(submission);
-        var row = new StudentRow(name, SafeName(name));
-        string folder = Path.Combine(staging, "students", row.Folder);
-        Directory.CreateDirectory(folder);
-        string log = Path.Combine(folder, "log.txt");
-        TimeSpan Left() => setup.Request.SubmissionTimeout - clock.Elapsed;
-
-        string? root = FindLab(submission);
-        if (root is null)
+        using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellation);
+        int next = -1;
+        ExceptionDispatchInfo? failure = null;
+        void Work()
         {
-            row.Problems.Add("no lab");
-            row.Detail = "no src/Lab/*.csproj in the folder or in one folder below it";
-            row.Seconds = clock.Elapsed.TotalSeconds;
-            return row;
+            try
+            {
+                int i;
+                while (!stop.IsCancellationRequested && (i = Interlocked.Increment(ref next)) < count)
+                {
+                    body(i, stop.Token);
+                }
+            }
+            catch (Exception e)
+            {
+                if (Interlocked.CompareExchange(ref failure, ExceptionDispatchInfo.Capture(e), null) is null)
+                {
+                    stop.Cancel();
+                }
+            }
         }
 
-        string lab = Path.Combine(work, "labs", row.Folder);
-        CopyLab(root, lab);
-        PinChecks(setup, lab);
-
-        // 1. Build (the restore comes from the prepared, read-only package folder; no network).
-        ChildRun build = sandbox.Run(lab, log, Min(Left(), TimeSpan.FromMinutes(10)), "dotnet",
-            ["build", Path.Combine("tests", "Lab.Tests"), "-nodeReuse:false", "-p:UseSharedCompilation=false"], cancellation);
-        cancellation.ThrowIfCancellationRequested();
-        if (build.TimedOut || build.ExitCode != 0)
+        if (jobs <= 1)
         {
-            row.Problems.Add(build.TimedOut ? "build time limit" : "does not build");
-            row.Detail = build.TimedOut ? "the build ran past the submission's limit" : FirstErrors(build.Output, lab);
-            row.Seconds = clock.Elapsed.TotalSeconds;
-            return row;
-        }
-
-        // 2. The checks: runs of dotnet test; a run the hang detection stops names the checks that were running, which
-        // count as timed out, and the next run leaves them out.
-        RunChecks(setup, sandbox, lab, log, row, Left, cancellation);
-
-        // 3. The program: the pictures, and its lines of rays and time.
-        if (Left() <= TimeSpan.Zero)
-        {
-            row.Problems.Add("submission time limit");
+            Work();
         }
         else
         {
-            TimeSpan limit = Min(Left(), setup.Request.RunTimeout);
-            ChildRun run = sandbox.Run(lab, log, limit, "dotnet", ["run", "--project", Path.Combine("src", "Lab"), "--no-build"], cancellation);
-            cancellation.ThrowIfCancellationRequested();
-            if (run.TimedOut)
+            Thread[] threads = [.. Enumerable.Range(0, jobs).Select(j => new Thread(Work) { IsBackground = true, Name = $"raylab grade job {j + 1}" })];
+            foreach (Thread thread in threads)
             {
-                row.Problems.Add(limit < setup.Request.RunTimeout ? "submission time limit" : "program time limit");
-            }
-            else if (run.ExitCode != 0)
-            {
-                row.Problems.Add($"program failed (exit {run.ExitCode})");
-                row.Detail ??= FirstErrors(run.Output, lab);
+                thread.Start();
             }
 
-            ReadTimings(setup, run.Output, row);
+            foreach (Thread thread in threads)
+            {
+                thread.Join();
+            }
         }
 
-        ScorePictures(setup, reference, lab, folder, row);
-        row.Seconds = clock.Elapsed.TotalSeconds;
-        return row;
+        cancellation.ThrowIfCancellationRequested();
+        failure?.Throw();
+    }
+
+    /// <summary>
+    /// Each student's folder in the report and in the grader's work: the submission's name with every character but
+    /// ASCII letters, digits, '-', '_' and '.' made '_', and "-2", "-3", … after a name an earlier one already took
+    /// (compared ignoring case, for reports copied to Windows or macOS): "Łucja" and "Żucja" are "_ucja" and "_ucja-2".
+    /// </summary>
+    /// <param name="names">The submissions' names, in the report's order.</param>
+    /// <returns>One distinct folder name per submission.</returns>
+    public static string[] StudentFolders(IReadOnlyList<string> names)
+    {
+        ArgumentNullException.ThrowIfNull(names);
+        var taken = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
+        var folders = new string[names.Count];
+        for (int i = 0; i < names.Count; i++)
+        {
+            string safe = SafeName(names[i]);
+            string folder = safe;
+            for (int n = 2; !taken.Add(folder); n++)
+            {
+                folder = string.Create(CultureInfo.InvariantCulture, $"{safe}-{n}");
+            }
+
+            folders[i] = folder;
+        }
+
+        return folders;
+    }
+
+    /// <summary>A submission's copy built and checked, the first part of its grading; its program runs later.</summary>
+    private static GradedLab BuildAndCheck(GradeSetup setup, GradeSandbox sandbox, string submission, string folderName, string work, string staging, CancellationToken cancellation)
+    {
+        var row = new StudentRow(Path.GetFileName(submission), folderName);
+        string folder = Path.Combine(staging, "students", row.Folder);
+        Directory.CreateDirectory(folder);
+        var lab = new GradedLab(row, Path.Combine(work, "labs", row.Folder), Path.Combine(folder, "log.txt"), folder);
+        lab.Clock.Start();
+        try
+        {
+            string? root = FindLab(submission);
+            if (root is null)
+            {
+                row.Problems.Add("no lab");
+                row.Detail = "no src/Lab/*.csproj in the folder or in one folder below it";
+                return lab;
+            }
+
+            CopyLab(root, lab.Path);
+            PinChecks(setup, lab.Path);
+
+            // 1. Build (the restore comes from the prepared, read-only package folder; no network).
+            ChildRun build = sandbox.Run(lab.Path, lab.Log, Min(lab.Left(setup), TimeSpan.FromMinutes(10)), "dotnet",
+                ["build", Path.Combine("tests", "Lab.Tests"), "-nodeReuse:false", "-p:UseSharedCompilation=false"], cancellation);
+            row.Steps["build"] = build.Elapsed.TotalSeconds;
+            cancellation.ThrowIfCancellationRequested();
+            if (build.TimedOut || build.ExitCode != 0)
+            {
+                row.Problems.Add(build.TimedOut ? "build time limit" : "does not build");
+                row.Detail = build.TimedOut ? "the build ran past the submission's limit" : FirstErrors(build.Output, lab.Path);
+                return lab;
+            }
+
+            // 2. The checks: runs of dotnet test; a run the hang detection stops names the checks that were running, which
+            // count as timed out, and the next run leaves them out.
+            var checks = Stopwatch.StartNew();
+            RunChecks(setup, sandbox, lab.Path, lab.Log, row, () => lab.Left(setup), cancellation);
+            row.Steps["checks"] = checks.Elapsed.TotalSeconds;
+            lab.Built = true;
+            return lab;
+        }
+        finally
+        {
+            lab.Clock.Stop();
+        }
+    }
+
+    /// <summary>3. The program of a lab that built: the pictures, and its lines of rays and time; then the pictures scored.</summary>
+    private static void RunProgram(GradeSetup setup, GradeSandbox sandbox, GradeReference reference, GradedLab lab, Stopwatch grading, CancellationToken cancellation)
+    {
+        StudentRow row = lab.Row;
+        lab.Clock.Start();
+        if (lab.Built)
+        {
+            if (lab.Left(setup) <= TimeSpan.Zero)
+            {
+                row.Problems.Add("submission time limit");
+            }
+            else
+            {
+                TimeSpan limit = Min(lab.Left(setup), setup.Request.RunTimeout);
+                row.ProgramStart = grading.Elapsed.TotalSeconds;
+                ChildRun run = sandbox.Run(lab.Path, lab.Log, limit, "dotnet", ["run", "--project", Path.Combine("src", "Lab"), "--no-build"], cancellation);
+                row.Steps["program"] = run.Elapsed.TotalSeconds;
+                cancellation.ThrowIfCancellationRequested();
+                if (run.TimedOut)
+                {
+                    row.Problems.Add(limit < setup.Request.RunTimeout ? "submission time limit" : "program time limit");
+                }
+                else if (run.ExitCode != 0)
+                {
+                    row.Problems.Add($"program failed (exit {run.ExitCode})");
+                    row.Detail ??= FirstErrors(run.Output, lab.Path);
+                }
+
+                ReadTimings(setup, run.Output, row);
+            }
+
+            ScorePictures(setup, reference, lab.Path, lab.ReportFolder, row);
+        }
+
+        lab.Clock.Stop();
+        row.Seconds = lab.Clock.Elapsed.TotalSeconds;
     }
 
     private static void RunChecks(GradeSetup setup, GradeSandbox sandbox, string lab, string log, StudentRow row, Func<TimeSpan> left, CancellationToken cancellation)
@@ -498,6 +617,23 @@ public static partial class GradeJob
     private static partial Regex RenderLine();
 }
 
+/// <summary>A submission in the grader's work: its row, its copy, its log and report folder, and the time its own steps took.</summary>
+/// <param name="Row">The student's row.</param>
+/// <param name="Path">The copy with the pinned checks.</param>
+/// <param name="Log">The log of its steps.</param>
+/// <param name="ReportFolder">Its folder in the report.</param>
+internal sealed record GradedLab(StudentRow Row, string Path, string Log, string ReportFolder)
+{
+    /// <summary>Runs while one of this submission's steps runs, so waiting for the others does not count against its limit.</summary>
+    public Stopwatch Clock { get; } = new();
+
+    /// <summary>Whether it built (and its checks ran): its program runs.</summary>
+    public bool Built { get; set; }
+
+    /// <summary>What is left of the submission's limit.</summary>
+    public TimeSpan Left(GradeSetup setup) => setup.Request.SubmissionTimeout - Clock.Elapsed;
+}
+
 /// <summary>One student's row of the class table.</summary>
 /// <param name="Name">The submission folder's name.</param>
 /// <param name="Folder">That name made safe for a file path (the report's folder of the student's pictures and log).</param>
@@ -518,8 +654,14 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>Each camera's rays per pixel and milliseconds of the timed method, from the program's lines.</summary>
     public Dictionary<string, (double RaysPerPixel, double Milliseconds)> Timings { get; } = [];
 
-    /// <summary>The submission's wall time in the grader.</summary>
+    /// <summary>The submission's wall time in the grader: its own steps, not the time it waited for others.</summary>
     public double Seconds { get; set; }
+
+    /// <summary>Each step's seconds: build, checks, program (those that ran).</summary>
+    public SortedDictionary<string, double> Steps { get; } = new(StringComparer.Ordinal);
+
+    /// <summary>When the program started, in seconds after the grading began; null when it did not run.</summary>
+    public double? ProgramStart { get; set; }
 
     /// <summary>A short status: "ok", or the problems joined.</summary>
     public string Status => Problems.Count == 0 ? "ok" : string.Join("; ", Problems.Distinct());

@@ -103,6 +103,7 @@ internal static class GradeReport
             json.WriteString("raylabVersion", setup.Version);
             json.WriteString("checks", setup.Checks);
             json.WriteBoolean("sandboxed", sandboxed);
+            json.WriteNumber("jobs", setup.Request.Jobs);
             json.WriteStartArray("sections");
             foreach (string s in sections)
             {
@@ -203,6 +204,18 @@ internal static class GradeReport
 
                 json.WriteEndObject();
                 json.WriteNumber("seconds", Math.Round(row.Seconds, 1));
+                json.WriteStartObject("steps");
+                foreach ((string step, double seconds) in row.Steps)
+                {
+                    json.WriteNumber(step, Math.Round(seconds, 1));
+                }
+
+                json.WriteEndObject();
+                if (row.ProgramStart is double start)
+                {
+                    json.WriteNumber("programStart", Math.Round(start, 1));
+                }
+
                 json.WriteString("log", $"students/{row.Folder}/log.txt");
                 json.WriteEndObject();
             }
@@ -227,7 +240,10 @@ internal static class GradeReport
         html.AppendLine($"<h1>RayLab grades: the {E(setup.Kind)} lab</h1>");
         html.AppendLine($"<p>{rows.Count} submissions, checks from <code>{E(setup.Checks)}</code> (RayLab {E(setup.Version)}), "
             + (sandboxed ? "each run in bubblewrap (no network, read-only system)." : "<strong>run without a sandbox (--unsafe-no-sandbox)</strong>.")
-            + $" Pictures: RMSE in 8-bit levels and mean FLIP against the exact image; rays per pixel and time of <code>{E(setup.TimedMethod)}</code> from the program's lines, beside the rays of the lab's adaptive rule.</p>");
+            + $" Pictures: RMSE in 8-bit levels and mean FLIP against the exact image; rays per pixel and time of <code>{E(setup.TimedMethod)}</code> from the program's lines, beside the rays of the lab's adaptive rule."
+            + (Math.Min(setup.Request.Jobs, rows.Count) == 1 ? " Built, checked and run one at a time."
+                : string.Create(CultureInfo.InvariantCulture, $" Built and checked {Math.Min(setup.Request.Jobs, rows.Count)} at a time; the programs ran one at a time."))
+            + " The last column is each submission's own seconds.</p>");
         html.AppendLine("<table><tr><th>student</th><th>status</th>");
         foreach (string s in sections)
         {

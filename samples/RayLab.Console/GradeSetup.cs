@@ -65,6 +65,11 @@ internal sealed class GradeSetup
             }
         }
 
+        if (request.Jobs < 1)
+        {
+            throw new UsageException($"--jobs: expected a count ≥ 1, got {request.Jobs}");
+        }
+
         string submissions = Folder(request.Submissions, "submissions");
         string checks = Folder(request.Checks, "--checks");
         string feed = request.Feed is null

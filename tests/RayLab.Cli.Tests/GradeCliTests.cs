@@ -74,6 +74,25 @@ public sealed class GradeCliTests : IDisposable
         Assert.Equal("raylab: error: --check-timeout: expected a number of seconds ≥ 1, got 0", stderr.TrimEnd());
     }
 
+    [Fact]
+    public void ZeroJobsAreRefused()
+    {
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.Path, "--checks", _dir.Path, "--out", _dir.File("r"), "--jobs", "0");
+        Assert.Equal(1, code);
+        Assert.Equal("raylab: error: --jobs: expected a count ≥ 1, got 0", stderr.TrimEnd());
+        Assert.False(Directory.Exists(_dir.File("r")));
+    }
+
+    [Fact]
+    public void NamesThatMakeTheSameFolderGetFoldersOfTheirOwn()
+    {
+        // Polish letters, spaces and case all fold: each student still gets a folder (work copy, pictures, log) of their own.
+        string[] names = ["Jan Kowalski", "Jan_Kowalski", "jan_kowalski", "Łucja", "Żucja", "_ucja-2", "anna"];
+        string[] folders = GradeJob.StudentFolders(names);
+        Assert.Equal(["Jan_Kowalski", "Jan_Kowalski-2", "jan_kowalski-3", "_ucja", "_ucja-2", "_ucja-2-2", "anna"], folders);
+        Assert.Equal(names.Length, folders.Distinct(StringComparer.OrdinalIgnoreCase).Count());
+    }
+
     /// <summary>A kit's checks folder with what the grader looks for first (the lab's folders and scene), and an empty feed beside it.</summary>
     private string Checks()
     {

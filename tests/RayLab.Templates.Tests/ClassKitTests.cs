@@ -109,8 +109,8 @@ public sealed class ClassKit : IAsyncLifetime
 /// The class kit and <c>raylab grade</c>, end to end: a lab made from a kit that was moved after it was made restores,
 /// builds and passes its tests with the kit's feed as its only source; and a class of five labs (a better method, one
 /// that breaks the method's section and edits its own test thresholds, the template as created, one that does not
-/// compile, one whose method never returns) graded in bubblewrap against the kit's pinned checks gets one right row each,
-/// within the limits given.
+/// compile, one whose method never returns) graded in bubblewrap against the kit's pinned checks, built and checked two at
+/// a time with the programs one after another, gets one right row each, within the limits given.
 /// </summary>
 [Trait("Category", "Templates")]
 public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
@@ -179,8 +179,9 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Edit(hangs, "src/Lab/MyMethod.cs", "Intensity sum = Intensity.Black;", "while (pixel.X >= 0) { Thread.SpinWait(1); }\n        Intensity sum = Intensity.Black;");
 
         string report = Path.Combine(kit.Root, "report");
-        using JsonDocument grades = Grade(submissions, "method", report, checkTimeout: 10, runTimeout: 40);
+        using JsonDocument grades = Grade(submissions, "method", report, checkTimeout: 10, runTimeout: 40, jobs: 2);
         Assert.True(grades.RootElement.GetProperty("sandboxed").GetBoolean());
+        Assert.Equal(2, grades.RootElement.GetProperty("jobs").GetInt32());
         Dictionary<string, JsonElement> rows = Rows(grades);
         Assert.Equal(["broken", "correct", "hangs", "sabotaged", "template"], rows.Keys.Order(StringComparer.Ordinal));
         string method = MethodSection(rows["template"]);
@@ -190,6 +191,20 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         {
             Assert.InRange(row.GetProperty("seconds").GetDouble(), 0, SubmissionLimitSeconds + StopSlackSeconds);
         }
+
+        // Built and checked two at a time, but the programs, whose times the table compares, one after another.
+        (double Start, double Seconds)[] programs = [.. rows.Values.Where(r => r.TryGetProperty("programStart", out _))
+            .Select(r => (r.GetProperty("programStart").GetDouble(), r.GetProperty("steps").GetProperty("program").GetDouble())).OrderBy(p => p.Item1)];
+        Assert.Equal(4, programs.Length); // every lab that built
+        for (int i = 1; i < programs.Length; i++)
+        {
+            // (0.2 s: both figures are rounded to 0.1 s)
+            Assert.True(programs[i].Start >= programs[i - 1].Start + programs[i - 1].Seconds - 0.2,
+                $"a program started at {programs[i].Start} s while the one started at {programs[i - 1].Start} s ran for {programs[i - 1].Seconds} s");
+        }
+
+        Assert.False(rows["broken"].GetProperty("steps").TryGetProperty("checks", out _));
+        Assert.True(rows["broken"].GetProperty("steps").GetProperty("build").GetDouble() > 0);
 
         // The better method and the template pass every section (the student's own failing test is not run); the
         // better method's pictures are closer to the exact image.
@@ -240,7 +255,7 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         string rounded = await kit.NewLabAsync(submissions, "rounded", restore: false, "exercise", "raylab-lab-solution");
         Edit(rounded, "src/Lab/LabImage.cs", "(byte)(int)scaled", "(byte)Math.Round(scaled)");
 
-        using JsonDocument grades = Grade(submissions, "exercise", Path.Combine(kit.Root, "exercise-report"), checkTimeout: 60, runTimeout: 60);
+        using JsonDocument grades = Grade(submissions, "exercise", Path.Combine(kit.Root, "exercise-report"), checkTimeout: 60, runTimeout: 60, jobs: 1);
         Dictionary<string, JsonElement> rows = Rows(grades);
         string[] sections = [.. grades.RootElement.GetProperty("sections").EnumerateArray().Select(s => s.GetString()!)];
         // Every section of the lab, parsed from the checks' display names.
@@ -260,14 +275,14 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
     /// <paramref name="kind"/>, with the class's limit per submission; fails with both outputs unless it exits 0.
     /// </summary>
     /// <returns>The report's grades.json.</returns>
-    private JsonDocument Grade(string submissions, string kind, string report, int checkTimeout, int runTimeout)
+    private JsonDocument Grade(string submissions, string kind, string report, int checkTimeout, int runTimeout, int jobs)
     {
         var stdout = new StringWriter();
         var stderr = new StringWriter();
         int exit = Program.Run(
             ["grade", submissions, "--checks", Path.Combine(kit.Kit, "checks", kind), "--out", report,
              "--check-timeout", checkTimeout.ToString(CultureInfo.InvariantCulture), "--run-timeout", runTimeout.ToString(CultureInfo.InvariantCulture),
-             "--submission-timeout", SubmissionLimitSeconds.ToString(CultureInfo.InvariantCulture)],
+             "--submission-timeout", SubmissionLimitSeconds.ToString(CultureInfo.InvariantCulture), "--jobs", jobs.ToString(CultureInfo.InvariantCulture)],
             stdout, stderr, TestContext.Current.CancellationToken);
         Assert.True(exit == 0, $"raylab grade exited {exit}:\n{stdout}\n{stderr}");
         TestContext.Current.TestOutputHelper?.WriteLine($"raylab grade {kind}:\n{stdout}\n{stderr}");
