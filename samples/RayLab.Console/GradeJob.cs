@@ -81,20 +81,20 @@ public static partial class GradeJob
             Directory.CreateDirectory(staging);
             reference.Save(staging);
             var grading = Stopwatch.StartNew();
-            string[] folders = StudentFolders([.. setup.Students.Select(Path.GetFileName).Select(n => n!)]);
+            string[] names = [.. setup.Students.Select(s => Path.GetFileName(s))];
+            string[] folders = StudentFolders(names);
             var labs = new GradedLab[setup.Students.Length];
-            int jobs = Math.Min(setup.Request.Jobs, labs.Length);
-            stdout.WriteLine($"building and checking {labs.Length} submissions, {jobs} at a time");
+            stdout.WriteLine($"building and checking {labs.Length} submissions, {setup.Jobs} at a time");
             int done = 0;
-            SideBySide(labs.Length, jobs, (i, stop) =>
+            SideBySide(labs.Length, setup.Jobs, (i, stop) =>
             {
-                GradedLab lab = BuildAndCheck(setup, sandbox, setup.Students[i], folders[i], work, staging, stop);
+                GradedLab lab = BuildAndCheck(setup, sandbox, setup.Students[i], new StudentRow(names[i], folders[i]), work, staging, stop);
                 labs[i] = lab;
                 int k = Interlocked.Increment(ref done);
                 lock (stdout)
                 {
                     stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                        $"  [{k}/{labs.Length}] {lab.Row.Name}: {(lab.Built ? $"checks {lab.Row.Count("Passed")} passed, {lab.Row.Count("Failed")} failed, {lab.Row.Count("Timeout")} timed out" : lab.Row.Status)} ({lab.Clock.Elapsed.TotalSeconds:0} s)"));
+                        $"  [{k}/{labs.Length}] {lab.Row.Name}: {(lab.Built ? lab.Row.CheckCounts : lab.Row.Status)} ({lab.Clock.Elapsed.TotalSeconds:0} s)"));
                 }
             }, cancellation);
 
@@ -109,7 +109,7 @@ public static partial class GradeJob
                 StudentRow row = lab.Row;
                 rows.Add(row);
                 stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                    $"{row.Name}: {row.Status}; checks {row.Count("Passed")} passed, {row.Count("Failed")} failed, {row.Count("Timeout")} timed out ({row.Seconds:0} s)"));
+                    $"{row.Name}: {row.Status}; {row.CheckCounts} ({row.Seconds:0} s)"));
             }
 
             GradeReport.Write(staging, setup, reference, rows, sandbox.IsSandboxed);
@@ -226,9 +226,8 @@ public static partial class GradeJob
     }
 
     /// <summary>A submission's copy built and checked, the first part of its grading; its program runs later.</summary>
-    private static GradedLab BuildAndCheck(GradeSetup setup, GradeSandbox sandbox, string submission, string folderName, string work, string staging, CancellationToken cancellation)
+    private static GradedLab BuildAndCheck(GradeSetup setup, GradeSandbox sandbox, string submission, StudentRow row, string work, string staging, CancellationToken cancellation)
     {
-        var row = new StudentRow(Path.GetFileName(submission), folderName);
         string folder = Path.Combine(staging, "students", row.Folder);
         Directory.CreateDirectory(folder);
         var lab = new GradedLab(row, Path.Combine(work, "labs", row.Folder), Path.Combine(folder, "log.txt"), folder);
@@ -665,6 +664,9 @@ internal sealed record StudentRow(string Name, string Folder)
 
     /// <summary>A short status: "ok", or the problems joined.</summary>
     public string Status => Problems.Count == 0 ? "ok" : string.Join("; ", Problems.Distinct());
+
+    /// <summary>"checks N passed, N failed, N timed out", for the grader's lines.</summary>
+    public string CheckCounts => string.Create(CultureInfo.InvariantCulture, $"checks {Count("Passed")} passed, {Count("Failed")} failed, {Count("Timeout")} timed out");
 
     /// <summary>How many checks ended with <paramref name="outcome"/>.</summary>
     public int Count(string outcome) => Checks.Values.Count(v => v == outcome);

@@ -103,7 +103,7 @@ internal static class GradeReport
             json.WriteString("raylabVersion", setup.Version);
             json.WriteString("checks", setup.Checks);
             json.WriteBoolean("sandboxed", sandboxed);
-            json.WriteNumber("jobs", setup.Request.Jobs);
+            json.WriteNumber("jobs", setup.Jobs);
             json.WriteStartArray("sections");
             foreach (string s in sections)
             {
@@ -241,8 +241,8 @@ internal static class GradeReport
         html.AppendLine($"<p>{rows.Count} submissions, checks from <code>{E(setup.Checks)}</code> (RayLab {E(setup.Version)}), "
             + (sandboxed ? "each run in bubblewrap (no network, read-only system)." : "<strong>run without a sandbox (--unsafe-no-sandbox)</strong>.")
             + $" Pictures: RMSE in 8-bit levels and mean FLIP against the exact image; rays per pixel and time of <code>{E(setup.TimedMethod)}</code> from the program's lines, beside the rays of the lab's adaptive rule."
-            + (Math.Min(setup.Request.Jobs, rows.Count) == 1 ? " Built, checked and run one at a time."
-                : string.Create(CultureInfo.InvariantCulture, $" Built and checked {Math.Min(setup.Request.Jobs, rows.Count)} at a time; the programs ran one at a time."))
+            + (setup.Jobs == 1 ? " Built, checked and run one at a time."
+                : string.Create(CultureInfo.InvariantCulture, $" Built and checked {setup.Jobs} at a time; the programs ran one at a time."))
             + " The last column is each submission's own seconds.</p>");
         html.AppendLine("<table><tr><th>student</th><th>status</th>");
         foreach (string s in sections)

@@ -27,6 +27,9 @@ internal sealed class GradeSetup
     /// <summary>Each submission's folder, in ordinal order of the names.</summary>
     public string[] Students { get; }
 
+    /// <summary>How many submissions are built and checked at once: <c>--jobs</c>, at most one per submission.</summary>
+    public int Jobs => Math.Min(Request.Jobs, Students.Length);
+
     public string Checks { get; }
 
     public string Feed { get; }
