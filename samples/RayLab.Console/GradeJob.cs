@@ -1,6 +1,5 @@
 using System.Diagnostics;
 using System.Globalization;
-using System.Runtime.ExceptionServices;
 using System.Text;
 using System.Text.RegularExpressions;
 using System.Xml.Linq;
@@ -86,7 +85,7 @@ public static partial class GradeJob
             var labs = new GradedLab[setup.Students.Length];
             stdout.WriteLine($"building and checking {labs.Length} submissions, {setup.Jobs} at a time");
             int done = 0;
-            SideBySide(labs.Length, setup.Jobs, (i, stop) =>
+            SideBySide.Run(labs.Length, setup.Jobs, (i, stop) =>
             {
                 GradedLab lab = BuildAndCheck(setup, sandbox, setup.Students[i], new StudentRow(names[i], folders[i]), work, staging, stop);
                 labs[i] = lab;
@@ -144,58 +143,6 @@ public static partial class GradeJob
         {
             throw new UsageException($"--checks: the checks do not restore from the feed {setup.Feed}: {FirstErrors(restore.Output, lab)}");
         }
-    }
-
-    /// <summary>
-    /// Runs <paramref name="body"/> for items 0 to <paramref name="count"/> − 1, <paramref name="jobs"/> at a time, each
-    /// on a thread of its own: the bodies wait minutes on child processes, and on the thread pool they would hold the
-    /// threads that read those children's output. After the first exception no item starts, the token the bodies get
-    /// is cancelled (which stops their children), and the exception is rethrown as it was thrown.
-    /// </summary>
-    private static void SideBySide(int count, int jobs, Action<int, CancellationToken> body, CancellationToken cancellation)
-    {
-        using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellation);
-        int next = -1;
-        ExceptionDispatchInfo? failure = null;
-        void Work()
-        {
-            try
-            {
-                int i;
-                while (!stop.IsCancellationRequested && (i = Interlocked.Increment(ref next)) < count)
-                {
-                    body(i, stop.Token);
-                }
-            }
-            catch (Exception e)
-            {
-                if (Interlocked.CompareExchange(ref failure, ExceptionDispatchInfo.Capture(e), null) is null)
-                {
-                    stop.Cancel();
-                }
-            }
-        }
-
-        if (jobs <= 1)
-        {
-            Work();
-        }
-        else
-        {
-            Thread[] threads = [.. Enumerable.Range(0, jobs).Select(j => new Thread(Work) { IsBackground = true, Name = $"raylab grade job {j + 1}" })];
-            foreach (Thread thread in threads)
-            {
-                thread.Start();
-            }
-
-            foreach (Thread thread in threads)
-            {
-                thread.Join();
-            }
-        }
-
-        cancellation.ThrowIfCancellationRequested();
-        failure?.Throw();
     }
 
     /// <summary>
