@@ -4,7 +4,7 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// <c>raylab grade SUBMISSIONS --checks KIT/checks/KIND --out DIR [--feed KIT/feed] [--check-timeout S]
-/// [--run-timeout S] [--submission-timeout S] [--jobs N] [--unsafe-no-sandbox]</c>: builds, checks and runs every
+/// [--run-timeout S] [--submission-timeout S] [--jobs N] [--memory-limit MB] [--unsafe-no-sandbox]</c>: builds, checks and runs every
 /// submitted lab in a sandbox with the instructor's pinned checks and writes one class table (<see cref="GradeJob"/>).
 /// </summary>
 public static class GradeCommand
@@ -23,10 +23,11 @@ public static class GradeCommand
         var runTimeout = new Option<int>("--run-timeout") { Description = "Seconds the lab's program (dotnet run --project src/Lab, the pictures) may run.", DefaultValueFactory = _ => 180, HelpName = "S" };
         var submissionTimeout = new Option<int>("--submission-timeout") { Description = "Seconds one submission may take in all (build, checks, program); what is left is stopped and the row says so.", DefaultValueFactory = _ => 600, HelpName = "S" };
         var jobs = new Option<int>("--jobs", "-j") { Description = "How many submissions are built and checked at once (each takes about two cores); the programs, whose times the report compares, then run one at a time. Default: half the processor count, at least 1.", DefaultValueFactory = _ => GradeRequest.DefaultJobs, HelpName = "N" };
+        var memoryLimit = new Option<int>("--memory-limit") { Description = "Megabytes of managed memory (the .NET GC heap) each process of a submission may hold: its build, its checks and its program; past it that process fails with OutOfMemoryException and the row says so.", DefaultValueFactory = _ => GradeRequest.DefaultMemoryLimitMegabytes, HelpName = "MB" };
         var unsafeNoSandbox = new Option<bool>("--unsafe-no-sandbox") { Description = "Run the submissions' code without a sandbox, with this user's rights and network: only for labs you trust, or where bubblewrap cannot run (Windows, macOS)." };
         var grade = new Command("grade", "Grade a folder of submitted labs against the instructor's pinned checks: each one built, tested and run in a sandbox (bubblewrap: read-only system, no network, its own folder writable), its pictures scored against the exact image; writes grades.csv, grades.json and index.html.")
         {
-            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, jobs, unsafeNoSandbox,
+            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, jobs, memoryLimit, unsafeNoSandbox,
         };
         grade.SetAction(result => GradeJob.Run(
             new GradeRequest(
@@ -40,6 +41,7 @@ public static class GradeCommand
                 result.GetValue(unsafeNoSandbox))
             {
                 Jobs = result.GetRequiredValue(jobs),
+                MemoryLimitMegabytes = result.GetRequiredValue(memoryLimit),
             },
             stdout,
             stderr,
@@ -72,4 +74,13 @@ public sealed record GradeRequest(
 
     /// <summary>How many submissions are built and checked at once (the programs run one at a time).</summary>
     public int Jobs { get; init; } = DefaultJobs;
+
+    /// <summary>The default of <see cref="MemoryLimitMegabytes"/>: 2048 MB.</summary>
+    public const int DefaultMemoryLimitMegabytes = 2048;
+
+    /// <summary>
+    /// The managed memory (the .NET GC heap) each of a submission's processes may hold, in megabytes: its build, its
+    /// checks and its program each fail with an <see cref="OutOfMemoryException"/> past it, instead of taking the machine.
+    /// </summary>
+    public int MemoryLimitMegabytes { get; init; } = DefaultMemoryLimitMegabytes;
 }

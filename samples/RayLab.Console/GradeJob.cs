@@ -69,7 +69,7 @@ public static partial class GradeJob
             Directory.CreateDirectory(packages);
             stdout.WriteLine($"restoring the checks' packages from {setup.Feed} (once, outside the sandbox)");
             RestoreChecks(setup, work, packages, cancellation);
-            GradeSandbox sandbox = GradeSandbox.Create(request.UnsafeNoSandbox, [setup.Submissions, setup.Output, work], packages);
+            GradeSandbox sandbox = GradeSandbox.Create(request.UnsafeNoSandbox, [setup.Submissions, setup.Output, work], packages, request.MemoryLimitMegabytes);
             if (!sandbox.IsSandboxed)
             {
                 stdout.WriteLine("warning: --unsafe-no-sandbox: the submissions' code runs as you, with your files and network");
@@ -240,6 +240,11 @@ public static partial class GradeJob
                 {
                     row.Problems.Add(limit < setup.Request.RunTimeout ? "submission time limit" : "program time limit");
                 }
+                else if (run.ExitCode != 0 && OutOfMemory(run.Output))
+                {
+                    row.Problems.Add("program memory limit");
+                    row.Detail ??= OutOfMemoryDetail(setup, "the program");
+                }
                 else if (run.ExitCode != 0)
                 {
                     row.Problems.Add($"program failed (exit {run.ExitCode})");
@@ -277,6 +282,11 @@ public static partial class GradeJob
 
             ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation);
             cancellation.ThrowIfCancellationRequested();
+            if (OutOfMemory(test.Output))
+            {
+                row.Problems.Add("check memory limit");
+                row.Detail ??= OutOfMemoryDetail(setup, "a check");
+            }
             string trx = Path.Combine(results, "checks.trx");
             if (File.Exists(trx))
             {
@@ -319,6 +329,16 @@ public static partial class GradeJob
             row.Problems.Add(hang ? "check time limit" : "checks crashed");
         }
     }
+
+    /// <summary>
+    /// Whether a child's output shows a .NET process that ran out of managed memory: an exception's name (a check
+    /// that failed with it), or the runtime's own line for one nobody caught (the process then exits 134).
+    /// </summary>
+    private static bool OutOfMemory(string output) =>
+        output.Contains("System.OutOfMemoryException", StringComparison.Ordinal) || OutOfMemoryLine().IsMatch(output);
+
+    private static string OutOfMemoryDetail(GradeSetup setup, string what) => string.Create(CultureInfo.InvariantCulture,
+        $"{what} ran out of memory (OutOfMemoryException): each process may hold {setup.Request.MemoryLimitMegabytes} MB of managed memory (--memory-limit)");
 
     private static void ReadTimings(GradeSetup setup, string output, StudentRow row)
     {
@@ -548,6 +568,9 @@ public static partial class GradeJob
     }
 
     private static TimeSpan Min(TimeSpan a, TimeSpan b) => a < b ? a : b;
+
+    [GeneratedRegex(@"^Out of memory\.\r?$", RegexOptions.Multiline)]
+    private static partial Regex OutOfMemoryLine();
 
     [GeneratedRegex(@"^((?:\d+(?:\.\d+)*)|own)\s")]
     private static partial Regex SectionPrefix();

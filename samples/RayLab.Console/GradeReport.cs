@@ -104,6 +104,7 @@ internal static class GradeReport
             json.WriteString("checks", setup.Checks);
             json.WriteBoolean("sandboxed", sandboxed);
             json.WriteNumber("jobs", setup.Jobs);
+            json.WriteNumber("memoryLimitMB", setup.Request.MemoryLimitMegabytes);
             json.WriteStartArray("sections");
             foreach (string s in sections)
             {
@@ -243,6 +244,7 @@ internal static class GradeReport
             + $" Pictures: RMSE in 8-bit levels and mean FLIP against the exact image; rays per pixel and time of <code>{E(setup.TimedMethod)}</code> from the program's lines, beside the rays of the lab's adaptive rule."
             + (setup.Jobs == 1 ? " Built, checked and run one at a time."
                 : string.Create(CultureInfo.InvariantCulture, $" Built and checked {setup.Jobs} at a time; the programs ran one at a time."))
+            + string.Create(CultureInfo.InvariantCulture, $" Each process held at most {setup.Request.MemoryLimitMegabytes} MB of managed memory.")
             + " The last column is each submission's own seconds.</p>");
         html.AppendLine("<table><tr><th>student</th><th>status</th>");
         foreach (string s in sections)

@@ -1,4 +1,5 @@
 using System.Diagnostics;
+using System.Globalization;
 using System.Runtime.InteropServices;
 using System.Text;
 using RayLab.Scenes;
@@ -17,7 +18,8 @@ public sealed record ChildRun(int ExitCode, bool TimedOut, string Output, TimeSp
 /// bubblewrap: the whole file system read-only, the lab's own folder writable, the folders of the other submissions,
 /// of the report and of the grader's work hidden (empty), the package folder read-only, no network (only a loopback
 /// of its own), its own process and IPC namespaces, and every process killed when the limit passes or the grader
-/// dies. With <c>--unsafe-no-sandbox</c> the same commands run as plain children.
+/// dies. With <c>--unsafe-no-sandbox</c> the same commands run as plain children. Either way each .NET process's
+/// managed memory can be capped (<c>--memory-limit</c>).
 /// </summary>
 public sealed class GradeSandbox
 {
@@ -25,15 +27,19 @@ public sealed class GradeSandbox
     private readonly IReadOnlyList<string> _hidden;
     private readonly string _packages;
 
-    private GradeSandbox(string? bwrap, IReadOnlyList<string> hidden, string packages)
+    private GradeSandbox(string? bwrap, IReadOnlyList<string> hidden, string packages, int? memoryLimitMegabytes)
     {
         _bwrap = bwrap;
         _hidden = hidden;
         _packages = packages;
+        MemoryLimitMegabytes = memoryLimitMegabytes;
     }
 
     /// <summary>Whether the commands run inside bubblewrap.</summary>
     public bool IsSandboxed => _bwrap is not null;
+
+    /// <summary>The managed memory each command's .NET processes may hold, in megabytes (the GC's hard limit), or null for none.</summary>
+    public int? MemoryLimitMegabytes { get; }
 
     /// <summary>
     /// The sandbox for this machine: bubblewrap where it runs, else a <see cref="UsageException"/> that says what to
@@ -42,14 +48,23 @@ public sealed class GradeSandbox
     /// <param name="unsafeNoSandbox">Run unsandboxed.</param>
     /// <param name="hidden">Folders the submission must not see (others' labs, the report, the grader's work).</param>
     /// <param name="packages">The NuGet package folder, bound read-only.</param>
+    /// <param name="memoryLimitMegabytes">
+    /// The managed memory (the .NET GC heap) each .NET process a command starts may hold, in megabytes
+    /// (<c>DOTNET_GCHeapHardLimit</c>); past it that process gets an <see cref="OutOfMemoryException"/>. Null for no limit.
+    /// </param>
     /// <returns>The sandbox.</returns>
-    public static GradeSandbox Create(bool unsafeNoSandbox, IReadOnlyList<string> hidden, string packages)
+    public static GradeSandbox Create(bool unsafeNoSandbox, IReadOnlyList<string> hidden, string packages, int? memoryLimitMegabytes = null)
     {
         ArgumentNullException.ThrowIfNull(hidden);
         ArgumentException.ThrowIfNullOrEmpty(packages);
+        if (memoryLimitMegabytes is { } limit)
+        {
+            ArgumentOutOfRangeException.ThrowIfLessThan(limit, 1, nameof(memoryLimitMegabytes));
+        }
+
         if (unsafeNoSandbox)
         {
-            return new GradeSandbox(null, hidden, packages);
+            return new GradeSandbox(null, hidden, packages, memoryLimitMegabytes);
         }
 
         if (!OperatingSystem.IsLinux())
@@ -67,7 +82,7 @@ public sealed class GradeSandbox
                 + "install it (Debian/Ubuntu: sudo apt-get install bubblewrap), or pass --unsafe-no-sandbox (only for labs you trust)");
         }
 
-        var sandbox = new GradeSandbox(bwrap, hidden, packages);
+        var sandbox = new GradeSandbox(bwrap, hidden, packages, memoryLimitMegabytes);
         ChildRun probe = sandbox.Run(Path.GetTempPath(), null, TimeSpan.FromSeconds(30), "true", [], CancellationToken.None);
         if (probe.ExitCode != 0)
         {
@@ -121,6 +136,12 @@ public sealed class GradeSandbox
             ["UseSharedCompilation"] = "false",
             ["TMPDIR"] = "/tmp", // the sandbox's own, empty /tmp
         };
+        if (MemoryLimitMegabytes is { } megabytes)
+        {
+            // The runtime reads it as hexadecimal bytes, in every .NET process of the command: MSBuild, the compiler,
+            // the test host, the lab's program.
+            environment["DOTNET_GCHeapHardLimit"] = ((long)megabytes << 20).ToString("x", CultureInfo.InvariantCulture);
+        }
         if (_bwrap is null)
         {
             start.FileName = command;

@@ -73,6 +73,11 @@ internal sealed class GradeSetup
             throw new UsageException($"--jobs: expected a count ≥ 1, got {request.Jobs}");
         }
 
+        if (request.MemoryLimitMegabytes < 256)
+        {
+            throw new UsageException($"--memory-limit: expected megabytes ≥ 256, got {request.MemoryLimitMegabytes}");
+        }
+
         string submissions = Folder(request.Submissions, "submissions");
         string checks = Folder(request.Checks, "--checks");
         string feed = request.Feed is null

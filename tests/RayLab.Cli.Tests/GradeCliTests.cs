@@ -84,6 +84,49 @@ public sealed class GradeCliTests : IDisposable
     }
 
     [Fact]
+    public void AMemoryLimitUnder256MegabytesIsRefused()
+    {
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.Path, "--checks", _dir.Path, "--out", _dir.File("r"), "--memory-limit", "100");
+        Assert.Equal(1, code);
+        Assert.Equal("raylab: error: --memory-limit: expected megabytes ≥ 256, got 100", stderr.TrimEnd());
+        Assert.False(Directory.Exists(_dir.File("r")));
+    }
+
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)]
+    public void ASubmissionsProcessPastTheMemoryLimitRunsOutOfMemoryAndOneWithinItRuns(bool sandboxed)
+    {
+        // raylab itself as the submission's program: a 16000×16000 picture needs 768 MB for its pixels alone (about
+        // 6 s and 800 MB unlimited), and fails at once under 256 MB; an 80×60 one runs under the same limit.
+        string lab = Directory.CreateDirectory(_dir.File("lab")).FullName;
+        string packages = Directory.CreateDirectory(_dir.File("packages")).FullName;
+        GradeSandbox sandbox;
+        try
+        {
+            sandbox = GradeSandbox.Create(unsafeNoSandbox: !sandboxed, [], packages, memoryLimitMegabytes: 256);
+        }
+        catch (UsageException e) when (sandboxed)
+        {
+            Assert.Skip($"no sandbox here: {e.Message}");
+            return;
+        }
+
+        string raylab = Path.Combine(AppContext.BaseDirectory, "raylab.dll");
+        ChildRun big = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "dotnet", [raylab, "render", "two-spheres", "--width", "16000", "--height", "16000", "-o", "big.png"],
+            TestContext.Current.CancellationToken);
+        Assert.False(big.TimedOut);
+        Assert.True(big.ExitCode == 1, $"exit {big.ExitCode}: {big.Output}");
+        Assert.Contains("raylab: error: not enough memory to render two-spheres at the requested size", big.Output, StringComparison.Ordinal);
+        Assert.False(File.Exists(Path.Combine(lab, "big.png")));
+
+        ChildRun small = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "dotnet", [raylab, "render", "two-spheres", "--width", "80", "--height", "60", "-o", "small.png"],
+            TestContext.Current.CancellationToken);
+        Assert.True(small.ExitCode == 0, $"exit {small.ExitCode}: {small.Output}");
+        Assert.True(File.Exists(Path.Combine(lab, "small.png")));
+    }
+
+    [Fact]
     public void NamesThatMakeTheSameFolderGetFoldersOfTheirOwn()
     {
         // Polish letters, spaces and case all fold: each student still gets a folder (work copy, pictures, log) of their own.

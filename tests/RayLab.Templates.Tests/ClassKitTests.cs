@@ -107,9 +107,9 @@ public sealed class ClassKit : IAsyncLifetime
 
 /// <summary>
 /// The class kit and <c>raylab grade</c>, end to end: a lab made from a kit that was moved after it was made restores,
-/// builds and passes its tests with the kit's feed as its only source; and a class of five labs (a better method, one
+/// builds and passes its tests with the kit's feed as its only source; and a class of six labs (a better method, one
 /// that breaks the method's section and edits its own test thresholds, the template as created, one that does not
-/// compile, one whose method never returns) graded in bubblewrap against the kit's pinned checks, built and checked two at
+/// compile, one whose method never returns, one whose program allocates without end) graded in bubblewrap against the kit's pinned checks, built and checked two at
 /// a time with the programs one after another, gets one right row each, within the limits given.
 /// </summary>
 [Trait("Category", "Templates")]
@@ -177,13 +177,18 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Edit(broken, "src/Lab/MyMethod.cs", "return sum / Points.Length;", "return sum / Points.Length");
         string hangs = await kit.NewLabAsync(submissions, "hangs", restore: false);
         Edit(hangs, "src/Lab/MyMethod.cs", "Intensity sum = Intensity.Black;", "while (pixel.X >= 0) { Thread.SpinWait(1); }\n        Intensity sum = Intensity.Black;");
+        // Its program keeps every 16 MB it allocates; its checks pass.
+        string hog = await kit.NewLabAsync(submissions, "hog", restore: false);
+        Edit(hog, "src/Lab/Program.cs", "SceneDescription file = TwoSpheres.Load();",
+            "var kept = new List<byte[]>();\n        while (kept.Count >= 0) { kept.Add(new byte[1 << 24]); }\n        SceneDescription file = TwoSpheres.Load();");
 
         string report = Path.Combine(kit.Root, "report");
         using JsonDocument grades = Grade(submissions, "method", report, checkTimeout: 10, runTimeout: 40, jobs: 2);
         Assert.True(grades.RootElement.GetProperty("sandboxed").GetBoolean());
         Assert.Equal(2, grades.RootElement.GetProperty("jobs").GetInt32());
+        Assert.Equal(GradeRequest.DefaultMemoryLimitMegabytes, grades.RootElement.GetProperty("memoryLimitMB").GetInt32());
         Dictionary<string, JsonElement> rows = Rows(grades);
-        Assert.Equal(["broken", "correct", "hangs", "sabotaged", "template"], rows.Keys.Order(StringComparer.Ordinal));
+        Assert.Equal(["broken", "correct", "hangs", "hog", "sabotaged", "template"], rows.Keys.Order(StringComparer.Ordinal));
         string method = MethodSection(rows["template"]);
         string[] sections = [.. grades.RootElement.GetProperty("sections").EnumerateArray().Select(s => s.GetString()!)];
         Assert.True(sections.Length >= 4, $"sections: {string.Join(", ", sections)}");
@@ -195,7 +200,7 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         // Built and checked two at a time, but the programs, whose times the table compares, one after another.
         (double Start, double Seconds)[] programs = [.. rows.Values.Where(r => r.TryGetProperty("programStart", out _))
             .Select(r => (r.GetProperty("programStart").GetDouble(), r.GetProperty("steps").GetProperty("program").GetDouble())).OrderBy(p => p.Item1)];
-        Assert.Equal(4, programs.Length); // every lab that built
+        Assert.Equal(5, programs.Length); // every lab that built
         for (int i = 1; i < programs.Length; i++)
         {
             // (0.2 s: both figures are rounded to 0.1 s)
@@ -233,6 +238,12 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Assert.Contains("time limit", hangsStatus, StringComparison.Ordinal);
         Assert.Equal("timeout", Section(rows["hangs"], method));
 
+        // Allocates without end: the program stops at the memory limit (not the machine's), and the row says so; the
+        // checks, the build and the other labs ran under the same limit.
+        Assert.Equal("program memory limit; pictures missing", rows["hog"].GetProperty("status").GetString());
+        Assert.Contains("--memory-limit", rows["hog"].GetProperty("detail").GetString(), StringComparison.Ordinal);
+        Assert.All(sections, s => Assert.Equal("pass", Section(rows["hog"], s)));
+
         // The page shows each student's pictures and error maps beside the exact ones.
         string html = File.ReadAllText(Path.Combine(report, "index.html"));
         foreach (string file in new[] { "exact/perspective.png", "students/correct/perspective.png", "students/correct/perspective-flip.png" })
@@ -242,7 +253,7 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         }
 
         string[] csv = File.ReadAllLines(Path.Combine(report, "grades.csv"));
-        Assert.Equal(6, csv.Length);
+        Assert.Equal(7, csv.Length);
         Assert.StartsWith("broken,does not build,", csv[1], StringComparison.Ordinal);
     }
 
