@@ -66,29 +66,15 @@ public sealed class GradeCliTests : IDisposable
         Assert.Equal($"raylab: error: --out: '{_dir.File("subs/report")}' is inside the submissions folder; write the report elsewhere", stderr.TrimEnd());
     }
 
-    [Fact]
-    public void AZeroLimitIsRefused()
+    [Theory]
+    [InlineData("--check-timeout", "0", "expected a number of seconds ≥ 1, got 0")]
+    [InlineData("--jobs", "0", "expected a count ≥ 1, got 0")]
+    [InlineData("--memory-limit", "100", "expected megabytes ≥ 256, got 100")]
+    public void ALimitOutOfRangeIsRefusedWithOneLine(string option, string value, string problem)
     {
-        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.Path, "--checks", _dir.Path, "--out", _dir.File("r"), "--check-timeout", "0");
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.Path, "--checks", _dir.Path, "--out", _dir.File("r"), option, value);
         Assert.Equal(1, code);
-        Assert.Equal("raylab: error: --check-timeout: expected a number of seconds ≥ 1, got 0", stderr.TrimEnd());
-    }
-
-    [Fact]
-    public void ZeroJobsAreRefused()
-    {
-        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.Path, "--checks", _dir.Path, "--out", _dir.File("r"), "--jobs", "0");
-        Assert.Equal(1, code);
-        Assert.Equal("raylab: error: --jobs: expected a count ≥ 1, got 0", stderr.TrimEnd());
-        Assert.False(Directory.Exists(_dir.File("r")));
-    }
-
-    [Fact]
-    public void AMemoryLimitUnder256MegabytesIsRefused()
-    {
-        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.Path, "--checks", _dir.Path, "--out", _dir.File("r"), "--memory-limit", "100");
-        Assert.Equal(1, code);
-        Assert.Equal("raylab: error: --memory-limit: expected megabytes ≥ 256, got 100", stderr.TrimEnd());
+        Assert.Equal($"raylab: error: {option}: {problem}", stderr.TrimEnd());
         Assert.False(Directory.Exists(_dir.File("r")));
     }
 
