@@ -94,6 +94,15 @@ public sealed partial class LabTemplateTests
         Assert.Equal(Sections.Order(), PassedSections(test).Order());
         Assert.Matches(@"RMSE [\d.,]+ poziomu, max \d+, FLIP [\d.,]+", test); // the figures are in dotnet test's output
 
+        // check: every section listed as written (not "done": it only knows that nothing throws NotImplementedException).
+        string check = await feed.RunAsync(lab, "dotnet", "run", "--no-build", "--project", Path.Combine("src", "Lab"), "--", "check");
+        foreach (string section in Sections)
+        {
+            Assert.Matches($@"(?m)^\s+napisane\s+{Regex.Escape(section)}\s", check);
+        }
+
+        Assert.Contains("Wszystkie części są napisane; sprawdzenie: dotnet test", check, StringComparison.Ordinal);
+
         // dotnet run: both pictures and obrazkoncowy.jpg, one line per render.
         string output = await feed.RunAsync(lab, "dotnet", "run", "--no-build", "--project", Path.Combine("src", "Lab"));
         foreach (string camera in new[] { "orthographic", "perspective" })

@@ -48,9 +48,9 @@ internal static class Progress
             if (problem is null)
             {
 #if (en)
-                output.WriteLine($"  done          {id,-6} {title} ({classes})");
+                output.WriteLine($"  written       {id,-6} {title} ({classes})");
 #else
-                output.WriteLine($"  gotowe        {id,-6} {title} ({classes})");
+                output.WriteLine($"  napisane      {id,-6} {title} ({classes})");
 #endif
             }
             else
