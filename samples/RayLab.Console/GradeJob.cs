@@ -287,6 +287,7 @@ public static partial class GradeJob
                 row.Problems.Add("check memory limit");
                 row.Detail ??= OutOfMemoryDetail(setup, "a check");
             }
+
             string trx = Path.Combine(results, "checks.trx");
             if (File.Exists(trx))
             {
