@@ -109,8 +109,9 @@ public sealed class ClassKit : IAsyncLifetime
 /// The class kit and <c>raylab grade</c>, end to end: a lab made from a kit that was moved after it was made restores,
 /// builds and passes its tests with the kit's feed as its only source; and a class of six labs (a better method, one
 /// that breaks the method's section and edits its own test thresholds, the template as created, one that does not
-/// compile, one whose method never returns, one whose method and program allocate without end) graded in bubblewrap against the kit's pinned checks, built and checked two at
-/// a time with the programs one after another, gets one right row each, within the limits given.
+/// compile, one whose method never returns, one whose method and program allocate past the memory limit) graded in
+/// bubblewrap against the kit's pinned checks, built and checked two at a time with the programs one after another,
+/// gets one right row each, within the limits given.
 /// </summary>
 [Trait("Category", "Templates")]
 public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
@@ -177,11 +178,14 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Edit(broken, "src/Lab/MyMethod.cs", "return sum / Points.Length;", "return sum / Points.Length");
         string hangs = await kit.NewLabAsync(submissions, "hangs", restore: false);
         Edit(hangs, "src/Lab/MyMethod.cs", "Intensity sum = Intensity.Black;", "while (pixel.X >= 0) { Thread.SpinWait(1); }\n        Intensity sum = Intensity.Black;");
-        // Its method, at a picture's first pixel, and its program keep every 16 MB they allocate.
+        // Its program keeps every 16 MB it allocates; its method asks for an array of 2 GB at a picture's first pixel
+        // (at once, not bit by bit: checks that run side by side in one process and fill the heap together make the
+        // collector work so hard near the limit that a check can reach its time limit first).
         string hog = await kit.NewLabAsync(submissions, "hog", restore: false);
-        const string Hog = "var kept = new List<byte[]>();\n        while (kept.Count >= 0) { kept.Add(new byte[1 << 24]); }\n";
-        Edit(hog, "src/Lab/MyMethod.cs", "Intensity sum = Intensity.Black;", $"if (pixel.X == 0 && pixel.Row == 0)\n        {{\n        {Hog}        }}\n\n        Intensity sum = Intensity.Black;");
-        Edit(hog, "src/Lab/Program.cs", "SceneDescription file = TwoSpheres.Load();", $"{Hog}        SceneDescription file = TwoSpheres.Load();");
+        Edit(hog, "src/Lab/MyMethod.cs", "Intensity sum = Intensity.Black;",
+            "if (pixel.X == 0 && pixel.Row == 0)\n        {\n            GC.KeepAlive(new byte[Array.MaxLength]);\n        }\n\n        Intensity sum = Intensity.Black;");
+        Edit(hog, "src/Lab/Program.cs", "SceneDescription file = TwoSpheres.Load();",
+            "var kept = new List<byte[]>();\n        while (kept.Count >= 0) { kept.Add(new byte[1 << 24]); }\n        SceneDescription file = TwoSpheres.Load();");
 
         string report = Path.Combine(kit.Root, "report");
         using JsonDocument grades = Grade(submissions, "method", report, checkTimeout: 10, runTimeout: 40, jobs: 2);
@@ -239,7 +243,7 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Assert.Contains("time limit", hangsStatus, StringComparison.Ordinal);
         Assert.Equal("timeout", Section(rows["hangs"], method));
 
-        // Allocates without end: the checks that render with its method and its program stop at the memory limit (not
+        // Past the limit: the checks that render with its method and its program stop at the memory limit (not
         // the machine's), and the row says so; the other checks pass, and the other labs ran under the same limit.
         Assert.Equal("check memory limit; program memory limit; pictures missing", rows["hog"].GetProperty("status").GetString());
         Assert.Contains("--memory-limit", rows["hog"].GetProperty("detail").GetString(), StringComparison.Ordinal);
