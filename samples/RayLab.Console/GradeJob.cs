@@ -323,6 +323,15 @@ public static partial class GradeJob
                     row.Problems.Add("checks did not run");
                     row.Detail ??= FirstErrors(test.Output, lab);
                 }
+                else if (row.Checks.Count == 0)
+                {
+                    // A run stopped before its first check ended (a test host slow to start on a busy machine) names
+                    // no check: the row must not read "ok" with no checks.
+                    row.Problems.Add("checks did not run");
+                    row.Detail ??= hang
+                        ? "the test run was stopped for inactivity before any check finished: give --check-timeout more room"
+                        : FirstErrors(test.Output, lab);
+                }
 
                 return;
             }

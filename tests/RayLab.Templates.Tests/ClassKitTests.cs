@@ -188,7 +188,7 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
             "var kept = new List<byte[]>();\n        while (kept.Count >= 0) { kept.Add(new byte[1 << 24]); }\n        SceneDescription file = TwoSpheres.Load();");
 
         string report = Path.Combine(kit.Root, "report");
-        using JsonDocument grades = Grade(submissions, "method", report, checkTimeout: 10, runTimeout: 40, jobs: 2);
+        using JsonDocument grades = Grade(submissions, "method", report, checkTimeout: 20, runTimeout: 40, jobs: 2);
         Assert.True(grades.RootElement.GetProperty("sandboxed").GetBoolean());
         Assert.Equal(2, grades.RootElement.GetProperty("jobs").GetInt32());
         Assert.Equal(GradeRequest.DefaultMemoryLimitMegabytes, grades.RootElement.GetProperty("memoryLimitMB").GetInt32());
