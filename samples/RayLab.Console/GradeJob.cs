@@ -316,28 +316,56 @@ public static partial class GradeJob
                 return;
             }
 
-            if (stopped.Count == 0 || attempt >= 50)
+            CheckRunVerdict verdict = JudgeCheckRun(File.Exists(trx), row.Checks.Count, stopped.Count, hang, attempt);
+            if (verdict.Problem is not null)
             {
-                if (!File.Exists(trx))
-                {
-                    row.Problems.Add("checks did not run");
-                    row.Detail ??= FirstErrors(test.Output, lab);
-                }
-                else if (row.Checks.Count == 0)
-                {
-                    // A run stopped before its first check ended (a test host slow to start on a busy machine) names
-                    // no check: the row must not read "ok" with no checks.
-                    row.Problems.Add("checks did not run");
-                    row.Detail ??= hang
-                        ? "the test run was stopped for inactivity before any check finished: give --check-timeout more room"
-                        : FirstErrors(test.Output, lab);
-                }
-
-                return;
+                row.Problems.Add(verdict.Problem);
             }
 
-            row.Problems.Add(hang ? "check time limit" : "checks crashed");
+            row.Detail ??= verdict.ShowFirstErrors ? FirstErrors(test.Output, lab) : verdict.Detail;
+
+            if (!verdict.RunAgain)
+            {
+                return;
+            }
         }
+    }
+
+    /// <summary>How many times the checks run at most, each without the checks that stopped the runs before it.</summary>
+    public const int MaxCheckRuns = 50;
+
+    /// <summary>
+    /// What one <c>dotnet test</c> run of the checks comes to. Checks that stopped the run (a hang, a crash) are left
+    /// out of the next run, so the rest still get a result. A run that leaves no TRX file, or a TRX file with no check
+    /// in it (stopped before its first check ended, as a test host slow to start on a busy machine can be), is "checks
+    /// did not run": the row must never read "ok" with no checks.
+    /// </summary>
+    /// <param name="trxWritten">Whether the run wrote its TRX file.</param>
+    /// <param name="checksRecorded">The checks with a result so far, this run's and the runs' before it.</param>
+    /// <param name="stopped">The checks this run left unfinished (the blame data's sequence files).</param>
+    /// <param name="hang">Whether the run was stopped for inactivity (<c>--blame-hang-timeout</c>), not by a crash.</param>
+    /// <param name="attempt">This run's number, from 1.</param>
+    public static CheckRunVerdict JudgeCheckRun(bool trxWritten, int checksRecorded, int stopped, bool hang, int attempt)
+    {
+        if (stopped > 0 && attempt < MaxCheckRuns)
+        {
+            return new CheckRunVerdict(true, hang ? "check time limit" : "checks crashed", null, false);
+        }
+
+        if (!trxWritten)
+        {
+            return new CheckRunVerdict(false, "checks did not run", null, true);
+        }
+
+        if (checksRecorded == 0)
+        {
+            return hang
+                ? new CheckRunVerdict(false, "checks did not run",
+                    "the test run was stopped for inactivity before any check finished: give --check-timeout more room", false)
+                : new CheckRunVerdict(false, "checks did not run", null, true);
+        }
+
+        return new CheckRunVerdict(false, null, null, false);
     }
 
     /// <summary>
@@ -664,3 +692,10 @@ internal sealed record StudentRow(string Name, string Folder)
 
 /// <summary>A picture against the exact image: RMSE in 8-bit levels and mean FLIP, or why it has none.</summary>
 internal sealed record PictureScore(double Rmse, double Flip, string? Problem);
+
+/// <summary>What one run of the checks comes to (<see cref="GradeJob.JudgeCheckRun"/>).</summary>
+/// <param name="RunAgain">Whether the checks run again, without those that stopped this run.</param>
+/// <param name="Problem">The row's problem, or null for none.</param>
+/// <param name="Detail">The row's detail, or null for none.</param>
+/// <param name="ShowFirstErrors">Whether the row's detail is the run's first error lines, read from its output.</param>
+public readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail, bool ShowFirstErrors);

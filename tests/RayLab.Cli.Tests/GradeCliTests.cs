@@ -21,6 +21,27 @@ public sealed class GradeCliTests : IDisposable
     public void ASectionIsTheDisplayNamesSectionNumberOrElseTheChecksClass(string display, string section) =>
         Assert.Equal(section, GradeJob.SectionOf(display));
 
+    [Theory]
+    [InlineData(true, 12, 0, false, 1, false, null, false)]                  // every check ended: ok
+    [InlineData(false, 0, 0, false, 1, false, "checks did not run", true)]   // no TRX: the run's first errors say why
+    [InlineData(true, 0, 0, true, 1, false, "checks did not run", false)]    // stopped before the first check ended
+    [InlineData(true, 0, 0, false, 1, false, "checks did not run", true)]    // a TRX with no check in it
+    [InlineData(true, 5, 1, true, 1, true, "check time limit", false)]       // a check hung: again without it
+    [InlineData(true, 5, 1, false, 3, true, "checks crashed", false)]        // a check crashed the host: again without it
+    [InlineData(true, 9, 2, true, GradeJob.MaxCheckRuns, false, null, false)] // the last run: its stopped checks stay
+    public void ACheckRunIsOkOnlyWithChecksAndRunsAgainWithoutTheOnesThatStoppedIt(
+        bool trx, int checks, int stopped, bool hang, int attempt, bool again, string? problem, bool firstErrors)
+    {
+        CheckRunVerdict verdict = GradeJob.JudgeCheckRun(trx, checks, stopped, hang, attempt);
+        Assert.Equal(again, verdict.RunAgain);
+        Assert.Equal(problem, verdict.Problem);
+        Assert.Equal(firstErrors, verdict.ShowFirstErrors);
+        if (problem == "checks did not run" && hang)
+        {
+            Assert.Contains("--check-timeout", verdict.Detail, StringComparison.Ordinal);
+        }
+    }
+
     [Fact]
     public void MissingSubmissionsNameTheArgument()
     {
