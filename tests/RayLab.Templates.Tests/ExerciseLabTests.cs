@@ -8,7 +8,7 @@ namespace RayLab.Templates.Tests;
 /// The exercise lab (<c>dotnet new raylab-lab</c>, <c>--kind exercise</c> by default): the skeletons build, every section's
 /// checks fail in the lab's words and <c>dotnet run</c> names the classes still to write, in each language; the
 /// reference solution (the instructor's template, <c>dotnet new raylab-lab-solution</c>) passes every check and writes the pictures; and five sabotages of the
-/// solution each fail their own section. One restored solution lab serves all the sabotages
+/// solution each fail their own section, and a sixth that throws is named by file and line. One restored solution lab serves all the sabotages
 /// (edit, <c>dotnet test --no-restore</c>, put the file back).
 /// </summary>
 public sealed partial class LabTemplateTests
@@ -136,6 +136,22 @@ public sealed partial class LabTemplateTests
         }
 
         TestContext.Current.TestOutputHelper?.WriteLine($"five sabotages: {clock.Elapsed.TotalSeconds:F0} s");
+
+        // Code that throws: the checks and check name the exception and where in the student's code it came from.
+        string image = Path.Combine(lab, "src", "Lab", "LabImage.cs");
+        string imageSource = File.ReadAllText(image);
+        const string cut = "(byte)(int)scaled";
+        int cutLine = Array.FindIndex(imageSource.Split('\n'), l => l.Contains(cut, StringComparison.Ordinal)) + 1;
+        Assert.True(cutLine > 0, $"LabImage.cs has no line with {cut}");
+        File.WriteAllText(image, imageSource.Replace(cut, "(byte)new int[2][(int)scaled]", StringComparison.Ordinal));
+        (int throwExit, string thrown) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-restore", "--filter", "Section=2.2");
+        (int checkExit, string listed) = await feed.RunUncheckedAsync(lab, "dotnet", "run", "--no-build", "--project", Path.Combine("src", "Lab"), "--", "check");
+        File.WriteAllText(image, imageSource);
+        string at = $"src/Lab/LabImage.cs:{cutLine}, LabImage.ToByte";
+        Assert.True(throwExit != 0, $"2.2 passed with a ToByte that indexes past an array:\n{thrown}");
+        Assert.Contains($"Twój kod rzucił IndexOutOfRangeException: Index was outside the bounds of the array. ({at}", thrown, StringComparison.Ordinal);
+        Assert.Equal(1, checkExit);
+        Assert.Matches($@"(?m)^\s+do napisania\s+2\.2\s.*IndexOutOfRangeException: .*\({Regex.Escape(at)}\)", listed);
     }
 
     /// <summary>

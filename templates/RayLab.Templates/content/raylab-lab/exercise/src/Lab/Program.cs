@@ -56,9 +56,9 @@ internal static class Program
         catch (Exception e) when (e is not OutOfMemoryException)
         {
 #if (en)
-            Console.Error.WriteLine($"The render stopped: {e.GetType().Name}: {e.Message}");
+            Console.Error.WriteLine($"The render stopped: {YourCode.Describe(e)}");
 #else
-            Console.Error.WriteLine($"Renderowanie przerwane: {e.GetType().Name}: {e.Message}");
+            Console.Error.WriteLine($"Renderowanie przerwane: {YourCode.Describe(e)}");
 #endif
             return 1;
         }

@@ -36,13 +36,10 @@ internal static class Progress
             {
                 probe();
             }
-            catch (NotImplementedException e)
-            {
-                problem = e.Message;
-            }
             catch (Exception e) when (e is not OutOfMemoryException)
             {
-                problem = $"{e.GetType().Name}: {e.Message}";
+                Exception thrown = YourCode.Unwrapped(e);
+                problem = thrown is NotImplementedException ? thrown.Message : YourCode.Describe(thrown);
             }
 
             if (problem is null)
