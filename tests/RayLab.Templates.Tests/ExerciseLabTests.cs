@@ -143,7 +143,7 @@ public sealed partial class LabTemplateTests
         const string cut = "(byte)(int)scaled";
         int cutLine = Array.FindIndex(imageSource.Split('\n'), l => l.Contains(cut, StringComparison.Ordinal)) + 1;
         Assert.True(cutLine > 0, $"LabImage.cs has no line with {cut}");
-        File.WriteAllText(image, imageSource.Replace(cut, "(byte)new int[2][(int)scaled]", StringComparison.Ordinal));
+        File.WriteAllText(image, imageSource.Replace(cut, "(byte)(new int[2])[(int)scaled]", StringComparison.Ordinal));
         (int throwExit, string thrown) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-restore", "--filter", "Section=2.2");
         (int checkExit, string listed) = await feed.RunUncheckedAsync(lab, "dotnet", "run", "--no-build", "--project", Path.Combine("src", "Lab"), "--", "check");
         File.WriteAllText(image, imageSource);
@@ -151,7 +151,9 @@ public sealed partial class LabTemplateTests
         Assert.True(throwExit != 0, $"2.2 passed with a ToByte that indexes past an array:\n{thrown}");
         Assert.Contains($"Twój kod rzucił IndexOutOfRangeException: Index was outside the bounds of the array. ({at}", thrown, StringComparison.Ordinal);
         Assert.Equal(1, checkExit);
-        Assert.Matches($@"(?m)^\s+do napisania\s+2\.2\s.*IndexOutOfRangeException: .*\({Regex.Escape(at)}\)", listed);
+        Assert.Matches($@"(?m)^\s+rzuca wyjątek\s+2\.2\s.*IndexOutOfRangeException: .*\({Regex.Escape(at)}\)", listed);
+        Assert.Matches(@"(?m)^\s+napisane\s+2\.1\s", listed);
+        Assert.Contains("Sekcje, które rzucają wyjątek: 2.2", listed, StringComparison.Ordinal);
     }
 
     /// <summary>

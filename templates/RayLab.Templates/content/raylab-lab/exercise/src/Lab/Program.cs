@@ -28,19 +28,27 @@ internal static class Program
 #else
         Console.WriteLine("Laboratorium II: kamera, próbkowanie, obraz, natężenie");
 #endif
-        int missing = Progress.Report(Console.Out);
-        if (missing > 0 || args.Contains("check"))
+        (int missing, List<string> throwing) = Progress.Report(Console.Out);
+        if (missing > 0 || throwing.Count > 0 || args.Contains("check"))
         {
 #if (en)
-            Console.WriteLine(missing > 0
-                ? $"{missing} of {Sections.All.Length} parts still to write; the checks: dotnet test"
+            Console.WriteLine(missing > 0 ? $"{missing} of {Sections.All.Length} parts still to write; the checks: dotnet test"
+                : throwing.Count > 0 ? "Every part is written; the checks: dotnet test"
                 : "Every part is written; the checks: dotnet test; the pictures: dotnet run --project src/Lab");
+            if (throwing.Count > 0)
+            {
+                Console.WriteLine($"Sections that throw an exception: {string.Join(", ", throwing)} (where: above)");
+            }
 #else
-            Console.WriteLine(missing > 0
-                ? $"Do napisania zostało {missing} z {Sections.All.Length} części; sprawdzenie: dotnet test"
+            Console.WriteLine(missing > 0 ? $"Do napisania zostało {missing} z {Sections.All.Length} części; sprawdzenie: dotnet test"
+                : throwing.Count > 0 ? "Wszystkie części są napisane; sprawdzenie: dotnet test"
                 : "Wszystkie części są napisane; sprawdzenie: dotnet test; obrazy: dotnet run --project src/Lab");
+            if (throwing.Count > 0)
+            {
+                Console.WriteLine($"Sekcje, które rzucają wyjątek: {string.Join(", ", throwing)} (gdzie: wyżej)");
+            }
 #endif
-            return missing > 0 ? 1 : 0;
+            return missing > 0 || throwing.Count > 0 ? 1 : 0;
         }
 
         try

@@ -3,14 +3,14 @@ using RayLab;
 namespace MyLab;
 
 #if (en)
-/// <summary>Which parts of the lab are written: tries each class on a tiny input and lists the sections that still throw NotImplementedException.</summary>
+/// <summary>Which parts of the lab are written: tries each class on a tiny input and lists the sections that still throw NotImplementedException, and those that throw another exception (with where in your code).</summary>
 #else
-/// <summary>Które części laboratorium są napisane: wywołuje każdą klasę na małym przykładzie i wypisuje sekcje, które wciąż rzucają NotImplementedException.</summary>
+/// <summary>Które części laboratorium są napisane: wywołuje każdą klasę na małym przykładzie i wypisuje sekcje, które wciąż rzucają NotImplementedException, oraz te, które rzucają inny wyjątek (z miejscem w Twoim kodzie).</summary>
 #endif
 internal static class Progress
 {
-    /// <summary>Prints one line per section; returns how many are still to write.</summary>
-    public static int Report(TextWriter output)
+    /// <summary>Prints one line per section; returns how many are still to write, and the sections that throw another exception.</summary>
+    public static (int ToWrite, List<string> Throwing) Report(TextWriter output)
     {
         var scene = new Scene([new Sphere(new Double3(0, 0, 0), 1, new Intensity(1, 0, 0))], new Intensity(0, 0, 1), Intensity.White);
         var probes = new (string Id, Action Try)[]
@@ -28,10 +28,12 @@ internal static class Progress
         };
 
         int missing = 0;
+        var throwing = new List<string>();
         foreach ((string id, Action probe) in probes)
         {
             (string _, string title, string classes) = Sections.All.First(s => s.Id == id);
             string? problem = null;
+            bool written = false;
             try
             {
                 probe();
@@ -39,7 +41,8 @@ internal static class Progress
             catch (Exception e) when (e is not OutOfMemoryException)
             {
                 Exception thrown = YourCode.Unwrapped(e);
-                problem = thrown is NotImplementedException ? thrown.Message : YourCode.Describe(thrown);
+                written = thrown is not NotImplementedException;
+                problem = written ? YourCode.Describe(thrown) : thrown.Message;
             }
 
             if (problem is null)
@@ -48,6 +51,15 @@ internal static class Progress
                 output.WriteLine($"  written       {id,-6} {title} ({classes})");
 #else
                 output.WriteLine($"  napisane      {id,-6} {title} ({classes})");
+#endif
+            }
+            else if (written)
+            {
+                throwing.Add(id);
+#if (en)
+                output.WriteLine($"  throws        {id,-6} {title} ({classes}): {problem}");
+#else
+                output.WriteLine($"  rzuca wyjątek {id,-6} {title} ({classes}): {problem}");
 #endif
             }
             else
@@ -63,7 +75,7 @@ internal static class Progress
             }
         }
 
-        return missing;
+        return (missing, throwing);
     }
 
     // Section 5 on its own: a camera and a sampler that need none of the other sections.
