@@ -316,13 +316,13 @@ public static partial class GradeJob
                 return;
             }
 
-            CheckRunVerdict verdict = JudgeCheckRun(File.Exists(trx), row.Checks.Count, stopped.Count, hang, attempt);
+            CheckRunVerdict verdict = JudgeCheckRun(File.Exists(trx), row.Checks.Count, stopped.Count, hang, attempt, () => FirstErrors(test.Output, lab));
             if (verdict.Problem is not null)
             {
                 row.Problems.Add(verdict.Problem);
             }
 
-            row.Detail ??= verdict.ShowFirstErrors ? FirstErrors(test.Output, lab) : verdict.Detail;
+            row.Detail ??= verdict.Detail;
 
             if (!verdict.RunAgain)
             {
@@ -345,27 +345,28 @@ public static partial class GradeJob
     /// <param name="stopped">The checks this run left unfinished (the blame data's sequence files).</param>
     /// <param name="hang">Whether the run was stopped for inactivity (<c>--blame-hang-timeout</c>), not by a crash.</param>
     /// <param name="attempt">This run's number, from 1.</param>
-    public static CheckRunVerdict JudgeCheckRun(bool trxWritten, int checksRecorded, int stopped, bool hang, int attempt)
+    /// <param name="firstErrors">The run's first error lines, read from its output when the verdict needs them.</param>
+    public static CheckRunVerdict JudgeCheckRun(bool trxWritten, int checksRecorded, int stopped, bool hang, int attempt, Func<string> firstErrors)
     {
+        ArgumentNullException.ThrowIfNull(firstErrors);
         if (stopped > 0 && attempt < MaxCheckRuns)
         {
-            return new CheckRunVerdict(true, hang ? "check time limit" : "checks crashed", null, false);
+            return new CheckRunVerdict(true, hang ? "check time limit" : "checks crashed", null);
         }
 
         if (!trxWritten)
         {
-            return new CheckRunVerdict(false, "checks did not run", null, true);
+            return new CheckRunVerdict(false, "checks did not run", firstErrors());
         }
 
         if (checksRecorded == 0)
         {
-            return hang
-                ? new CheckRunVerdict(false, "checks did not run",
-                    "the test run was stopped for inactivity before any check finished: give --check-timeout more room", false)
-                : new CheckRunVerdict(false, "checks did not run", null, true);
+            return new CheckRunVerdict(false, "checks did not run", hang
+                ? "the test run was stopped for inactivity before any check finished: give --check-timeout more room"
+                : firstErrors());
         }
 
-        return new CheckRunVerdict(false, null, null, false);
+        return new CheckRunVerdict(false, null, null);
     }
 
     /// <summary>
@@ -697,5 +698,4 @@ internal sealed record PictureScore(double Rmse, double Flip, string? Problem);
 /// <param name="RunAgain">Whether the checks run again, without those that stopped this run.</param>
 /// <param name="Problem">The row's problem, or null for none.</param>
 /// <param name="Detail">The row's detail, or null for none.</param>
-/// <param name="ShowFirstErrors">Whether the row's detail is the run's first error lines, read from its output.</param>
-public readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail, bool ShowFirstErrors);
+public readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail);

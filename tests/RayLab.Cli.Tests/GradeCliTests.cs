@@ -32,10 +32,13 @@ public sealed class GradeCliTests : IDisposable
     public void ACheckRunIsOkOnlyWithChecksAndRunsAgainWithoutTheOnesThatStoppedIt(
         bool trx, int checks, int stopped, bool hang, int attempt, bool again, string? problem, bool firstErrors)
     {
-        CheckRunVerdict verdict = GradeJob.JudgeCheckRun(trx, checks, stopped, hang, attempt);
+        const string errors = "error CS1002: ; expected";
+        int read = 0;
+        CheckRunVerdict verdict = GradeJob.JudgeCheckRun(trx, checks, stopped, hang, attempt, () => { read++; return errors; });
         Assert.Equal(again, verdict.RunAgain);
         Assert.Equal(problem, verdict.Problem);
-        Assert.Equal(firstErrors, verdict.ShowFirstErrors);
+        Assert.Equal(firstErrors ? 1 : 0, read); // the output is read only for the detail that shows it
+        Assert.Equal(firstErrors, verdict.Detail == errors);
         if (problem == "checks did not run" && hang)
         {
             Assert.Contains("--check-timeout", verdict.Detail, StringComparison.Ordinal);
