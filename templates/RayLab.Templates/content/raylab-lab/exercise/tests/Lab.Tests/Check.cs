@@ -52,7 +52,7 @@ internal static class Check
 
         if (task.Exception?.InnerException is { } wrapped)
         {
-            Exception e = YourCode.Unwrapped(wrapped);
+            Exception e = Unwrapped(wrapped);
             if (e is Xunit.Sdk.IAssertionException)
             {
                 System.Runtime.ExceptionServices.ExceptionDispatchInfo.Throw(e); // a check's own failure, as it is
@@ -64,7 +64,7 @@ internal static class Check
                 Assert.Fail(char.IsAsciiDigit(e.Message[0]) ? e.Message : T($"Jeszcze nie napisane: {e.Message}", $"Not written yet: {e.Message}"));
             }
 
-            string at = YourCode.Where(e);
+            string at = WhereInYourCode(e);
             string position = where();
             string context = position == "—" ? at : $"{at}; {position}";
             throw new Xunit.Sdk.XunitException(
@@ -74,6 +74,63 @@ internal static class Check
 
         output.WriteLine(F($"{T("czas", "time")}: {clock.Elapsed.TotalMilliseconds:F1} ms"));
         return clock.Elapsed;
+    }
+
+    /// <summary>The exception your code threw, out of the wrappers a loop puts around it (Parallel.For's AggregateException).</summary>
+    public static Exception Unwrapped(Exception e)
+    {
+        while (true)
+        {
+            switch (e)
+            {
+                case AggregateException { InnerExceptions.Count: > 0 } a:
+                    e = a.InnerExceptions[0];
+                    break;
+                case System.Reflection.TargetInvocationException { InnerException: { } inner }:
+                    e = inner;
+                    break;
+                default:
+                    return e;
+            }
+        }
+    }
+
+    /// <summary>
+    /// Where in your code (the project in src/Lab) <paramref name="e"/> was thrown: the first frame of its stack in
+    /// your assembly, as "src/Lab/File.cs:line, Class.Method". The checks keep their own copy of this (the program's is
+    /// in src/Lab/YourCode.cs): they compile against any lab's src/Lab.
+    /// </summary>
+    public static string WhereInYourCode(Exception e)
+    {
+        System.Reflection.Assembly yours = typeof(LabCamera).Assembly;
+        foreach (StackFrame frame in new StackTrace(e, fNeedFileInfo: true).GetFrames())
+        {
+            System.Reflection.MethodBase? method = frame.GetMethod();
+            if (method?.DeclaringType is not { } type || type.Assembly != yours)
+            {
+                continue;
+            }
+
+            while (type.Name.StartsWith('<') && type.DeclaringType is { } outer)
+            {
+                type = outer; // a lambda's or a local function's class: the class it is written in
+            }
+
+            string name = method.Name.StartsWith('<') ? method.Name[1..method.Name.IndexOf('>', StringComparison.Ordinal)]
+                : method.IsConstructor ? type.Name : method.Name;
+            string? file = frame.GetFileName();
+            if (file is null || frame.GetFileLineNumber() == 0)
+            {
+                return $"{type.Name}.{name}";
+            }
+
+            string path = file.Replace('\\', '/');
+            int lab = path.LastIndexOf("/src/Lab/", StringComparison.Ordinal);
+            path = lab >= 0 ? path[(lab + 1)..] : Path.GetFileName(path);
+            return F($"{path}:{frame.GetFileLineNumber()}, {type.Name}.{name}");
+        }
+
+        return T("poza Twoim kodem", "outside your code");
     }
 
     /// <summary>Runs <paramref name="work"/> with the time limit, with no position to report.</summary>

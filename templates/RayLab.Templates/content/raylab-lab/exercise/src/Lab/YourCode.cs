@@ -6,15 +6,13 @@ namespace MyLab;
 
 #if (en)
 /// <summary>
-/// Where in your code (the project in src/Lab) an exception was thrown: the first frame of its stack there, as
-/// "src/Lab/File.cs:line, Class.Method". One file for the checks' messages and the program's: it lives beside the
-/// checks, so they compile against any lab's src/Lab, and src/Lab/Lab.csproj compiles it in too.
+/// Where in your code an exception was thrown, for the program's messages: the first frame of its stack in this
+/// project, as "src/Lab/File.cs:line, Class.Method".
 /// </summary>
 #else
 /// <summary>
-/// Gdzie w Twoim kodzie (projekt w src/Lab) został rzucony wyjątek: pierwsza ramka jego stosu w tym projekcie, jako
-/// „src/Lab/Plik.cs:wiersz, Klasa.Metoda”. Jeden plik do komunikatów testów i programu: leży przy testach, więc one
-/// kompilują się z każdym src/Lab, a src/Lab/Lab.csproj też go dołącza.
+/// Gdzie w Twoim kodzie został rzucony wyjątek, do komunikatów programu: pierwsza ramka jego stosu w tym projekcie,
+/// jako „src/Lab/Plik.cs:wiersz, Klasa.Metoda”.
 /// </summary>
 #endif
 internal static class YourCode
@@ -45,10 +43,10 @@ internal static class YourCode
         return $"{thrown.GetType().Name}: {thrown.Message} ({Where(thrown)})";
     }
 
-    /// <summary>The first frame of the exception's stack in src/Lab's project, as "src/Lab/File.cs:line, Class.Method".</summary>
+    /// <summary>The first frame of the exception's stack in this project, as "src/Lab/File.cs:line, Class.Method".</summary>
     public static string Where(Exception e)
     {
-        Assembly yours = typeof(LabCamera).Assembly; // the lab's, in the checks as in the program
+        Assembly yours = typeof(YourCode).Assembly;
         foreach (StackFrame frame in new StackTrace(e, fNeedFileInfo: true).GetFrames())
         {
             MethodBase? method = frame.GetMethod();
