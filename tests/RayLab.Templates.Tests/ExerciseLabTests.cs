@@ -8,7 +8,7 @@ namespace RayLab.Templates.Tests;
 /// The exercise lab (<c>dotnet new raylab-lab</c>, <c>--kind exercise</c> by default): the skeletons build, every section's
 /// checks fail in the lab's words and <c>dotnet run</c> names the classes still to write, in each language; the
 /// reference solution (the instructor's template, <c>dotnet new raylab-lab-solution</c>) passes every check and writes the pictures; and five sabotages of the
-/// solution each fail their own section, and a sixth that throws is named by file and line. One restored solution lab serves all the sabotages
+/// solution each fail their own section, a sixth that throws is named by file and line, and an adaptive recursion without its depth limit stops with a message, not a stack overflow. One restored solution lab serves all the sabotages
 /// (edit, <c>dotnet test --no-restore</c>, put the file back).
 /// </summary>
 public sealed partial class LabTemplateTests
@@ -154,6 +154,32 @@ public sealed partial class LabTemplateTests
         Assert.Matches($@"(?m)^\s+rzuca wyjątek\s+2\.2\s.*IndexOutOfRangeException: .*\({Regex.Escape(at)}\)", listed);
         Assert.Matches(@"(?m)^\s+napisane\s+2\.1\s", listed);
         Assert.Contains("Sekcje, które rzucają wyjątek: 2.2", listed, StringComparison.Ordinal);
+
+        // An adaptive recursion without its depth limit: on an edge it splits for ever, and overflows the stack. The
+        // checks and check stop it at its first point past depth 3 and say so, with the place in the student's code;
+        // the program stops before it renders.
+        string adaptive = Path.Combine(lab, "src", "Lab", "LabAdaptiveSampler.cs");
+        string adaptiveSource = File.ReadAllText(adaptive);
+        const string limit = "if (depth < MaxDepth)";
+        Assert.Contains(limit, adaptiveSource, StringComparison.Ordinal);
+        File.WriteAllText(adaptive, adaptiveSource.Replace(limit, "if (depth >= 0)", StringComparison.Ordinal));
+        (int endlessExit, string endless) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-restore", "--filter", "Section=4.1.4");
+        (int endlessCheckExit, string endlessListed) = await feed.RunUncheckedAsync(lab, "dotnet", "run", "--no-build", "--project", Path.Combine("src", "Lab"), "--", "check");
+        (int endlessRunExit, string endlessRun) = await feed.RunUncheckedAsync(lab, "dotnet", "run", "--no-build", "--project", Path.Combine("src", "Lab"));
+        File.WriteAllText(adaptive, adaptiveSource);
+        foreach (string said in new[] { endless, endlessListed, endlessRun })
+        {
+            Assert.DoesNotContain("Stack overflow", said, StringComparison.OrdinalIgnoreCase);
+        }
+
+        Assert.True(endlessExit != 0, $"4.1.4 passed with no depth limit:\n{endless}");
+        Assert.Matches(@"Twój kod rzucił InvalidOperationException: punkt .* leży poza siatką co 1/16 piksela, więc w kwadracie głębszym niż 3: rekurencja nie zatrzymuje się na MaxDepth = 3 \(src/Lab/LabAdaptiveSampler\.cs:\d+, LabAdaptiveSampler\.", endless);
+        Assert.Equal(1, endlessCheckExit);
+        Assert.Matches(@"(?m)^\s+rzuca wyjątek\s+4\.1\.4\s.*InvalidOperationException: punkt \([\d.E-]+, [\d.E-]+\) leży poza siatką co 1/16 piksela, więc w kwadracie głębszym niż 3: rekurencja nie zatrzymuje się na MaxDepth = 3 \(src/Lab/LabAdaptiveSampler\.cs:\d+, LabAdaptiveSampler\.\w+\)", endlessListed);
+        Assert.Contains("Sekcje, które rzucają wyjątek: 4.1.4", endlessListed, StringComparison.Ordinal);
+        Assert.Equal(1, endlessRunExit);
+        Assert.Contains("Sekcje, które rzucają wyjątek: 4.1.4", endlessRun, StringComparison.Ordinal);
+        Assert.DoesNotContain("rozgrzewka", endlessRun, StringComparison.Ordinal); // no render began
     }
 
     /// <summary>

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using RayLab;
 
 namespace MyLab;
@@ -23,7 +24,7 @@ internal static class Progress
             ("4.1.1", () => _ = new LabRegularSampler(4).GetSamples(new Random(1))),
             ("4.1.2", () => _ = new LabRandomSampler(4).GetSamples(new Random(1))),
             ("4.1.3", () => _ = new LabJitteredSampler(4).GetSamples(new Random(1))),
-            ("4.1.4", () => _ = new LabAdaptiveSampler().Pixel((x, y) => new LightIntensity(x, y, 0))),
+            ("4.1.4", () => _ = new LabAdaptiveSampler().Pixel(Edge())),
             ("5", () => _ = LabRenderer.Render(scene, new ProbeCamera(), new ProbeSampler(), new LabImage(4, 3))),
         };
 
@@ -76,6 +77,41 @@ internal static class Progress
         }
 
         return (missing, throwing);
+    }
+
+    /// <summary>
+    /// 4.1.4's pixel: cut by a hard edge, which a recursion without its depth limit splits for ever. It throws an
+    /// exception that says so at the first point off the 1/16-pixel grid (a square deeper than the default MaxDepth
+    /// 3, whose squares have sides of 1/8 or more), past 1024 rays (depth 3 needs at most 81) or near the end of the
+    /// stack: before the squares are too small for a double to hold a new point, and such a recursion goes on
+    /// without tracing one until the stack overflows.
+    /// </summary>
+    private static Func<double, double, LightIntensity> Edge()
+    {
+        static bool OnGrid(double v) => Math.Abs((v * 16) - Math.Round(v * 16)) < 1e-9;
+        int rays = 0;
+        return (x, y) =>
+        {
+            if (!OnGrid(x) || !OnGrid(y))
+            {
+#if (en)
+                throw new InvalidOperationException(FormattableString.Invariant($"the point ({x:R}, {y:R}) is off the 1/16-pixel grid, so in a square deeper than 3: the recursion does not stop at MaxDepth = 3"));
+#else
+                throw new InvalidOperationException(FormattableString.Invariant($"punkt ({x:R}, {y:R}) leży poza siatką co 1/16 piksela, więc w kwadracie głębszym niż 3: rekurencja nie zatrzymuje się na MaxDepth = 3"));
+#endif
+            }
+
+            if (++rays > 1024 || !RuntimeHelpers.TryEnsureSufficientExecutionStack())
+            {
+#if (en)
+                throw new InvalidOperationException($"too many rays in one pixel ({rays}): the recursion does not stop at MaxDepth = 3");
+#else
+                throw new InvalidOperationException($"za dużo promieni w jednym pikselu ({rays}): rekurencja nie zatrzymuje się na MaxDepth = 3");
+#endif
+            }
+
+            return x + (2 * y) < 1.1 ? new LightIntensity(1) : new LightIntensity(0);
+        };
     }
 
     // Section 5 on its own: a camera and a sampler that need none of the other sections.

@@ -60,6 +60,11 @@ internal static class YourCode
                 type = outer; // a lambda's or a local function's class: the class it is written in
             }
 
+            if (type == typeof(Progress))
+            {
+                continue; // a probe's own function, which your code called: the place is your code's frame below it
+            }
+
             string name = method.Name.StartsWith('<') ? method.Name[1..method.Name.IndexOf('>', StringComparison.Ordinal)]
                 : method.IsConstructor ? type.Name : method.Name;
             string? file = frame.GetFileName();

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using RayLab;
 using RayLab.Rendering.Inspection;
 using RayLab.Sampling;
@@ -136,11 +137,21 @@ public sealed class SamplingChecks(ITestOutputHelper output)
                 int calls = 0;
                 LightIntensity value = sampler.Pixel((sx, sy) =>
                 {
-                    if (++calls > 4096)
+                    // A recursion that does not stop: an exception that says so at its first point past depth 3, before
+                    // the check's thread runs out of stack (within some 50 levels the squares are too small for a double
+                    // to hold a new point, and such a recursion goes on without tracing one).
+                    if (!OnDepth3Grid(sx) || !OnDepth3Grid(sy))
                     {
                         throw new InvalidOperationException(T(
-                            "ponad 4096 promieni w jednym pikselu: rekurencja nie zatrzymuje się na MaxDepth = 3",
-                            "over 4096 rays in one pixel: the recursion does not stop at MaxDepth = 3"));
+                            F($"punkt ({sx:R}, {sy:R}) leży poza siatką co 1/16 piksela, więc w kwadracie głębszym niż 3: rekurencja nie zatrzymuje się na MaxDepth = 3"),
+                            F($"the point ({sx:R}, {sy:R}) is off the 1/16-pixel grid, so in a square deeper than 3: the recursion does not stop at MaxDepth = 3")));
+                    }
+
+                    if (++calls > 1024 || !RuntimeHelpers.TryEnsureSufficientExecutionStack())
+                    {
+                        throw new InvalidOperationException(T(
+                            F($"za dużo promieni w jednym pikselu ({calls}): rekurencja nie zatrzymuje się na MaxDepth = 3"),
+                            F($"too many rays in one pixel ({calls}): the recursion does not stop at MaxDepth = 3")));
                     }
 
                     points.Add((sx, sy));
@@ -168,6 +179,12 @@ public sealed class SamplingChecks(ITestOutputHelper output)
     });
 
     private string _where = T("przed pierwszym pikselem", "before the first pixel");
+
+    /// <summary>
+    /// Whether a point's coordinate can belong to a square of depth 0–3: those have sides of 1/8 pixel or more, so
+    /// their corners and centres lie on the 1/16-pixel grid.
+    /// </summary>
+    private static bool OnDepth3Grid(double v) => Math.Abs((v * 16) - Math.Round(v * 16)) < 1e-9;
 
     private static void InPixel(string section, int pixel, double x, double y)
     {
