@@ -181,8 +181,10 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         await kit.NewLabAsync(submissions, "template", restore: false);
         string broken = await kit.NewLabAsync(submissions, "broken", restore: false);
         Edit(broken, "src/Lab/MyMethod.cs", "return sum / Points.Length;", "return sum / Points.Length");
+        // Its method never returns: an endless loop that sleeps, so that the minutes it runs do not take the CPU from the
+        // labs graded beside it.
         string hangs = await kit.NewLabAsync(submissions, "hangs", restore: false);
-        Edit(hangs, "src/Lab/MyMethod.cs", "Intensity sum = Intensity.Black;", "while (pixel.X >= 0) { Thread.SpinWait(1); }\n        Intensity sum = Intensity.Black;");
+        Edit(hangs, "src/Lab/MyMethod.cs", "Intensity sum = Intensity.Black;", "while (pixel.X >= 0) { Thread.Sleep(1000); }\n        Intensity sum = Intensity.Black;");
         // Its program keeps every 16 MB it allocates; its method asks for an array of 2 GB at a picture's first pixel
         // (at once, not bit by bit: checks that run side by side in one process and fill the heap together make the
         // collector work so hard near the limit that a check can reach its time limit first).
