@@ -1,3 +1,4 @@
+using System.Diagnostics;
 using System.Globalization;
 using System.Text.Json;
 using RayLab.Cli;
@@ -299,6 +300,154 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Assert.Equal("fail", Section(rows["rounded"], "2.2"));
         Assert.Equal("pass", Section(rows["rounded"], "2.1"));
         Assert.Equal("pass", Section(rows["rounded"], "3.2"));
+    }
+
+    [Fact]
+    public async Task CtrlCWhileTwoLabsAreGradedSideBySideStopsBothSandboxesAndWritesNoReport()
+    {
+        // Two labs whose builds never end by themselves: only Ctrl+C can stop them.
+        string submissions = Directory.CreateDirectory(Path.Combine(kit.Root, "interrupted-submissions")).FullName;
+        foreach (string name in (string[])["first", "second"])
+        {
+            string lab = await kit.NewLabAsync(submissions, name, restore: false);
+            Edit(lab, "src/Lab/Lab.csproj", "</Project>", "  <Target Name=\"NeverEnds\" BeforeTargets=\"CoreCompile\">\n    <Exec Command=\"sleep 100000\" />\n  </Target>\n</Project>");
+        }
+
+        string report = Path.Combine(kit.Root, "interrupted-report");
+        string[] workBefore = GradeWorkFolders();
+
+        // raylab grade as its own process, as a terminal runs it, so that SIGINT reaches it as Ctrl+C does.
+        var start = new ProcessStartInfo("dotnet") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+        foreach (string arg in (string[])[Path.Combine(AppContext.BaseDirectory, "raylab.dll"), "grade", submissions,
+            "--checks", Path.Combine(kit.Kit, "checks", "method"), "--out", report, "--jobs", "2"])
+        {
+            start.ArgumentList.Add(arg);
+        }
+
+        using Process grade = Process.Start(start)!;
+        Task<string> stdout = grade.StandardOutput.ReadToEndAsync(TestContext.Current.CancellationToken);
+        Task<string> stderr = grade.StandardError.ReadToEndAsync(TestContext.Current.CancellationToken);
+        int[] children;
+        try
+        {
+            // The gate: both labs' builds stuck in their sandboxes at once (two sleeps below raylab).
+            var guard = Stopwatch.StartNew();
+            while (Descendants(grade.Id).Count(p => Command(p) == "sleep") < 2)
+            {
+                Assert.False(grade.HasExited || guard.Elapsed > TimeSpan.FromMinutes(5),
+                    $"raylab grade never had both labs building at once:\n{(grade.HasExited ? await stdout + "\n" + await stderr : "")}");
+                await Task.Delay(50, TestContext.Current.CancellationToken);
+            }
+
+            children = Descendants(grade.Id);
+            Assert.Equal(0, kill(grade.Id, 2)); // SIGINT
+            using var exit = CancellationTokenSource.CreateLinkedTokenSource(TestContext.Current.CancellationToken);
+            exit.CancelAfter(TimeSpan.FromMinutes(2));
+            try
+            {
+                await grade.WaitForExitAsync(exit.Token);
+            }
+            catch (OperationCanceledException)
+            {
+                Assert.Fail("raylab grade was still running 2 minutes after Ctrl+C");
+            }
+        }
+        finally
+        {
+            if (!grade.HasExited)
+            {
+                grade.Kill(entireProcessTree: true);
+            }
+        }
+
+        // Cancelled: the exit code a shell gives Ctrl+C, one line, no report, no process of either sandbox left, and
+        // the grader's temporary folder gone.
+        string said = await stderr;
+        Assert.True(grade.ExitCode == Program.CancelledExitCode, $"raylab grade exited {grade.ExitCode}:\n{await stdout}\n{said}");
+        Assert.Equal("raylab: grading cancelled; no report written", said.Trim());
+        Assert.False(File.Exists(Path.Combine(report, "index.html")) || File.Exists(Path.Combine(report, "grades.json")), "a report was written");
+        int[] alive = [.. children.Where(Alive)];
+        Assert.True(alive.Length == 0, $"still running after raylab grade ended: {string.Join("; ", alive.Select(p => $"{p} {Command(p)}"))}");
+        Assert.Equal(workBefore, GradeWorkFolders());
+    }
+
+    [System.Runtime.InteropServices.DllImport("libc", SetLastError = true)]
+#pragma warning disable SA1300, CA5392 // libc's own name; libc is found by the loader's usual search
+    private static extern int kill(int pid, int signal);
+#pragma warning restore SA1300, CA5392
+
+    /// <summary>The grader's temporary folders (raylab-grade-*) in the machine's temporary folder.</summary>
+    private static string[] GradeWorkFolders() => [.. Directory.GetDirectories(Path.GetTempPath(), "raylab-grade-*").Order(StringComparer.Ordinal)];
+
+    /// <summary>Every process below <paramref name="root"/>, from the parent ids in /proc/PID/stat.</summary>
+    private static int[] Descendants(int root)
+    {
+        var children = new Dictionary<int, List<int>>();
+        foreach (string folder in Directory.GetDirectories("/proc"))
+        {
+            if (!int.TryParse(Path.GetFileName(folder), CultureInfo.InvariantCulture, out int pid))
+            {
+                continue;
+            }
+
+            try
+            {
+                string stat = File.ReadAllText(Path.Combine(folder, "stat"));
+                // "pid (comm) state ppid …": the command may hold spaces and parentheses, so read after the last ')'.
+                string[] rest = stat[(stat.LastIndexOf(')') + 2)..].Split(' ');
+                int parent = int.Parse(rest[1], CultureInfo.InvariantCulture);
+                if (!children.TryGetValue(parent, out List<int>? list))
+                {
+                    children[parent] = list = [];
+                }
+
+                list.Add(pid);
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                // the process ended while it was read
+            }
+        }
+
+        var found = new List<int>();
+        var next = new Queue<int>([root]);
+        while (next.TryDequeue(out int pid))
+        {
+            foreach (int child in children.GetValueOrDefault(pid) ?? [])
+            {
+                found.Add(child);
+                next.Enqueue(child);
+            }
+        }
+
+        return [.. found];
+    }
+
+    /// <summary>A process's command name (/proc/PID/comm), or "" once it has ended.</summary>
+    private static string Command(int pid)
+    {
+        try
+        {
+            return File.ReadAllText($"/proc/{pid}/comm").Trim();
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return "";
+        }
+    }
+
+    /// <summary>Whether a process still runs: it is in /proc and not a zombie waiting for its parent.</summary>
+    private static bool Alive(int pid)
+    {
+        try
+        {
+            string stat = File.ReadAllText($"/proc/{pid}/stat");
+            return stat[stat.LastIndexOf(')')..] is not [_, _, 'Z', ..];
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return false;
+        }
     }
 
     /// <summary>
