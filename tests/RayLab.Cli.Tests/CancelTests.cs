@@ -52,7 +52,7 @@ public sealed class CancelTests : IDisposable
         Assert.SkipWhen(OperatingSystem.IsWindows(), "sends SIGINT with kill");
         // The scalar kernel at 4000×3000 and 64 samples: about a minute of CPU, stopped within a row. --guard does not
         // apply to random: the one-line note saying so is the gate.
-        using Process child = ConsoleRunner.StartChild(_dir, "render", Scene, "-o", "big.png", "--width", "4000", "--height", "3000",
+        using Process child = ConsoleChild.Start(_dir, "render", Scene, "-o", "big.png", "--width", "4000", "--height", "3000",
             "--sampler", "random", "--samples", "64", "--kernel", "scalar", "--threads", "2", "--guard");
         using var _ = EndOnFailure(child);
         Task<string> stdout = child.StandardOutput.ReadToEndAsync(TestContext.Current.CancellationToken);
@@ -64,7 +64,7 @@ public sealed class CancelTests : IDisposable
         Assert.Equal("raylab: note: --guard applies to the adaptive sampler only, not random (ignored)", note);
         Task<string> stderr = child.StandardError.ReadToEndAsync(TestContext.Current.CancellationToken);
 
-        await InterruptAndWait(child);
+        await ConsoleChild.InterruptAndWaitAsync(child, TimeSpan.FromMinutes(3));
 
         Assert.Equal("raylab: cancelled; big.png not written", (await stderr).TrimEnd());
         Assert.Equal(130, child.ExitCode);
@@ -77,7 +77,7 @@ public sealed class CancelTests : IDisposable
     {
         Assert.SkipWhen(OperatingSystem.IsWindows(), "sends SIGINT with kill");
         // After the exact image, random at 4096 samples per pixel on 1600×1200: minutes of work, stopped within a row.
-        using Process child = ConsoleRunner.StartChild(_dir, "compare", Scene, "--out", "report", "--samplers", "random", "--budgets", "4096",
+        using Process child = ConsoleChild.Start(_dir, "compare", Scene, "--out", "report", "--samplers", "random", "--budgets", "4096",
             "--repeats", "1", "--width", "1600", "--height", "1200", "--threads", "2");
         using var _ = EndOnFailure(child);
         Task<string> stderr = child.StandardError.ReadToEndAsync(TestContext.Current.CancellationToken);
@@ -87,29 +87,12 @@ public sealed class CancelTests : IDisposable
         Assert.StartsWith("[1/2] exact image: ", line, StringComparison.Ordinal);
         Task<string> rest = child.StandardOutput.ReadToEndAsync(TestContext.Current.CancellationToken);
 
-        await InterruptAndWait(child);
+        await ConsoleChild.InterruptAndWaitAsync(child, TimeSpan.FromMinutes(3));
 
         Assert.Equal("raylab: cancelled; no report written to report", (await stderr).TrimEnd());
         Assert.Equal(130, child.ExitCode);
         Assert.Equal("", await rest);
         Assert.Empty(Directory.EnumerateFileSystemEntries(_dir)); // no report folder, no staging folder
-    }
-
-    private static async Task InterruptAndWait(Process child)
-    {
-        Assert.False(child.HasExited, "the child ended before it could be interrupted");
-        await ConsoleRunner.InterruptAsync(child);
-        // A generous bound for a child that ignores the signal, so that a failure ends the test rather than hangs it.
-        using var bound = CancellationTokenSource.CreateLinkedTokenSource(TestContext.Current.CancellationToken);
-        bound.CancelAfter(TimeSpan.FromMinutes(3));
-        try
-        {
-            await child.WaitForExitAsync(bound.Token);
-        }
-        catch (OperationCanceledException)
-        {
-            Assert.Fail("the child did not stop after SIGINT");
-        }
     }
 
     // A failed assertion must not leave a child rendering for minutes.

@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using System.Text;
 
 namespace RayLab.Cli.Tests;
 
@@ -21,57 +20,10 @@ internal static class ConsoleRunner
     public static async Task<(int Code, string Out, string Err)> RunChildAsync(string workingDirectory, params string[] args)
     {
         CancellationToken cancel = TestContext.Current.CancellationToken;
-        using Process process = StartChild(workingDirectory, args);
+        using Process process = ConsoleChild.Start(workingDirectory, args);
         Task<string> stdout = process.StandardOutput.ReadToEndAsync(cancel);
         Task<string> stderr = process.StandardError.ReadToEndAsync(cancel);
         await process.WaitForExitAsync(cancel);
         return (process.ExitCode, await stdout, await stderr);
-    }
-
-    /// <summary>
-    /// Starts the built app as a child process, as <see cref="RunChildAsync"/> does, and returns it running with its
-    /// output redirected and unread: the caller reads it (and must, or a full pipe stalls the child) and waits.
-    /// </summary>
-    public static Process StartChild(string workingDirectory, params string[] args)
-    {
-        string app = Path.Combine(AppContext.BaseDirectory, "raylab.dll");
-        Assert.True(File.Exists(app), $"{app} is missing");
-        var start = new ProcessStartInfo(DotnetHost())
-        {
-            WorkingDirectory = workingDirectory,
-            UseShellExecute = false,
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            StandardOutputEncoding = Encoding.UTF8,
-            StandardErrorEncoding = Encoding.UTF8,
-        };
-        start.ArgumentList.Add(app);
-        foreach (string arg in args)
-        {
-            start.ArgumentList.Add(arg);
-        }
-
-        return Process.Start(start) ?? throw new InvalidOperationException("could not start dotnet");
-    }
-
-    /// <summary>Sends SIGINT (what Ctrl+C sends) to <paramref name="process"/> with the system's <c>kill</c>.</summary>
-    public static async Task InterruptAsync(Process process)
-    {
-        using Process kill = Process.Start(new ProcessStartInfo("kill", ["-INT", process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]) { UseShellExecute = false })
-            ?? throw new InvalidOperationException("could not start kill");
-        await kill.WaitForExitAsync(TestContext.Current.CancellationToken);
-        Assert.Equal(0, kill.ExitCode);
-    }
-
-    /// <summary>The dotnet host running these tests (so the child uses the same runtime), else dotnet on the PATH.</summary>
-    private static string DotnetHost()
-    {
-        if (Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") is { Length: > 0 } host && File.Exists(host))
-        {
-            return host;
-        }
-
-        string? current = Environment.ProcessPath;
-        return current is not null && Path.GetFileNameWithoutExtension(current) == "dotnet" ? current : "dotnet";
     }
 }

@@ -317,14 +317,7 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         string[] workBefore = GradeWorkFolders();
 
         // raylab grade as its own process, as a terminal runs it, so that SIGINT reaches it as Ctrl+C does.
-        var start = new ProcessStartInfo("dotnet") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
-        foreach (string arg in (string[])[Path.Combine(AppContext.BaseDirectory, "raylab.dll"), "grade", submissions,
-            "--checks", Path.Combine(kit.Kit, "checks", "method"), "--out", report, "--jobs", "2"])
-        {
-            start.ArgumentList.Add(arg);
-        }
-
-        using Process grade = Process.Start(start)!;
+        using Process grade = ConsoleChild.Start(kit.Root, "grade", submissions, "--checks", Path.Combine(kit.Kit, "checks", "method"), "--out", report, "--jobs", "2");
         Task<string> stdout = grade.StandardOutput.ReadToEndAsync(TestContext.Current.CancellationToken);
         Task<string> stderr = grade.StandardError.ReadToEndAsync(TestContext.Current.CancellationToken);
         int[] children;
@@ -340,17 +333,7 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
             }
 
             children = Descendants(grade.Id);
-            Assert.Equal(0, kill(grade.Id, 2)); // SIGINT
-            using var exit = CancellationTokenSource.CreateLinkedTokenSource(TestContext.Current.CancellationToken);
-            exit.CancelAfter(TimeSpan.FromMinutes(2));
-            try
-            {
-                await grade.WaitForExitAsync(exit.Token);
-            }
-            catch (OperationCanceledException)
-            {
-                Assert.Fail("raylab grade was still running 2 minutes after Ctrl+C");
-            }
+            await ConsoleChild.InterruptAndWaitAsync(grade, TimeSpan.FromMinutes(2));
         }
         finally
         {
@@ -370,11 +353,6 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Assert.True(alive.Length == 0, $"still running after raylab grade ended: {string.Join("; ", alive.Select(p => $"{p} {Command(p)}"))}");
         Assert.Equal(workBefore, GradeWorkFolders());
     }
-
-    [System.Runtime.InteropServices.DllImport("libc", SetLastError = true)]
-#pragma warning disable SA1300, CA5392 // libc's own name; libc is found by the loader's usual search
-    private static extern int kill(int pid, int signal);
-#pragma warning restore SA1300, CA5392
 
     /// <summary>The grader's temporary folders (raylab-grade-*) in the machine's temporary folder.</summary>
     private static string[] GradeWorkFolders() => [.. Directory.GetDirectories(Path.GetTempPath(), "raylab-grade-*").Order(StringComparer.Ordinal)];

@@ -1,0 +1,76 @@
+using System.Diagnostics;
+using System.Text;
+
+namespace RayLab.Tests.Shared;
+
+/// <summary>
+/// The built console app (raylab.dll beside the tests) as a child process, as a terminal runs it, and Ctrl+C sent to
+/// it: the CLI's cancellation tests and the grader's.
+/// </summary>
+internal static class ConsoleChild
+{
+    /// <summary>
+    /// Starts raylab.dll with <paramref name="args"/> in <paramref name="workingDirectory"/> and returns it running with
+    /// its output redirected and unread: the caller reads it (and must, or a full pipe stalls the child) and waits.
+    /// </summary>
+    public static Process Start(string workingDirectory, params string[] args)
+    {
+        string app = Path.Combine(AppContext.BaseDirectory, "raylab.dll");
+        Assert.True(File.Exists(app), $"{app} is missing");
+        var start = new ProcessStartInfo(DotnetHost())
+        {
+            WorkingDirectory = workingDirectory,
+            UseShellExecute = false,
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            StandardOutputEncoding = Encoding.UTF8,
+            StandardErrorEncoding = Encoding.UTF8,
+        };
+        start.ArgumentList.Add(app);
+        foreach (string arg in args)
+        {
+            start.ArgumentList.Add(arg);
+        }
+
+        return Process.Start(start) ?? throw new InvalidOperationException("could not start dotnet");
+    }
+
+    /// <summary>
+    /// Sends SIGINT (what Ctrl+C sends) to <paramref name="process"/> with the system's <c>kill</c> and waits for it to
+    /// end; fails the test if it is still running after <paramref name="bound"/> (a generous bound, so that a child
+    /// that ignores the signal ends the test rather than hangs it).
+    /// </summary>
+    public static async Task InterruptAndWaitAsync(Process process, TimeSpan bound)
+    {
+        Assert.False(process.HasExited, "the child ended before it could be interrupted");
+        using (Process kill = Process.Start(new ProcessStartInfo("kill", ["-INT", process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]) { UseShellExecute = false })
+            ?? throw new InvalidOperationException("could not start kill"))
+        {
+            await kill.WaitForExitAsync(TestContext.Current.CancellationToken);
+            Assert.Equal(0, kill.ExitCode);
+        }
+
+        using var limit = CancellationTokenSource.CreateLinkedTokenSource(TestContext.Current.CancellationToken);
+        limit.CancelAfter(bound);
+        try
+        {
+            await process.WaitForExitAsync(limit.Token);
+        }
+        catch (OperationCanceledException)
+        {
+            Assert.Fail($"the child was still running {bound.TotalMinutes:0.#} minutes after SIGINT");
+        }
+    }
+
+    /// <summary>The dotnet host running these tests (so the child uses the same runtime), else dotnet on the PATH.</summary>
+    private static string DotnetHost()
+    {
+        if (Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") is { Length: > 0 } host && File.Exists(host))
+        {
+            return host;
+        }
+
+        string? current = Environment.ProcessPath;
+        return current is not null && Path.GetFileNameWithoutExtension(current) == "dotnet" ? current : "dotnet";
+    }
+}
