@@ -54,7 +54,7 @@ public sealed class CancelTests : IDisposable
         // apply to random: the one-line note saying so is the gate.
         using Process child = ConsoleChild.Start(_dir, "render", Scene, "-o", "big.png", "--width", "4000", "--height", "3000",
             "--sampler", "random", "--samples", "64", "--kernel", "scalar", "--threads", "2", "--guard");
-        using var _ = EndOnFailure(child);
+        using var _ = ConsoleChild.EndOnFailure(child);
         Task<string> stdout = child.StandardOutput.ReadToEndAsync(TestContext.Current.CancellationToken);
 
         // Redirected, the render prints nothing until it ends, but the note comes first on stderr: after the child
@@ -79,7 +79,7 @@ public sealed class CancelTests : IDisposable
         // After the exact image, random at 4096 samples per pixel on 1600×1200: minutes of work, stopped within a row.
         using Process child = ConsoleChild.Start(_dir, "compare", Scene, "--out", "report", "--samplers", "random", "--budgets", "4096",
             "--repeats", "1", "--width", "1600", "--height", "1200", "--threads", "2");
-        using var _ = EndOnFailure(child);
+        using var _ = ConsoleChild.EndOnFailure(child);
         Task<string> stderr = child.StandardError.ReadToEndAsync(TestContext.Current.CancellationToken);
 
         // Redirected, compare prints a line per finished render: the first says the exact image is done.
@@ -93,19 +93,5 @@ public sealed class CancelTests : IDisposable
         Assert.Equal(130, child.ExitCode);
         Assert.Equal("", await rest);
         Assert.Empty(Directory.EnumerateFileSystemEntries(_dir)); // no report folder, no staging folder
-    }
-
-    // A failed assertion must not leave a child rendering for minutes.
-    private static Finally EndOnFailure(Process child) => new(() =>
-    {
-        if (!child.HasExited)
-        {
-            child.Kill(entireProcessTree: true);
-        }
-    });
-
-    private sealed class Finally(Action action) : IDisposable
-    {
-        public void Dispose() => action();
     }
 }

@@ -320,28 +320,19 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         using Process grade = ConsoleChild.Start(kit.Root, "grade", submissions, "--checks", Path.Combine(kit.Kit, "checks", "method"), "--out", report, "--jobs", "2");
         Task<string> stdout = grade.StandardOutput.ReadToEndAsync(TestContext.Current.CancellationToken);
         Task<string> stderr = grade.StandardError.ReadToEndAsync(TestContext.Current.CancellationToken);
-        int[] children;
-        try
-        {
-            // The gate: both labs' builds stuck in their sandboxes at once (two sleeps below raylab).
-            var guard = Stopwatch.StartNew();
-            while (Descendants(grade.Id).Count(p => Command(p) == "sleep") < 2)
-            {
-                Assert.False(grade.HasExited || guard.Elapsed > TimeSpan.FromMinutes(5),
-                    $"raylab grade never had both labs building at once:\n{(grade.HasExited ? await stdout + "\n" + await stderr : "")}");
-                await Task.Delay(50, TestContext.Current.CancellationToken);
-            }
+        using var _ = ConsoleChild.EndOnFailure(grade);
 
-            children = Descendants(grade.Id);
-            await ConsoleChild.InterruptAndWaitAsync(grade, TimeSpan.FromMinutes(2));
-        }
-        finally
+        // The gate: both labs' builds stuck in their sandboxes at once (two sleeps below raylab).
+        var guard = Stopwatch.StartNew();
+        while (Descendants(grade.Id).Count(p => Command(p) == "sleep") < 2)
         {
-            if (!grade.HasExited)
-            {
-                grade.Kill(entireProcessTree: true);
-            }
+            Assert.False(grade.HasExited || guard.Elapsed > TimeSpan.FromMinutes(5),
+                $"raylab grade never had both labs building at once:\n{(grade.HasExited ? await stdout + "\n" + await stderr : "")}");
+            await Task.Delay(50, TestContext.Current.CancellationToken);
         }
+
+        int[] children = Descendants(grade.Id);
+        await ConsoleChild.InterruptAndWaitAsync(grade, TimeSpan.FromMinutes(2));
 
         // Cancelled: the exit code a shell gives Ctrl+C, one line, no report, no process of either sandbox left, and
         // the grader's temporary folder gone.

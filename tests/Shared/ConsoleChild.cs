@@ -62,6 +62,18 @@ internal static class ConsoleChild
         }
     }
 
+    /// <summary>
+    /// Kills <paramref name="child"/> and its process tree when disposed if it still runs: a failed assertion must not
+    /// leave a child working for minutes.
+    /// </summary>
+    public static IDisposable EndOnFailure(Process child) => new Finally(() =>
+    {
+        if (!child.HasExited)
+        {
+            child.Kill(entireProcessTree: true);
+        }
+    });
+
     /// <summary>The dotnet host running these tests (so the child uses the same runtime), else dotnet on the PATH.</summary>
     private static string DotnetHost()
     {
@@ -72,5 +84,10 @@ internal static class ConsoleChild
 
         string? current = Environment.ProcessPath;
         return current is not null && Path.GetFileNameWithoutExtension(current) == "dotnet" ? current : "dotnet";
+    }
+
+    private sealed class Finally(Action action) : IDisposable
+    {
+        public void Dispose() => action();
     }
 }

@@ -99,8 +99,7 @@ internal static class Check
     /// Where in your code (the project in src/Lab) <paramref name="e"/> was thrown: the first frame of its stack in
     /// your assembly, as "src/Lab/File.cs:line, Class.Method". The checks keep their own copy of this (the program's is
     /// in src/Lab/YourCode.cs): they compile against any lab's src/Lab, and raylab grade builds them in the kit's
-    /// namespace beside a student's lab in another, so one file cannot serve both (a linked file broke the grading of
-    /// exercise labs: ClassKitTests).
+    /// namespace beside a student's lab in another, so one file cannot serve both.
     /// </summary>
     public static string WhereInYourCode(Exception e)
     {

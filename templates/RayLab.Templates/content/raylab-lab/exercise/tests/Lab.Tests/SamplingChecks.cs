@@ -182,7 +182,8 @@ public sealed class SamplingChecks(ITestOutputHelper output)
 
     /// <summary>
     /// Whether a point's coordinate can belong to a square of depth 0–3: those have sides of 1/8 pixel or more, so
-    /// their corners and centres lie on the 1/16-pixel grid.
+    /// their corners and centres lie on the 1/16-pixel grid. check's probe (src/Lab/Progress.cs) keeps its own copy of
+    /// this guard, for the reason <see cref="Check.WhereInYourCode"/> gives.
     /// </summary>
     private static bool OnDepth3Grid(double v) => Math.Abs((v * 16) - Math.Round(v * 16)) < 1e-9;
 
