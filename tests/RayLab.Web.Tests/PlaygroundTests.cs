@@ -9,28 +9,33 @@ using RayLab.Scenes;
 namespace RayLab.Web.Tests;
 
 /// <summary>
-/// The playground in Debian's headless Chromium. Each test opens a fresh browser context (a cold cache), waits on the
-/// page's gates (#lab's data-state and data-frame), never on a clock, and fails on any console error.
+/// The playground in Debian's headless Chromium. One browser serves every test (<see cref="BrowserTest"/> launches it
+/// once and closes each test's contexts after it); each page opens in a fresh browser context (a cold cache), waits on
+/// the page's gates (#lab's data-state and data-frame), never on a clock, and fails on any console error.
 /// </summary>
-public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) : PlaywrightTest, IClassFixture<StaticSite>
+public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) : BrowserTest, IClassFixture<StaticSite>
 {
     private static readonly string Chromium = Environment.GetEnvironmentVariable("CHROMIUM") is { Length: > 0 } c ? c : "/usr/bin/chromium";
 
     /// <summary>A page with its console errors collected.</summary>
-    private sealed record Session(IBrowser Browser, IPage Page, List<string> Errors) : IAsyncDisposable
+    private sealed record Session(IBrowserContext Context, IPage Page, List<string> Errors) : IAsyncDisposable
     {
-        public async ValueTask DisposeAsync() => await Browser.DisposeAsync();
+        public async ValueTask DisposeAsync() => await Context.CloseAsync();
     }
+
+    /// <summary>
+    /// Debian's Chromium, headless, for the one browser of the run. Without the omnibox popup: headless Chromium builds
+    /// that browser UI (a WebUI renderer, 2.9 s of main-thread work in a trace) for each new window, on the same 2 cores
+    /// as the page; a user's browser has it built long before.
+    /// </summary>
+    public override Task<BrowserTypeLaunchOptions?> LaunchOptionsAsync() => Task.FromResult<BrowserTypeLaunchOptions?>(new()
+    {
+        ExecutablePath = Chromium, Headless = true, Args = ["--no-sandbox", "--disable-features=PreloadTopChromeWebUI,WebUIOmniboxPopup"],
+    });
 
     private async Task<Session> OpenAsync(string query = "", string? locale = null)
     {
-        // Without the omnibox popup: headless Chromium builds that browser UI (a WebUI renderer, 2.9 s of main-thread work
-        // in a trace) for each new window, on the same 2 cores as the page; a user's browser has it built long before.
-        IBrowser browser = await BrowserType.LaunchAsync(new()
-        {
-            ExecutablePath = Chromium, Headless = true, Args = ["--no-sandbox", "--disable-features=PreloadTopChromeWebUI,WebUIOmniboxPopup"],
-        });
-        IBrowserContext context = await browser.NewContextAsync(new() { ViewportSize = new() { Width = 1400, Height = 1000 }, Locale = locale });
+        IBrowserContext context = await NewContext(new() { ViewportSize = new() { Width = 1400, Height = 1000 }, Locale = locale });
         // Long tasks (50 ms or more on the main thread, Chromium's measure of blocked input), kept for the figures.
         await context.AddInitScriptAsync(
             "window.longTasks = []; new PerformanceObserver(l => { for (const e of l.getEntries()) window.longTasks.push([e.startTime, e.duration]); }).observe({ type: 'longtask', buffered: true });");
@@ -46,7 +51,7 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         page.PageError += (_, e) => errors.Add(e);
         await page.GotoAsync(site.Address + query);
         await WaitForFrame(page, 1);
-        return new Session(browser, page, errors);
+        return new Session(context, page, errors);
     }
 
     /// <summary>Waits until the page has finished <paramref name="frame"/> full renders and is ready.</summary>
@@ -408,8 +413,9 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
     public async Task Timings_are_printed_as_figures()
     {
         var lines = new List<string> { site.PublishNote, $"site: {site.BrotliBytes() / 1e6:0.00} MB with brotli (each file's .br copy, else the file)" };
-        // A page opened and closed first, so that the test's own start (Playwright's driver, the local server, the JIT of
-        // both) does not share the 2 cores with the measured page; every session is a new browser, with an empty cache.
+        // A page opened and closed first, so that the test's own start (Playwright's driver, the browser, the local server,
+        // the JIT of them) does not share the 2 cores with the measured page; every session is a new browser context,
+        // with an empty cache.
         await (await OpenAsync("?scene=two-spheres&m=exact")).DisposeAsync();
         await using (Session cold = await OpenAsync())
         {
