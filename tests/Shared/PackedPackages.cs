@@ -136,11 +136,15 @@ internal static class PackedPackages
     {
         string console = Path.Combine(RepoPaths.Root(), "samples", "RayLab.Console", "RayLab.Console.csproj");
         await PackAsync(console, folder, artifacts);
-        await PackAsync(console, folder, artifacts, "-r", "any");
+        // The native package before the JIT one: `dotnet pack -r any` writes the linux-x64 IL assembly again, which
+        // makes the native compiler's output of an earlier `dotnet publish -r linux-x64` (CI's native step, the same
+        // x86-64-v3 build the package carries) out of date, and the pack would compile it once more (42 s of CPU).
         if (NativeToolHere)
         {
             await PackAsync(console, folder, artifacts, "-r", "linux-x64");
         }
+
+        await PackAsync(console, folder, artifacts, "-r", "any");
 
         string version = VersionOf(folder, "RayLab.Tool.any");
         AssertAll(folder, version, NativeToolHere
