@@ -135,15 +135,16 @@ internal static class PackedPackages
     private static async Task<string> PackToolAsync(string folder, string? artifacts)
     {
         string console = Path.Combine(RepoPaths.Root(), "samples", "RayLab.Console", "RayLab.Console.csproj");
-        await PackAsync(console, folder, artifacts);
-        // The native package before the JIT one: `dotnet pack -r any` writes the linux-x64 IL assembly again, which
-        // makes the native compiler's output of an earlier `dotnet publish -r linux-x64` (CI's native step, the same
-        // x86-64-v3 build the package carries) out of date, and the pack would compile it once more (42 s of CPU).
+        // The native package first: the packs share the project's restore output, which each rewrites for its own
+        // runtime identifiers, and a pack after one for another identifier compiles the linux-x64 assembly again. First,
+        // it restores as `dotnet publish -r linux-x64` did (CI's native step), and takes that publish's native code (the
+        // x86-64-v3 build it carries) as up to date instead of compiling it once more (42 s of CPU).
         if (NativeToolHere)
         {
             await PackAsync(console, folder, artifacts, "-r", "linux-x64");
         }
 
+        await PackAsync(console, folder, artifacts);
         await PackAsync(console, folder, artifacts, "-r", "any");
 
         string version = VersionOf(folder, "RayLab.Tool.any");
