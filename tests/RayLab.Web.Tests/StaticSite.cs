@@ -29,6 +29,7 @@ public sealed class StaticSite : IAsyncLifetime
 
     private HttpListener? _listener;
     private Task? _serving;
+    private string? _published;
 
     /// <summary>The published folder's wwwroot.</summary>
     public string Root { get; private set; } = "";
@@ -66,6 +67,7 @@ public sealed class StaticSite : IAsyncLifetime
         else
         {
             site = Path.Combine(Path.GetTempPath(), "raylab-web-" + Guid.NewGuid().ToString("N")[..8]);
+            _published = site;
             var clock = Stopwatch.StartNew();
             await Publish(site);
             PublishNote = $"dotnet publish samples/RayLab.Web -c Release -o {site}: {clock.Elapsed.TotalSeconds:0} s";
@@ -170,6 +172,12 @@ public sealed class StaticSite : IAsyncLifetime
         if (_serving is not null)
         {
             await _serving;
+        }
+
+        // The folder this fixture published into is its own; a site given by RAYLAB_WEB_SITE is left alone.
+        if (_published is not null && Directory.Exists(_published))
+        {
+            Directory.Delete(_published, recursive: true);
         }
     }
 }
