@@ -10,8 +10,8 @@ namespace MyLab;
 #else
 /// <summary>
 /// 4.1 Metody próbkowania: punkty jednego piksela, (x, y) w kwadracie jednostkowym [0, 1) × [0, 1), x w prawo, y w
-/// dół od lewego górnego rogu piksela. Pętla renderowania (<see cref="LabRenderer"/>) wysyła przez każdy promień i
-/// bierze średnią. Generator losowy daje pętla, jeden na wiersz (to samo ziarno daje ten sam obraz).
+/// dół od lewego górnego rogu piksela. Pętla renderowania (<see cref="LabRenderer"/>) wysyła promień przez każdy z
+/// nich i bierze średnią. Generator losowy daje pętla, jeden na wiersz (to samo ziarno daje ten sam obraz).
 /// </summary>
 #endif
 public interface ILabSampler

@@ -67,7 +67,13 @@ internal static class Progress
             {
                 missing++;
                 string own = ToWrite.Section(id, "").Message;
-                string detail = problem.StartsWith(own, StringComparison.Ordinal) ? problem[own.Length..] : problem;
+                // Another section's NotImplementedException (section 5's probe needs LabImage and LightIntensity): this
+                // section waits for that one, which the line says, rather than look unwritten itself.
+#if (en)
+                string detail = problem.StartsWith(own, StringComparison.Ordinal) ? problem[own.Length..] : $"needs first: {problem}";
+#else
+                string detail = problem.StartsWith(own, StringComparison.Ordinal) ? problem[own.Length..] : $"wymaga najpierw: {problem}";
+#endif
 #if (en)
                 output.WriteLine($"  still to do   {id,-6} {title} ({classes}): {detail}");
 #else

@@ -67,7 +67,7 @@ public sealed class CameraChecks(ITestOutputHelper output)
         {
             double alpha = LabCamera.Alpha(x, sx, 800), beta = LabCamera.Beta(y, sy, 600);
             Assert.True(Math.Abs(alpha - plane.Alpha(x, sx)) < 1e-12, T(
-                F($"3 Kamera: piksel ({x}, {y}) z 800, punkt sx = {sx}: α = (x + sx)/nx = {plane.Alpha(x, sx):R} (środek piksela to x + 0.5, nie x), a Alpha dało {alpha:R}."),
+                F($"3 Kamera: piksel ({x}, {y}) z 800 kolumn, sx = {sx}: α = (x + sx)/nx = {plane.Alpha(x, sx):R} (środek piksela to x + 0.5, nie x), a Alpha dało {alpha:R}."),
                 F($"3 Camera: pixel ({x}, {y}) of 800, point sx = {sx}: α = (x + sx)/nx = {plane.Alpha(x, sx):R} (the pixel's centre is x + 0.5, not x), Alpha gave {alpha:R}.")));
             Assert.True(Math.Abs(beta - plane.Beta(y, sy)) < 1e-12, T(
                 F($"3 Kamera: piksel ({x}, {y}) z 600 wierszy, sy = {sy}: β = 1 − (y + sy)/ny = {plane.Beta(y, sy):R} (wiersz 0 na górze), a Beta dało {beta:R}."),

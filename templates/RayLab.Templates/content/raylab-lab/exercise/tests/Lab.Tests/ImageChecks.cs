@@ -13,7 +13,7 @@ public sealed class ImageChecks(ITestOutputHelper output)
     };
 
     [Trait("Section", "2.2")]
-    [Theory(DisplayName = English ? "2.2 Image: the 8-bit rule i = int(256·I), cut not rounded, 0 … 255" : "2.2 Obraz: reguła 8-bitowa i = int(256·I), obcięcie a nie zaokrąglenie, 0 … 255")]
+    [Theory(DisplayName = English ? "2.2 Image: the 8-bit rule i = int(256·I), cut not rounded, 0 … 255" : "2.2 Obraz: reguła 8-bitowa i = int(256·I), obcięcie, a nie zaokrąglenie, 0 … 255")]
     [MemberData(nameof(Edges))]
     public void EightBitRule(double intensity) => Run(output, () =>
     {

@@ -30,7 +30,7 @@ public sealed class SamplingChecks(ITestOutputHelper output)
                 if (Math.Abs(actual[i].X - expected[i].X) > 1e-12 || Math.Abs(actual[i].Y - expected[i].Y) > 1e-12)
                 {
                     Assert.Fail(T(
-                        F($"4.1.1 Próbkowanie regularne, n = {n} (siatka {Math.Sqrt(n)}×{Math.Sqrt(n)}), piksel {pixel}: punkt ({expected[i].X:F4}, {expected[i].Y:F4}) = ((i + 0.5)/k, (j + 0.5)/k) powinien być, a jest ({actual[i].X:F4}, {actual[i].Y:F4}). Twoje punkty: {got} …"),
+                        F($"4.1.1 Próbkowanie regularne, n = {n} (siatka {Math.Sqrt(n)}×{Math.Sqrt(n)}), piksel {pixel}: powinien być punkt ({expected[i].X:F4}, {expected[i].Y:F4}) = ((i + 0.5)/k, (j + 0.5)/k), a jest ({actual[i].X:F4}, {actual[i].Y:F4}). Twoje punkty: {got} …"),
                         F($"4.1.1 Regular sampling, n = {n} ({Math.Sqrt(n)}×{Math.Sqrt(n)} grid), pixel {pixel}: the point ({expected[i].X:F4}, {expected[i].Y:F4}) = ((i + 0.5)/k, (j + 0.5)/k) should be there, got ({actual[i].X:F4}, {actual[i].Y:F4}). Your points: {got} …")));
                 }
             }
@@ -67,7 +67,7 @@ public sealed class SamplingChecks(ITestOutputHelper output)
             $"4.1.2 Próbkowanie losowe: pierwszy punkt powtarza się między pikselami ({first.Count} różnych na {Pixels}): każdy piksel losuje nowe punkty.",
             $"4.1.2 Random sampling: the first point repeats between pixels ({first.Count} different in {Pixels}): every pixel draws new points."));
         Assert.True(chi2 < 37.7, T(
-            F($"4.1.2 Próbkowanie losowe: punkty nie są równomierne w pikselu. W 16 ćwiartkach ćwiartek jest {string.Join(", ", cells)} punktów (równo: {Pixels * n / 16}); χ² = {chi2:F1} > 37.7 (p = 0.001). RayLab: χ² = {oracle:F1}."),
+            F($"4.1.2 Próbkowanie losowe: punkty nie są równomierne w pikselu. W 16 komórkach siatki 4×4 jest {string.Join(", ", cells)} punktów (równo: {Pixels * n / 16}); χ² = {chi2:F1} > 37.7 (p = 0.001). RayLab: χ² = {oracle:F1}."),
             F($"4.1.2 Random sampling: the points are not uniform in the pixel. The 16 cells hold {string.Join(", ", cells)} points (uniform: {Pixels * n / 16}); χ² = {chi2:F1} > 37.7 (p = 0.001). RayLab: χ² = {oracle:F1}.")));
     });
 
@@ -109,7 +109,7 @@ public sealed class SamplingChecks(ITestOutputHelper output)
         double mean = offsets / count, variance = (squares / count) - (mean * mean);
         output.WriteLine(F($"{Pixels} {T("pikseli", "pixels")} × {n}: {T("po jednym punkcie w każdej komórce", "one point in each cell")}; {T("położenie w komórce", "place in the cell")}: {T("średnia", "mean")} {mean:F3} (0.5), {T("wariancja", "variance")} {variance:F4} (1/12 = 0.0833)"));
         Assert.True(Math.Abs(variance - (1.0 / 12)) < 0.01, T(
-            F($"4.1.3 Próbkowanie jittered: punkt w komórce nie jest losowy równomiernie — wariancja położenia w komórce {variance:F4}, a dla rand() to 1/12 = 0.0833 (0 znaczy: zawsze środek, jak w próbkowaniu regularnym)."),
+            F($"4.1.3 Próbkowanie jittered: punkt nie jest losowany równomiernie w komórce — wariancja położenia w komórce {variance:F4}, a dla rand() to 1/12 = 0.0833 (0 znaczy: zawsze środek, jak w próbkowaniu regularnym)."),
             F($"4.1.3 Jittered sampling: the point in a cell is not uniformly random — the variance of its place in the cell is {variance:F4}, for rand() it is 1/12 = 0.0833 (0 means: always the centre, as regular sampling).")));
     });
 
