@@ -189,4 +189,13 @@ fi
 
 cp "$repo/tools/class-kit/README.md" "$kit/README.md"
 sed -i "s/RAYLAB_KIT_VERSION/$version/g" "$kit/README.md"
+if [ $full = 0 ]; then
+  # The README describes the full kit; say what this one lacks, in both of its languages, under its title.
+  sed -i '1a\
+\
+> **Zestaw `--feed-only`:** bez `raylab-linux-x64/` i `playground/`, a w `feed/` nie ma `RayLab.Tool`; oceniaj z folderu\
+> repozytorium: `dotnet run --project samples/RayLab.Console -- grade …`. **A `--feed-only` kit:** no `raylab-linux-x64/`\
+> or `playground/`, and no `RayLab.Tool` in `feed/`; grade from the repository folder with\
+> `dotnet run --project samples/RayLab.Console -- grade …`.' "$kit/README.md"
+fi
 echo "$kit: RayLab $version, $(ls "$feed" | wc -l) packages in feed/ (hand out), instructor/ and checks: ${kinds[*]} (keep)$([ $full = 1 ] && echo ', raylab-linux-x64/, playground/')"
