@@ -24,7 +24,26 @@ public static class RenderJob
     /// <returns>The exit code.</returns>
     public static int RunDefault(TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
-        Directory.CreateDirectory("out");
+        int created = CommandExit.Run(
+            stderr,
+            () =>
+            {
+                if (File.Exists("out"))
+                {
+                    throw new UsageException($"out: '{Path.GetFullPath("out")}' is a file; the pictures go into a folder of that name");
+                }
+
+                Directory.CreateDirectory("out");
+                return CommandExit.Done;
+            },
+            cancelled: "nothing written",
+            tooLarge: "create the folder out",
+            cancellation);
+        if (created != CommandExit.Done)
+        {
+            return created;
+        }
+
         foreach (string camera in CameraSettings.Types.Reverse())
         {
             var request = new RenderRequest(DefaultScenePath, Path.Combine("out", $"two-spheres-{camera}.png"), Camera: camera,
@@ -141,18 +160,35 @@ public static class RenderJob
         // A request that came as the last row finished still stops the job; once writing starts, it completes.
         cancellation.ThrowIfCancellationRequested();
 
-        var encodeClock = Stopwatch.StartNew();
-        int quality = request.Quality ?? ImageFormats.DefaultQuality;
-        image.Save(request.OutputPath, quality);
-        double encodeMs = encodeClock.Elapsed.TotalMilliseconds;
-        if (raysPerPixel is not null)
+        // Every file is written or none: when the heat map or the stats cannot be written (a full disk, say), the
+        // files this run already wrote are removed, and the error names the option whose file failed.
+        var written = new List<string>();
+        double encodeMs;
+        try
         {
-            HeatMap.Render(raysPerPixel, image.Width, image.Height).Save(request.HeatmapPath!, quality);
-        }
+            var encodeClock = Stopwatch.StartNew();
+            int quality = request.Quality ?? ImageFormats.DefaultQuality;
+            WriteOutput(request.OutputPath, "--output", written, () => image.Save(request.OutputPath, quality));
+            encodeMs = encodeClock.Elapsed.TotalMilliseconds;
+            if (raysPerPixel is not null)
+            {
+                WriteOutput(request.HeatmapPath!, "--heatmap", written,
+                    () => HeatMap.Render(raysPerPixel, image.Width, image.Height).Save(request.HeatmapPath!, quality));
+            }
 
-        if (request.StatsPath is not null)
+            if (request.StatsPath is not null)
+            {
+                WriteOutput(request.StatsPath, "--stats", written, () => WriteStats(request, prepared, stats, commitMs, encodeMs, warmupMs));
+            }
+        }
+        catch
         {
-            WriteStats(request, prepared, stats, commitMs, encodeMs, warmupMs);
+            foreach (string path in written)
+            {
+                File.Delete(path);
+            }
+
+            throw;
         }
 
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
@@ -254,6 +290,33 @@ public static class RenderJob
         {
             throw new UsageException($"{option}: '{path}' is a folder, not a file");
         }
+
+        // Found now, not after the render: a folder this user cannot write in (read-only, or /proc).
+        string probe = Path.Combine(folder, $".raylab-probe.{Guid.NewGuid():N}.tmp");
+        try
+        {
+            using (new FileStream(probe, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1, FileOptions.DeleteOnClose))
+            {
+            }
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new UsageException($"{option}: cannot write in the folder '{folder}': {e.Message}");
+        }
+    }
+
+    private static void WriteOutput(string path, string option, List<string> written, Action write)
+    {
+        try
+        {
+            write();
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new UsageException($"{option}: cannot write '{path}': {e.Message}");
+        }
+
+        written.Add(path);
     }
 
     /// <summary>The kernel names the console accepts, as <see cref="RenderKernel"/> values in lower case.</summary>

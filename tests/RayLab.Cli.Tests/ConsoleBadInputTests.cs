@@ -56,6 +56,20 @@ public sealed class ConsoleBadInputTests : IDisposable
     }
 
     [Theory]
+    // A folder nobody can create files in (even root): found before the render, and no file is left, not even the
+    // picture when only the stats or the heat map cannot be written.
+    [InlineData("--output", "-o", "/proc/raylab-out.png")]
+    [InlineData("--stats", "--stats", "/proc/raylab-stats.json")]
+    [InlineData("--heatmap", "--heatmap", "/proc/raylab-heat.png")]
+    public void AnOutputFolderThatCannotBeWrittenIsOneLineNamingTheOptionAndLeavesNoFile(string option, params string[] options)
+    {
+        Assert.SkipUnless(OperatingSystem.IsLinux(), "/proc is Linux's");
+        string scene = WriteScene();
+        string[] output = options.Contains("-o") ? [] : ["-o", _dir.File("out.png")];
+        AssertFailsCleanly(1, $"raylab: error: {option}: ", "cannot write in the folder '/proc'", ["render", scene, .. output, .. options]);
+    }
+
+    [Theory]
     [InlineData("{dir}", "cannot read the file")]
     [InlineData("{dir}/a\0b.json", "cannot read the file")]
     [InlineData("{dir}/missing.json", "cannot read the file")]

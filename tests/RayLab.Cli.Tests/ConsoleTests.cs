@@ -340,6 +340,21 @@ public sealed class ConsoleTests : IDisposable
     }
 
     [Fact]
+    public async Task WithNoArgumentsAFileNamedOutIsOneLineAndExitOne()
+    {
+        File.WriteAllText(Path.Combine(_dir, "out"), "mine");
+
+        Result r = await RunChildAsync();
+
+        Assert.True(r.Code == 1, $"exit {r.Code}: {r.Err}");
+        Assert.Equal("", r.Out);
+        string line = Assert.Single(Lines(r.Err));
+        Assert.StartsWith("raylab: error: out: ", line, StringComparison.Ordinal);
+        Assert.Contains("is a file", line, StringComparison.Ordinal);
+        Assert.Equal("mine", File.ReadAllText(Path.Combine(_dir, "out")));
+    }
+
+    [Fact]
     public async Task TheAppReportsAnErrorAsOneLineAndANonZeroExitCode()
     {
         Result r = await RunChildAsync("render", "missing.json", "-o", "out.png");
