@@ -21,7 +21,7 @@ public static class CompareCommand
         var width = new Option<int?>("--width") { Description = "Override the image width, ≥ 1.", HelpName = "W" };
         var height = new Option<int?>("--height") { Description = "Override the image height, ≥ 1.", HelpName = "H" };
         var output = new Option<string>("--out") { Description = "The folder for the report (created, with its parents, if missing).", Required = true, HelpName = "DIR" };
-        var budgets = new Option<string>("--budgets") { Description = "Samples per pixel for the point samplers, comma-separated (grid samplers use the nearest square below).", DefaultValueFactory = _ => CompareRequest.DefaultBudgets };
+        var budgets = new Option<string>("--budgets") { Description = "Samples per pixel for the point samplers, 1 to 65536 each, comma-separated (grid samplers use the nearest square below).", DefaultValueFactory = _ => CompareRequest.DefaultBudgets };
         var repeats = new Option<int>("--repeats") { Description = "Renders per setting; the time is their median.", DefaultValueFactory = _ => 3, HelpName = "R" };
         var samplers = new Option<string?>("--samplers") { Description = "The samplers to compare, comma-separated (default: all).", HelpName = string.Join(',', ComparePlan.Compared) };
         var maxDepths = new Option<string>("--max-depths") { Description = "Adaptive: the maximum depths, comma-separated.", DefaultValueFactory = _ => CompareRequest.DefaultMaxDepths };

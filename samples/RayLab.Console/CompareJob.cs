@@ -63,8 +63,8 @@ public static class CompareJob
     {
         const NumberStyles Digits = NumberStyles.None;
         CultureInfo inv = CultureInfo.InvariantCulture;
-        int[] budgets = ParseList(r.Budgets, "--budgets", "a whole number ≥ 1",
-            s => (int.TryParse(s, Digits, inv, out int b) && b >= 1, b));
+        int[] budgets = ParseList(r.Budgets, "--budgets", $"a whole number from 1 to {SceneFile.MaxSamples}",
+            s => (int.TryParse(s, Digits, inv, out int b) && b is >= 1 and <= SceneFile.MaxSamples, b));
         int[] depths = ParseList(r.MaxDepths, "--max-depths", $"a whole number from 0 to {AdaptiveSampler.MaxSupportedDepth}",
             s => (int.TryParse(s, Digits, inv, out int d) && d <= AdaptiveSampler.MaxSupportedDepth, d));
         double[] contrasts = ParseList(r.Contrasts, "--contrasts", "a number ≥ 0",

@@ -128,10 +128,11 @@ public sealed partial class CompareTests : IDisposable
     }
 
     [Theory]
-    [InlineData("raylab: error: --budgets: '0' is not a whole number ≥ 1", "--budgets", "1,0")]
+    [InlineData("raylab: error: --budgets: '0' is not a whole number from 1 to 65536", "--budgets", "1,0")]
+    [InlineData("raylab: error: --budgets: '99999999' is not a whole number from 1 to 65536", "--budgets", "1,99999999")]
     [InlineData("raylab: error: --budgets: '4' appears twice", "--budgets", "4,16,4")]
     [InlineData("raylab: error: --budgets: an empty item in '1,,4'", "--budgets", "1,,4")]
-    [InlineData("raylab: error: --budgets: 'x' is not a whole number ≥ 1", "--budgets", "x")]
+    [InlineData("raylab: error: --budgets: 'x' is not a whole number from 1 to 65536", "--budgets", "x")]
     [InlineData("raylab: error: --max-depths: '11' is not a whole number from 0 to 10", "--max-depths", "2,11")]
     [InlineData("raylab: error: --contrasts: '-0.1' is not a number ≥ 0", "--contrasts", "-0.1")]
     [InlineData("raylab: error: --samplers: 'jitter' is not one of regular, random", "--samplers", "jitter")]
