@@ -28,16 +28,16 @@ public sealed record SceneDescription(
         SceneSection section = SceneSection.Image;
         try
         {
+            CheckRange(Width, SceneFile.MaxImageSide, "width");
+            CheckRange(Height, SceneFile.MaxImageSide, "height");
             Image.CheckSize(Width, Height);
-            CheckAtMost(Width, SceneFile.MaxImageSide, "width");
-            CheckAtMost(Height, SceneFile.MaxImageSide, "height");
             section = SceneSection.Camera;
             Camera camera = Camera.CreateCamera();
             ImagePlane plane = camera.GetImagePlane(Width, Height); // the camera's checks, and the plane every render of it uses
             section = SceneSection.Sampler;
             if (!Sampler.IsExact && !Sampler.IsAdaptive)
             {
-                CheckAtMost(Sampler.Samples, SceneFile.MaxSamples, "samples");
+                CheckRange(Sampler.Samples, SceneFile.MaxSamples, "samples");
             }
 
             RenderMethod method = Sampler.CreateMethod();
@@ -54,10 +54,11 @@ public sealed record SceneDescription(
         }
     }
 
-    // The scene file's own limits, for values an override set (the console's --width, --height, --samples).
-    private static void CheckAtMost(int value, int max, string name)
+    // The scene file's own limits, for values an override set (the console's --width, --height, --samples), with
+    // the reader's message at both ends (not ArgumentOutOfRangeException's "width ('0') must be greater than …").
+    private static void CheckRange(int value, int max, string name)
     {
-        if (value > max)
+        if (value < 1 || value > max)
         {
             throw new ArgumentOutOfRangeException(name, value, $"must be an integer from 1 to {max}, got {value}");
         }

@@ -461,6 +461,32 @@ public sealed class SceneFileTests : IDisposable
         Assert.Equal(SceneFile.MaxSamples, (scene with { Sampler = new SamplerSettings("random", SceneFile.MaxSamples, 0) }).Prepare().SamplesPerPixel);
     }
 
+    [Theory]
+    [InlineData(0, 30, "image.width", "must be an integer from 1 to 1048576, got 0")]
+    [InlineData(40, -3, "image.height", "must be an integer from 1 to 1048576, got -3")]
+    public void AnOverrideBelowOneGetsTheReadersMessage(int width, int height, string field, string problem)
+    {
+        // --width 0 said "width ('0') must be greater than or equal to '1'.", a .NET parameter's words.
+        SceneDescription scene = SceneFile.Parse(Base, Source);
+
+        SceneFileException e = Assert.Throws<SceneFileException>(() => (scene with { Width = width, Height = height }).Prepare());
+
+        Assert.Equal(field, e.Field);
+        Assert.Equal(problem, e.Problem);
+    }
+
+    [Fact]
+    public void ASampleCountBelowOneGetsTheReadersMessage()
+    {
+        // --samples 0 said "samplesPerPixel ('0') must be greater than or equal to '1'.", a constructor's parameter.
+        SceneDescription scene = SceneFile.Parse(Base, Source);
+
+        SceneFileException e = Assert.Throws<SceneFileException>(() => (scene with { Sampler = new SamplerSettings("random", 0, 0) }).Prepare());
+
+        Assert.Equal("sampler.samples", e.Field);
+        Assert.Equal("must be an integer from 1 to 65536, got 0", e.Problem);
+    }
+
     [Fact]
     public void APreparedOverrideIsReportedWithTheFieldItReplaced()
     {
