@@ -264,6 +264,65 @@ public static partial class GradeJob
     private static void RunChecks(GradeSetup setup, GradeSandbox sandbox, string lab, string log, StudentRow row, Func<TimeSpan> left, CancellationToken cancellation)
     {
         var excluded = new List<string>();
+        RunCheckRuns(setup, sandbox, lab, log, row, left, excluded, cancellation);
+        if (excluded.Count > 0)
+        {
+            ListLeftOut(sandbox, lab, log, row, left, excluded, cancellation);
+        }
+    }
+
+    /// <summary>
+    /// A run leaves out a stopped check's whole test method (a filter names methods, not a theory's cases), so the cases
+    /// of that method which had no result by then never ran: listed by the test platform, they count as not run, and
+    /// the row's checks add up to the lab's.
+    /// </summary>
+    private static void ListLeftOut(GradeSandbox sandbox, string lab, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
+    {
+        if (left() <= TimeSpan.Zero)
+        {
+            return;
+        }
+
+        ChildRun list = sandbox.Run(lab, log, Min(left(), TimeSpan.FromMinutes(1)), "dotnet",
+            ["test", Path.Combine("tests", "Lab.Tests"), "--no-build", "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}"))], cancellation);
+        cancellation.ThrowIfCancellationRequested();
+        if (list.TimedOut || list.ExitCode != 0)
+        {
+            return;
+        }
+
+        foreach (string display in ListedTests(list.Output))
+        {
+            row.Checks.TryAdd(display, "NotRun");
+        }
+    }
+
+    /// <summary>
+    /// The display names <c>dotnet test --list-tests</c> prints: the lines indented by four spaces after "The following
+    /// Tests are available:", among which the test adapter's own lines ("[xUnit.net …]") may fall.
+    /// </summary>
+    /// <param name="output">The command's output.</param>
+    /// <returns>The listed display names, in order.</returns>
+    public static IEnumerable<string> ListedTests(string output)
+    {
+        ArgumentNullException.ThrowIfNull(output);
+        bool listing = false;
+        foreach (string line in output.Split('\n'))
+        {
+            string text = line.TrimEnd('\r');
+            if (text.StartsWith("The following Tests are available:", StringComparison.Ordinal))
+            {
+                listing = true;
+            }
+            else if (listing && text.StartsWith("    ", StringComparison.Ordinal) && text.Trim().Length > 0)
+            {
+                yield return text[4..];
+            }
+        }
+    }
+
+    private static void RunCheckRuns(GradeSetup setup, GradeSandbox sandbox, string lab, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
+    {
         for (int attempt = 1; ; attempt++)
         {
             if (left() <= TimeSpan.Zero)
@@ -304,6 +363,7 @@ public static partial class GradeJob
             foreach ((string fullName, string display) in stopped)
             {
                 row.Checks[display] = hang ? "Timeout" : "Crashed";
+                row.Detail ??= $"{(hang ? "ran past --check-timeout" : "crashed the test process")}: {display}";
                 if (!excluded.Contains(fullName))
                 {
                     excluded.Add(fullName);
@@ -653,7 +713,10 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>The first errors of the failing step, or null.</summary>
     public string? Detail { get; set; }
 
-    /// <summary>Each check's display name and outcome: Passed, Failed, Skipped, Timeout or Crashed.</summary>
+    /// <summary>
+    /// Each check's display name and outcome: Passed, Failed, Skipped, Timeout, Crashed, or NotRun (a case of a test method
+    /// left out of the runs after another of its cases timed out or crashed).
+    /// </summary>
     public SortedDictionary<string, string> Checks { get; } = new(StringComparer.Ordinal);
 
     /// <summary>Each camera's picture score.</summary>
@@ -674,19 +737,21 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>A short status: "ok", or the problems joined.</summary>
     public string Status => Problems.Count == 0 ? "ok" : string.Join("; ", Problems.Distinct());
 
-    /// <summary>"checks N passed, N failed, N timed out", for the grader's lines.</summary>
-    public string CheckCounts => string.Create(CultureInfo.InvariantCulture, $"checks {Count("Passed")} passed, {Count("Failed")} failed, {Count("Timeout")} timed out");
+    /// <summary>"checks N passed, N failed, N timed out", then ", N crashed" and ", N not run" where there are any, for the grader's lines.</summary>
+    public string CheckCounts => string.Create(CultureInfo.InvariantCulture,
+        $"checks {Count("Passed")} passed, {Count("Failed")} failed, {Count("Timeout")} timed out{(Count("Crashed") > 0 ? $", {Count("Crashed")} crashed" : "")}{(Count("NotRun") > 0 ? $", {Count("NotRun")} not run" : "")}");
 
     /// <summary>How many checks ended with <paramref name="outcome"/>.</summary>
     public int Count(string outcome) => Checks.Values.Count(v => v == outcome);
 
-    /// <summary>A section's result: pass, fail, timeout, or "" when none of its checks ran.</summary>
+    /// <summary>A section's result: pass, fail, timeout, crashed, not run, or "" when none of its checks ran.</summary>
     public string Section(string section)
     {
         string[] outcomes = [.. Checks.Where(c => GradeJob.SectionOf(c.Key) == section).Select(c => c.Value)];
         return outcomes.Length == 0 ? ""
             : outcomes.Contains("Timeout") ? "timeout"
             : outcomes.Contains("Crashed") ? "crashed"
+            : outcomes.Contains("NotRun") ? "not run"
             : outcomes.All(o => o is "Passed" or "Skipped") ? "pass" : "fail";
     }
 }

@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Net;
 using System.Text;
 using System.Text.Json;
+using RayLab.Sampling;
 using RayLab.Scenes;
 
 namespace RayLab.Cli;
@@ -9,7 +10,8 @@ namespace RayLab.Cli;
 /// <summary>
 /// What every submission is measured against, computed once by RayLab from the checks' scene file (the lab's
 /// scenes/two-spheres.json, which holds both cameras' settings and the lab's adaptive rule, depth 0–3, contrast 0.05):
-/// each camera's exact image and the rays per pixel the scene's adaptive sampler takes on it.
+/// each camera's exact image and the rays per pixel the lab's adaptive rule takes on it: for the exercise lab as its
+/// students write it (every pixel on its own, with its centre), for the method lab as RayLab renders it (corners shared).
 /// </summary>
 internal sealed class GradeReference
 {
@@ -28,12 +30,33 @@ internal sealed class GradeReference
             var exact = new Image(d.Width, d.Height);
             renderer.Render(d.Scene, prepared.Camera, RenderMethod.Exact, exact);
             reference.Exact[camera] = exact;
-            var adaptive = new Image(d.Width, d.Height);
-            RenderStatistics stats = renderer.Render(d.Scene, prepared.Camera, prepared.Method, adaptive);
-            reference.AdaptiveRaysPerPixel[camera] = (double)stats.PrimaryRays / (d.Width * d.Height);
+            reference.AdaptiveRaysPerPixel[camera] = setup.Kind == "exercise" && d.Sampler.IsAdaptive
+                ? RaysPerPixelAlone(d, prepared.Camera, new AdaptiveSampler(d.Sampler.MinDepth, d.Sampler.MaxDepth, d.Sampler.Contrast, quincunx: true, d.Sampler.Guard))
+                : (double)renderer.Render(d.Scene, prepared.Camera, prepared.Method, new Image(d.Width, d.Height)).PrimaryRays / (d.Width * d.Height);
         }
 
         return reference;
+    }
+
+    /// <summary>
+    /// The rays per pixel of the lab's rule as the exercise lab writes it (its check 4.1.4): each pixel traced on its own,
+    /// with its centre (the quincunx A, B, C, D, E), sharing no point with its neighbours, where RayLab's adaptive
+    /// renderer shares the pixels' corners and traces a centre only where they disagree.
+    /// </summary>
+    private static double RaysPerPixelAlone(SceneDescription d, Camera camera, AdaptiveSampler rule)
+    {
+        RenderMethod method = RenderMethod.Adaptive(rule);
+        long rays = 0;
+        Parallel.For(0, d.Height, () => 0L, (y, _, sum) =>
+        {
+            for (int x = 0; x < d.Width; x++)
+            {
+                sum += Renderer.TracePixel(d.Scene, camera, d.Width, d.Height, method, x, y).Points.Count;
+            }
+
+            return sum;
+        }, sum => Interlocked.Add(ref rays, sum));
+        return (double)rays / (d.Width * d.Height);
     }
 
     public void Save(string staging)
@@ -51,6 +74,9 @@ internal static class GradeReport
 {
     private static readonly CultureInfo Inv = CultureInfo.InvariantCulture;
 
+    /// <summary>The outcomes the CSV counts, in the order of its columns "checks passed" … "checks not run".</summary>
+    private static readonly string[] CountedOutcomes = ["Passed", "Failed", "Timeout", "Crashed", "NotRun"];
+
     public static void Write(string staging, GradeSetup setup, GradeReference reference, IReadOnlyList<StudentRow> rows, bool sandboxed)
     {
         string[] sections = [.. rows.SelectMany(r => r.Checks.Keys).Select(GradeJob.SectionOf).Distinct().Order(SectionOrder.Instance)];
@@ -65,7 +91,7 @@ internal static class GradeReport
         var csv = new StringBuilder();
         var header = new List<string> { "student", "status" };
         header.AddRange(sections);
-        header.AddRange(["checks passed", "checks failed", "checks timed out"]);
+        header.AddRange(["checks passed", "checks failed", "checks timed out", "checks crashed", "checks not run"]);
         foreach (string c in cameras)
         {
             header.AddRange([$"{c} rmse", $"{c} flip", $"{c} rays per pixel", $"{c} lab adaptive rays per pixel", $"{c} ms"]);
@@ -77,7 +103,7 @@ internal static class GradeReport
         {
             var cells = new List<string> { row.Name, row.Status };
             cells.AddRange(sections.Select(row.Section));
-            cells.AddRange([row.Count("Passed").ToString(Inv), row.Count("Failed").ToString(Inv), row.Count("Timeout").ToString(Inv)]);
+            cells.AddRange([.. CountedOutcomes.Select(o => row.Count(o).ToString(Inv))]);
             foreach (string c in cameras)
             {
                 PictureScore? p = row.Pictures.GetValueOrDefault(c);
@@ -235,7 +261,7 @@ internal static class GradeReport
         html.AppendLine("<!DOCTYPE html>");
         html.AppendLine("<html lang=\"en\"><head><meta charset=\"utf-8\"><title>RayLab grades</title><style>");
         html.AppendLine("body{font-family:sans-serif;margin:1.5em}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:.25em .5em;text-align:center}"
-            + "td.pass{background:#d8f5d0}td.fail{background:#f8d0d0}td.timeout,td.crashed{background:#f8e8b0}td.l{text-align:left}"
+            + "td.pass{background:#d8f5d0}td.fail{background:#f8d0d0}td.timeout,td.crashed,td.not-run{background:#f8e8b0}td.l{text-align:left}"
             + "figure{display:inline-block;margin:.3em}figure img{width:320px;image-rendering:pixelated}figcaption{font-size:.85em}");
         html.AppendLine("</style></head><body>");
         html.AppendLine($"<h1>RayLab grades: the {E(setup.Kind)} lab</h1>");
@@ -264,7 +290,7 @@ internal static class GradeReport
             foreach (string s in sections)
             {
                 string r = row.Section(s);
-                html.Append(CultureInfo.InvariantCulture, $"<td class=\"{r}\">{(r.Length == 0 ? "—" : r)}</td>");
+                html.Append(CultureInfo.InvariantCulture, $"<td class=\"{r.Replace(' ', '-')}\">{(r.Length == 0 ? "—" : r)}</td>");
             }
 
             foreach (string c in cameras)

@@ -46,6 +46,29 @@ public sealed class GradeCliTests : IDisposable
     }
 
     [Fact]
+    public void TheListedChecksAreTheIndentedLinesAfterTheHeadingWithoutTheAdaptersOwn()
+    {
+        // dotnet test --list-tests of a lab, as it prints (the adapter's lines fall among the names).
+        const string output = """
+            Test run for /lab/tests/Lab.Tests/bin/Debug/net10.0/Lab.Tests.dll (.NETCoreApp,Version=v10.0)
+                A line before the heading
+            The following Tests are available:
+            [xUnit.net 00:00:00.01] xUnit.net VSTest Adapter v4.0.1+0f7d528729 (64-bit .NET 10.0.12)
+            [xUnit.net 00:00:00.74]   Discovering: Lab.Tests
+                4.1.4 Próbkowanie adaptacyjne: te same promienie(cameraName: "perspective")
+            [xUnit.net 00:00:01.87]   Discovered:  Lab.Tests
+                4.1.4 Próbkowanie adaptacyjne: te same promienie(cameraName: "orthographic")
+                5 Zadanie: dwie kule (RMSE, FLIP)(cameraName: "orthographic")
+
+            """;
+        string[] listed = ["4.1.4 Próbkowanie adaptacyjne: te same promienie(cameraName: \"perspective\")", "4.1.4 Próbkowanie adaptacyjne: te same promienie(cameraName: \"orthographic\")",
+            "5 Zadanie: dwie kule (RMSE, FLIP)(cameraName: \"orthographic\")"];
+        Assert.Equal(listed, GradeJob.ListedTests(output));
+        Assert.Equal(listed, GradeJob.ListedTests(output.ReplaceLineEndings("\r\n")));
+        Assert.Empty(GradeJob.ListedTests("No test matches the given testcase filter"));
+    }
+
+    [Fact]
     public void MissingSubmissionsNameTheArgument()
     {
         string checks = Checks();

@@ -257,6 +257,10 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         string hangsStatus = rows["hangs"].GetProperty("status").GetString()!;
         Assert.Contains("time limit", hangsStatus, StringComparison.Ordinal);
         Assert.Equal("timeout", Section(rows["hangs"], method));
+        // Every check of the lab has its row, those the runs left out with the one that hung too, and the detail names
+        // the one that hung.
+        Assert.Equal(Checks(rows["template"]).Order(StringComparer.Ordinal), Checks(rows["hangs"]).Order(StringComparer.Ordinal));
+        Assert.Contains("ran past --check-timeout: ", rows["hangs"].GetProperty("detail").GetString(), StringComparison.Ordinal);
 
         // Past the limit: the checks that render with its method and its program stop at the memory limit (not
         // the machine's), and the row says so; the other checks pass, and the other labs ran under the same limit.
@@ -295,6 +299,13 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         Assert.Equal("ok", rows["solution"].GetProperty("status").GetString());
         Assert.All(sections, s => Assert.Equal("pass", Section(rows["solution"], s)));
         Assert.True(Rmse(rows["solution"]) < 1, $"the solution's perspective picture is {Rmse(rows["solution"])} levels RMSE from the exact one");
+        // The lab's rule as this lab writes it (each pixel on its own, with its centre): the solution traces what the
+        // report puts beside it.
+        foreach (string camera in (string[])["orthographic", "perspective"])
+        {
+            double lab = grades.RootElement.GetProperty("reference").GetProperty(camera).GetProperty("labAdaptiveRaysPerPixel").GetDouble();
+            Assert.Equal(lab, rows["solution"].GetProperty("timing").GetProperty(camera).GetProperty("raysPerPixel").GetDouble(), 0.01);
+        }
 
         Assert.Equal("ok", rows["rounded"].GetProperty("status").GetString());
         Assert.Equal("fail", Section(rows["rounded"], "2.2"));
