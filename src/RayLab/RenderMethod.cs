@@ -58,14 +58,15 @@ public abstract class RenderMethod
 
     /// <summary>
     /// Throws what a render by this method would throw for <paramref name="scene"/> seen through
-    /// <paramref name="camera"/> at <paramref name="width"/>×<paramref name="height"/>, without rendering: for
-    /// <see cref="Exact"/>, an <see cref="UnsupportedSceneException"/> naming a sphere it cannot outline.
+    /// <paramref name="camera"/> at <paramref name="width"/>×<paramref name="height"/>, without rendering: an
+    /// <see cref="UnsupportedSceneException"/> naming a sphere that reaches too far from the camera for double (some
+    /// 5e152 on an axis, where the ray–sphere test's squares overflow), and for <see cref="Exact"/> one it cannot outline.
     /// </summary>
     /// <param name="scene">The scene.</param>
     /// <param name="camera">The camera.</param>
     /// <param name="width">The image width W.</param>
     /// <param name="height">The image height H.</param>
-    /// <exception cref="UnsupportedSceneException">The method cannot render this scene (only <see cref="Exact"/> refuses scenes).</exception>
+    /// <exception cref="UnsupportedSceneException">The method cannot render this scene: a sphere out of double's reach, or (<see cref="Exact"/>) one it cannot outline.</exception>
     /// <exception cref="ArgumentException">The camera's settings do not form a valid view at this size.</exception>
     public void Check(Scene scene, Camera camera, int width, int height)
     {
@@ -74,10 +75,11 @@ public abstract class RenderMethod
         Check(scene, camera.GetImagePlane(width, height));
     }
 
-    /// <summary>Throws what a render through <paramref name="plane"/> would throw for the scene (nothing, but for the exact method).</summary>
-    internal virtual void Check(Scene scene, ImagePlane plane)
-    {
-    }
+    /// <summary>
+    /// Throws what a render through <paramref name="plane"/> would throw for the scene: a sphere out of double's reach
+    /// from the camera (<see cref="DoubleReach"/>), and for the exact method a sphere it cannot outline.
+    /// </summary>
+    internal virtual void Check(Scene scene, ImagePlane plane) => DoubleReach.Check(scene, plane);
 
     /// <summary>Renders into <paramref name="image"/> (8-bit or linear); fills <paramref name="raysPerPixel"/> (if given) with the rays charged to each pixel.</summary>
     internal abstract RenderStatistics Render(Scene scene, ImagePlane plane, PixelTarget image, RenderOptions options, float[]? raysPerPixel);
@@ -167,7 +169,11 @@ public abstract class RenderMethod
             return stats;
         }
 
-        internal override void Check(Scene scene, ImagePlane plane) => ExactRenderer.Check(scene, plane);
+        internal override void Check(Scene scene, ImagePlane plane)
+        {
+            base.Check(scene, plane);
+            ExactRenderer.Check(scene, plane);
+        }
 
         internal override PixelTrace TracePixel(Scene scene, ImagePlane plane, int x, int y)
         {

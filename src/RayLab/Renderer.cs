@@ -112,7 +112,7 @@ public sealed class Renderer
     /// <returns>Rays traced, render time and the kernel that ran.</returns>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="width"/> or <paramref name="height"/> is less than 1.</exception>
     /// <exception cref="ArgumentException"><paramref name="pixels"/> does not hold W·H values, <paramref name="raysPerPixel"/> has the wrong length, or the camera's settings do not form a valid view.</exception>
-    /// <exception cref="UnsupportedSceneException">The exact method cannot draw the scene (see <see cref="RenderMethod.Exact"/>).</exception>
+    /// <exception cref="UnsupportedSceneException">A sphere reaches too far from the camera for double, or the exact method cannot draw the scene (see <see cref="RenderMethod.Check(Scene, Camera, int, int)"/>).</exception>
     /// <exception cref="OperationCanceledException"><see cref="CancellationToken"/> was cancelled.</exception>
     public unsafe RenderStatistics Render(Scene scene, Camera camera, RenderMethod method, Span<Intensity> pixels, int width, int height, float[]? raysPerPixel = null)
     {
@@ -137,6 +137,7 @@ public sealed class Renderer
         ArgumentNullException.ThrowIfNull(method);
         PixelTarget target = PixelTarget.Of(image);
         CheckRays(target, raysPerPixel);
+        DoubleReach.Check(scene, plane);
         return method.Render(scene, plane, target, Options, raysPerPixel);
     }
 
@@ -155,6 +156,7 @@ public sealed class Renderer
         ArgumentNullException.ThrowIfNull(method);
         CheckRays(image, raysPerPixel);
         ImagePlane plane = camera.GetImagePlane(image.Width, image.Height);
+        DoubleReach.Check(scene, plane);
         return method.Render(scene, plane, image, options, raysPerPixel);
     }
 
@@ -175,7 +177,7 @@ public sealed class Renderer
     /// <returns>The pixel's value and points.</returns>
     /// <exception cref="ArgumentOutOfRangeException">The pixel is outside the image.</exception>
     /// <exception cref="ArgumentException">The camera's settings do not form a valid view.</exception>
-    /// <exception cref="UnsupportedSceneException">The exact method cannot draw the scene.</exception>
+    /// <exception cref="UnsupportedSceneException">A sphere reaches too far from the camera for double, or the exact method cannot draw the scene.</exception>
     public static PixelTrace TracePixel(Scene scene, Camera camera, int width, int height, RenderMethod method, int x, int y)
     {
         ArgumentNullException.ThrowIfNull(scene);
@@ -185,7 +187,9 @@ public sealed class Renderer
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(x, width);
         ArgumentOutOfRangeException.ThrowIfNegative(y);
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(y, height);
-        return method.TracePixel(scene, camera.GetImagePlane(width, height), x, y);
+        ImagePlane plane = camera.GetImagePlane(width, height);
+        DoubleReach.Check(scene, plane);
+        return method.TracePixel(scene, plane, x, y);
     }
 
     /// <summary>

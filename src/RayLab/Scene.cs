@@ -25,6 +25,7 @@ public sealed class Scene
     private readonly Sphere[] _spheres;
     private readonly Intensity[] _colours;
     private readonly Lazy<SphereHierarchy?> _hierarchy;
+    private readonly Lazy<(Double3, Double3)?> _bounds;
 
     /// <summary>Creates a scene.</summary>
     /// <param name="spheres">The spheres; none may be null.</param>
@@ -47,6 +48,29 @@ public sealed class Scene
         Ambient = ambient;
         _colours = [.. _spheres.Select(sphere => sphere.Color * ambient)];
         _hierarchy = new Lazy<SphereHierarchy?>(() => SphereHierarchy.Build(_spheres), LazyThreadSafetyMode.ExecutionAndPublication);
+        _bounds = new Lazy<(Double3, Double3)?>(() => BoundsOf(_spheres), LazyThreadSafetyMode.PublicationOnly);
+    }
+
+    /// <summary>The box that holds every sphere (centre ± radius on each axis), or null for a scene with none; once per scene.</summary>
+    internal (Double3 Min, Double3 Max)? Bounds => _bounds.Value;
+
+    private static (Double3, Double3)? BoundsOf(Sphere[] spheres)
+    {
+        if (spheres.Length == 0)
+        {
+            return null;
+        }
+
+        double x0 = double.PositiveInfinity, y0 = x0, z0 = x0, x1 = double.NegativeInfinity, y1 = x1, z1 = x1;
+        foreach (Sphere s in spheres)
+        {
+            Double3 c = s.Center;
+            double r = s.Radius;
+            (x0, y0, z0) = (Math.Min(x0, c.X - r), Math.Min(y0, c.Y - r), Math.Min(z0, c.Z - r));
+            (x1, y1, z1) = (Math.Max(x1, c.X + r), Math.Max(y1, c.Y + r), Math.Max(z1, c.Z + r));
+        }
+
+        return (new Double3(x0, y0, z0), new Double3(x1, y1, z1));
     }
 
     /// <summary>

@@ -1,8 +1,9 @@
 namespace RayLab;
 
 /// <summary>
-/// The exact reference (<see cref="RenderMethod.Exact"/>) cannot draw this scene exactly, and says which sphere and
-/// why instead of drawing a wrong picture. <see cref="Exception.Message"/> names the sphere (by its index in
+/// A render cannot draw this scene, and says which sphere and why instead of drawing a wrong picture: a sphere that
+/// reaches too far from the camera for double (every method), or one the exact reference (<see cref="RenderMethod.Exact"/>)
+/// cannot outline exactly. <see cref="Exception.Message"/> names the sphere (by its index in
 /// <see cref="Scene.Spheres"/>); <see cref="Reason"/> is the same text without the name, for messages that
 /// name the sphere their own way (a scene file's <c>spheres[1]</c>).
 /// </summary>

@@ -290,6 +290,9 @@ public sealed class SceneFileTests : IDisposable
     // Non-finite numbers.
     [InlineData("spheres[0].radius", "\"radius\": 1", "\"radius\": 1e999")]
     [InlineData("spheres[0].center[0]", "\"center\": [0, 0, 0]", "\"center\": [-1e999, 0, 0]")]
+    // Finite, but out of double's reach from the camera: the ray–sphere test's squares would overflow, and the sphere vanish.
+    [InlineData("spheres[0]", "\"radius\": 1", "\"radius\": 2e154")]
+    [InlineData("spheres[0]", "\"center\": [0, 0, 0]", "\"center\": [0, 0, -1e153]")]
     public void BadInputNamesTheSourceAndTheField(
         string field, string find, string replace, string? find2 = null, string? replace2 = null)
     {
