@@ -25,7 +25,7 @@ public static class CarriedScenes
     /// </summary>
     /// <param name="scene">The scene argument as typed.</param>
     /// <returns>The path to load.</returns>
-    /// <exception cref="UsageException">A bare name that is neither a file here nor a carried scene (with the names that are).</exception>
+    /// <exception cref="UsageException">A bare name that is a folder here, or neither a file here nor a carried scene (with the names that are).</exception>
     public static string Resolve(string scene)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(scene);
@@ -39,6 +39,11 @@ public static class CarriedScenes
         if (names.Contains(name, StringComparer.Ordinal))
         {
             return Path.Combine(Folder, name + ".json");
+        }
+
+        if (Directory.Exists(scene))
+        {
+            throw new UsageException($"scene: '{scene}' is a folder here, not a scene file (a .json file, or a carried scene: see 'raylab scenes')");
         }
 
         throw new UsageException(

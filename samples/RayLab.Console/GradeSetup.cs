@@ -87,7 +87,7 @@ internal sealed class GradeSetup
         {
             throw new UsageException(request.Feed is null
                 ? $"--feed: no packages in {feed} (the kit's feed/ beside checks/); give the feed with --feed"
-                : $"--feed: no packages (*.nupkg) in {feed}");
+                : Directory.Exists(feed) ? $"--feed: no packages (*.nupkg) in {feed}" : File.Exists(feed) ? $"--feed: {feed} is a file, not the feed's folder" : $"--feed: no such folder: {feed}");
         }
 
         if (string.IsNullOrWhiteSpace(request.Output))

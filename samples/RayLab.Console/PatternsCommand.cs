@@ -35,6 +35,12 @@ public static class PatternsCommand
             return CommandExit.Run(stderr, () =>
             {
                 PatternSampler[] chosen = [.. (names.Length == 0 ? Samplers.Names : names).Select(Resolve)];
+                // Each sampler once, as compare's --samplers has it: a second would be drawn and measured again.
+                if (chosen.GroupBy(c => c.Name).FirstOrDefault(g => g.Count() > 1) is { } twice)
+                {
+                    throw new UsageException($"--sampler: '{twice.Key}' appears twice");
+                }
+
                 if (n is < 1 or > 1024)
                 {
                     throw new UsageException($"--samples: expected 1 to 1024, got {n}");

@@ -76,6 +76,19 @@ public sealed class CarriedScenesTests : IDisposable
     }
 
     [Fact]
+    public async Task A_bare_name_that_is_a_folder_here_is_one_line_saying_so()
+    {
+        Directory.CreateDirectory(_dir.File("shots"));
+
+        var r = await ConsoleRunner.RunChildAsync(_dir.Path, "render", "shots", "-o", "x.png");
+
+        Assert.Equal(1, r.Code);
+        Assert.Equal("raylab: error: scene: 'shots' is a folder here, not a scene file (a .json file, or a carried scene: see 'raylab scenes')",
+            Assert.Single(r.Err.TrimEnd().Split('\n')));
+        Assert.False(File.Exists(_dir.File("x.png")));
+    }
+
+    [Fact]
     public void A_path_with_a_folder_is_never_taken_for_a_carried_name()
     {
         var r = ConsoleRunner.Run("render", Path.Combine(_dir.Path, "two-spheres.json"), "-o", _dir.File("x.png"));

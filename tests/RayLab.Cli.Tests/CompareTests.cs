@@ -158,6 +158,12 @@ public sealed partial class CompareTests : IDisposable
         AssertFailsCleanly($"raylab: error: {behind}: spheres[0]: ", "compare", behind, "--out", _dir.File("report")); // the exact reference cannot draw it
         AssertFailsCleanly($"raylab: error: --out: '{scene}' is a file, not a folder", "compare", scene, "--out", scene);
         AssertFailsCleanly($"raylab: error: --out: '{scene}' is a file, not a folder", "compare", scene, "--out", Path.Combine(scene, "report"));
+        if (OperatingSystem.IsLinux())
+        {
+            // A folder nobody can create folders in, even root: named by its option, before any render.
+            AssertFailsCleanly("raylab: error: --out: cannot write in '/proc/raylab-report': ", "compare", scene, "--out", "/proc/raylab-report");
+        }
+
         AssertFailsCleanly("raylab: error: --budgets:", "compare", scene, "--out", _dir.File(Path.Combine("no", "report")), "--budgets", "0");
         AssertFailsCleanly("raylab: error: ", "compare", scene); // --out is required: a command-line error
     }

@@ -1,3 +1,5 @@
+using System.Globalization;
+
 namespace RayLab.Cli.Tests;
 
 /// <summary>
@@ -100,6 +102,22 @@ public sealed class GradeCliTests : IDisposable
         (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", _dir.File("report"));
         Assert.Equal(1, code);
         Assert.Equal($"raylab: error: --feed: no packages in {_dir.File("kit/feed")} (the kit's feed/ beside checks/); give the feed with --feed", stderr.TrimEnd());
+    }
+
+    [Theory]
+    [InlineData("nofeed", "no such folder: {0}")]
+    [InlineData("afile", "{0} is a file, not the feed's folder")]
+    [InlineData("empty", "no packages (*.nupkg) in {0}")]
+    public void AGivenFeedThatIsNoFeedSaysWhatItIs(string name, string problem)
+    {
+        string checks = Checks();
+        Directory.CreateDirectory(_dir.File("subs/anna"));
+        Directory.CreateDirectory(_dir.File("empty"));
+        File.WriteAllText(_dir.File("afile"), "");
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", _dir.File("report"), "--feed", _dir.File(name));
+        Assert.Equal(1, code);
+        Assert.Equal("raylab: error: --feed: " + string.Format(CultureInfo.InvariantCulture, problem, _dir.File(name)), stderr.TrimEnd());
+        Assert.False(Directory.Exists(_dir.File("report")));
     }
 
     [Fact]

@@ -86,10 +86,11 @@ public sealed partial class PatternsTests : IDisposable
     [InlineData("--sampler", "jitterd", "--sampler: unknown sampler 'jitterd'", "did you mean 'jittered'?")]
     [InlineData("--samples", "10", "--samples: regular needs a perfect square", "got 10")]
     [InlineData("--samples", "2000", "--samples: expected 1 to 1024", "got 2000")]
-    public void Bad_options_are_one_line_and_write_nothing(string option, string value, string start, string end)
+    [InlineData("--sampler", "random", "--sampler: 'random' appears twice", "twice", "--sampler", "Random")]
+    public void Bad_options_are_one_line_and_write_nothing(string option, string value, string start, string end, params string[] more)
     {
         string folder = _dir.File("out");
-        (int code, string _, string error) = ConsoleRunner.Run("patterns", "--out", folder, option, value);
+        (int code, string _, string error) = ConsoleRunner.Run(["patterns", "--out", folder, option, value, .. more]);
         Assert.Equal(1, code);
         Assert.StartsWith($"raylab: error: {start}", error);
         Assert.Contains(end, error);
