@@ -1,3 +1,4 @@
+using System.Text;
 using System.Text.Json;
 
 namespace RayLab.Scenes;
@@ -26,23 +27,51 @@ public static class SceneFile
         MaxDepth = 16,
     };
 
+    private static readonly UTF8Encoding StrictUtf8 = new(encoderShouldEmitUTF8Identifier: false, throwOnInvalidBytes: true);
+
     /// <summary>Reads and checks a scene file.</summary>
     /// <param name="path">The file.</param>
     /// <exception cref="SceneFileException">The file cannot be read, is not valid JSON, or a field is wrong.</exception>
     public static SceneDescription Load(string path)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(path);
-        string text;
+        byte[] bytes;
         try
         {
-            text = File.ReadAllText(path);
+            bytes = File.ReadAllBytes(path);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
             throw new SceneFileException(path, "", $"cannot read the file: {e.Message}", e);
         }
 
-        return Parse(text, path);
+        return Parse(Decode(bytes, path), path);
+    }
+
+    /// <summary>
+    /// The file's text: UTF-8 (with or without its byte order mark), or UTF-16 after its byte order mark. Bytes that are
+    /// not UTF-8 are an error naming the first and where it is, not a JSON error about the replacement character they
+    /// would decode to.
+    /// </summary>
+    private static string Decode(byte[] bytes, string path)
+    {
+        ReadOnlySpan<byte> b = bytes;
+        if (b.StartsWith((ReadOnlySpan<byte>)[0xFF, 0xFE]) || b.StartsWith((ReadOnlySpan<byte>)[0xFE, 0xFF]))
+        {
+            return (b[0] == 0xFF ? Encoding.Unicode : Encoding.BigEndianUnicode).GetString(b[2..]);
+        }
+
+        int skip = b.StartsWith((ReadOnlySpan<byte>)[0xEF, 0xBB, 0xBF]) ? 3 : 0;
+        try
+        {
+            return StrictUtf8.GetString(b[skip..]);
+        }
+        catch (DecoderFallbackException e)
+        {
+            string first = e.BytesUnknown is [byte x, ..] ? $"0x{x:X2}" : "a byte";
+            throw new SceneFileException(path, "", FormattableString.Invariant(
+                $"is not UTF-8 text: {first} at byte {skip + e.Index} cannot be decoded (save the file as UTF-8)"), e);
+        }
     }
 
     /// <summary>Parses and checks scene JSON.</summary>

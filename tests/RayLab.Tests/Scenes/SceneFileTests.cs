@@ -1,3 +1,4 @@
+using System.Text;
 using RayLab.Scenes;
 
 namespace RayLab.Tests.Scenes;
@@ -311,6 +312,37 @@ public sealed class SceneFileTests : IDisposable
         Assert.Contains(field, e.Message, StringComparison.Ordinal);
         Assert.Equal(field.Length == 0 ? $"{Source}: {e.Problem}" : $"{Source}: {field}: {e.Problem}", e.Message);
         Assert.DoesNotContain('\n', e.Message);
+    }
+
+    [Fact]
+    public void AFileThatIsNotUtf8NamesTheFirstBadByteAndWhereItIs()
+    {
+        // Latin-2 (ISO 8859-2) "ł" in a comment: 0xB3, which UTF-8 cannot start a character with.
+        byte[] head = Encoding.UTF8.GetBytes("{ // kula\n");
+        byte[] bytes = [.. head, 0xB3, .. Encoding.UTF8.GetBytes(Base[1..])];
+        string path = Path.Combine(_dir, "latin2.json");
+        File.WriteAllBytes(path, bytes);
+
+        SceneFileException e = Assert.Throws<SceneFileException>(() => SceneFile.Load(path));
+
+        Assert.Equal("", e.Field);
+        Assert.Equal($"{path}: is not UTF-8 text: 0xB3 at byte {head.Length} cannot be decoded (save the file as UTF-8)", e.Message);
+    }
+
+    [Theory]
+    [InlineData("utf-8 with its mark")]
+    [InlineData("utf-16")]
+    [InlineData("utf-16BE")]
+    public void AFileInUtf8WithItsMarkOrInUtf16WithItsMarkLoads(string encoding)
+    {
+        Encoding e = encoding == "utf-8 with its mark" ? new UTF8Encoding(true) : Encoding.GetEncoding(encoding);
+        string path = Path.Combine(_dir, "marked.json");
+        File.WriteAllBytes(path, [.. e.GetPreamble(), .. e.GetBytes(Base)]);
+
+        SceneDescription expected = SceneFile.Parse(Base, path), actual = SceneFile.Load(path);
+        Assert.Equal(expected.Camera, actual.Camera);
+        Assert.Equal(expected.Sampler, actual.Sampler);
+        Assert.Equal(expected.Scene.Spheres.Select(x => (x.Center, x.Radius, x.Color)), actual.Scene.Spheres.Select(x => (x.Center, x.Radius, x.Color)));
     }
 
     [Theory]
