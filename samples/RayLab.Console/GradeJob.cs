@@ -680,8 +680,8 @@ public static partial class GradeJob
     [GeneratedRegex(@"^[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)*$")]
     private static partial Regex Identifier();
 
-    /// <summary>The lab's line per render: "&lt;camera&gt; &lt;method&gt; N rays (X per pixel) T ms …".</summary>
-    [GeneratedRegex(@"(?m)^(?<camera>\S+)\s+(?<method>\S+)\s+[\d,. ]+\s+rays\s+\(\s*(?<rpp>[\d.]+)\s+per pixel\)\s+(?<ms>[\d.]+)\s+ms")]
+    /// <summary>The lab's line per render: "&lt;camera&gt; &lt;method&gt; N rays (X per pixel) T ms …", or in the Polish lab "… N promieni (X na piksel) …".</summary>
+    [GeneratedRegex(@"(?m)^(?<camera>\S+)\s+(?<method>\S+)\s+[\d,. ]+\s+(?:rays|promieni)\s+\(\s*(?<rpp>[\d.]+)\s+(?:per pixel|na piksel)\)\s+(?<ms>[\d.]+)\s+ms")]
     private static partial Regex RenderLine();
 }
 

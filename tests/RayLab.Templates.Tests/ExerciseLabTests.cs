@@ -107,7 +107,7 @@ public sealed partial class LabTemplateTests
         string output = await feed.RunAsync(lab, "dotnet", "run", "--no-build", "--project", Path.Combine("src", "Lab"));
         foreach (string camera in new[] { "orthographic", "perspective" })
         {
-            Assert.Matches($@"(?m)^{camera} +adaptive +[\d,]+ rays \( *[\d.]+ per pixel\) +[\d.]+ ms", output);
+            Assert.Matches($@"(?m)^{camera} +adaptive +[\d,]+ promieni \( *[\d.]+ na piksel\) +[\d.]+ ms", output);
             AssertPicture(Path.Combine(lab, "out", $"two-spheres-{camera}.png"), SKEncodedImageFormat.Png);
         }
 

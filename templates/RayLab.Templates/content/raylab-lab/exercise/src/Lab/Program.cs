@@ -98,7 +98,12 @@ internal static class Program
             double ms = clock.Elapsed.TotalMilliseconds;
             string path = Path.Combine("out", $"two-spheres-{name}.png");
             image.Bitmap.SaveAsPng(path);
+            // One line per render, which raylab grade reads (the camera and method names are the grader's keys).
+#if (en)
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{name,-12} adaptive {rays,10:N0} rays ({(double)rays / (nx * ny),5:F2} per pixel) {ms,8:F1} ms   {path}"));
+#else
+            Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{name,-12} adaptive {rays,10:N0} promieni ({(double)rays / (nx * ny),5:F2} na piksel) {ms,8:F1} ms   {path}"));
+#endif
             if (name == "perspective")
             {
                 image.Bitmap.SaveAsJpeg(Path.Combine("out", "obrazkoncowy.jpg")); // 2.2: the lab's own file name
