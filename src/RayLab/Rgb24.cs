@@ -15,4 +15,8 @@ public readonly record struct Rgb24(byte R, byte G, byte B)
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Rgb24 FromIntensity(Intensity intensity) =>
         new(EightBit.Level(intensity.R), EightBit.Level(intensity.G), EightBit.Level(intensity.B));
+
+    /// <summary>The levels as ImageSharp's <c>Rgb24</c> writes them, <c>Rgb24(230, 51, 255)</c>, so the two read alike in a message.</summary>
+    /// <returns>The text.</returns>
+    public override string ToString() => $"Rgb24({R}, {G}, {B})";
 }

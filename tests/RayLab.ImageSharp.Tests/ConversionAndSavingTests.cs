@@ -16,6 +16,12 @@ public class ConversionAndSavingTests
         return image;
     }
 
+    [Theory]
+    [InlineData(230, 51, 255)]
+    [InlineData(0, 0, 0)]
+    public void RayLabsPixelReadsAsImageSharpsInAMessage(byte r, byte g, byte b) =>
+        Assert.Equal(new SixLabors.ImageSharp.PixelFormats.Rgb24(r, g, b).ToString(), new Rgb24(r, g, b).ToString());
+
     [Fact]
     public void Converting_to_ImageSharp_and_back_keeps_every_byte()
     {
