@@ -51,6 +51,10 @@ internal static class ChildProcess
             psi.Environment.Remove(key);
         }
 
+        // No MSBuild worker node outlives its build (as in raylab grade's sandbox). A node left waiting serves the next
+        // build that comes, whatever its environment, and NuGet in it keeps the home it found first: a build with
+        // another DOTNET_CLI_HOME restored into the first one's folder (921 MB into a class kit's deleted folder).
+        psi.Environment["MSBUILDDISABLENODEREUSE"] = "1";
         psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
         psi.Environment["DOTNET_NOLOGO"] = "1";
         psi.Environment["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1";
