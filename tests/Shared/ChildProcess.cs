@@ -21,6 +21,11 @@ internal readonly record struct ChildResult(int ExitCode, string Output, string 
 /// </summary>
 internal static class ChildProcess
 {
+    /// <summary>A short digest of the caller's variables, the same for the same variables in any order.</summary>
+    private static string Salt(IReadOnlyDictionary<string, string?> environment) =>
+        Convert.ToHexString(System.Security.Cryptography.SHA256.HashData(Encoding.UTF8.GetBytes(
+            string.Join('\n', environment.OrderBy(e => e.Key, StringComparer.Ordinal).Select(e => $"{e.Key}={e.Value}")))))[..16];
+
     /// <summary>Runs <paramref name="fileName"/> and waits for it, whatever its exit code.</summary>
     /// <param name="workingDirectory">Where it runs.</param>
     /// <param name="environment">Variables to set (a null value removes the variable).</param>
@@ -51,10 +56,13 @@ internal static class ChildProcess
             psi.Environment.Remove(key);
         }
 
-        // No MSBuild worker node outlives its build (as in raylab grade's sandbox). A node left waiting serves the next
-        // build that comes, whatever its environment, and NuGet in it keeps the home it found first: a build with
-        // another DOTNET_CLI_HOME restored into the first one's folder (921 MB into a class kit's deleted folder).
-        psi.Environment["MSBUILDDISABLENODEREUSE"] = "1";
+        // An MSBuild worker node left waiting serves the next build that shakes hands with it, whatever that build's
+        // environment, and NuGet in it keeps the home it found first: a build with another DOTNET_CLI_HOME restored into
+        // the first one's folder (921 MB into a class kit's deleted folder). The salt lets a node serve only children
+        // whose variables, as the caller sets them, are the same, and they still reuse it (`dotnet build
+        // samples/RayLab.OwnMethod --no-incremental`, two projects, on 2 cores: 10–11 s with its node waiting, 22 s with
+        // node reuse off).
+        psi.Environment["MSBUILDNODEHANDSHAKESALT"] = Salt(environment);
         psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
         psi.Environment["DOTNET_NOLOGO"] = "1";
         psi.Environment["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1";
