@@ -83,6 +83,12 @@ public readonly record struct Double3(double X, double Y, double Z)
         return a / length;
     }
 
+    /// <summary>The smaller of each component: a box's low corner.</summary>
+    internal static Double3 Min(Double3 a, Double3 b) => new(Math.Min(a.X, b.X), Math.Min(a.Y, b.Y), Math.Min(a.Z, b.Z));
+
+    /// <summary>The larger of each component: a box's high corner.</summary>
+    internal static Double3 Max(Double3 a, Double3 b) => new(Math.Max(a.X, b.X), Math.Max(a.Y, b.Y), Math.Max(a.Z, b.Z));
+
     /// <summary>Converts to a single-precision System.Numerics vector (rounding each component).</summary>
     public Vector3 ToVector3() => new((float)X, (float)Y, (float)Z);
 

@@ -155,9 +155,15 @@ public sealed class Renderer
         ArgumentNullException.ThrowIfNull(camera);
         ArgumentNullException.ThrowIfNull(method);
         CheckRays(image, raysPerPixel);
-        ImagePlane plane = camera.GetImagePlane(image.Width, image.Height);
+        return method.Render(scene, PlaneFor(scene, camera, image.Width, image.Height), image, options, raysPerPixel);
+    }
+
+    /// <summary>The plane a W×H render of <paramref name="camera"/> traces through, checked against <paramref name="scene"/>: every render and pixel trace starts here.</summary>
+    private static ImagePlane PlaneFor(Scene scene, Camera camera, int width, int height)
+    {
+        ImagePlane plane = camera.GetImagePlane(width, height);
         DoubleReach.Check(scene, plane);
-        return method.Render(scene, plane, image, options, raysPerPixel);
+        return plane;
     }
 
     /// <summary>
@@ -187,9 +193,7 @@ public sealed class Renderer
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(x, width);
         ArgumentOutOfRangeException.ThrowIfNegative(y);
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(y, height);
-        ImagePlane plane = camera.GetImagePlane(width, height);
-        DoubleReach.Check(scene, plane);
-        return method.TracePixel(scene, plane, x, y);
+        return method.TracePixel(scene, PlaneFor(scene, camera, width, height), x, y);
     }
 
     /// <summary>

@@ -61,16 +61,14 @@ public sealed class Scene
             return null;
         }
 
-        double x0 = double.PositiveInfinity, y0 = x0, z0 = x0, x1 = double.NegativeInfinity, y1 = x1, z1 = x1;
-        foreach (Sphere s in spheres)
+        (Double3 min, Double3 max) = spheres[0].Box;
+        foreach (Sphere s in spheres.AsSpan(1))
         {
-            Double3 c = s.Center;
-            double r = s.Radius;
-            (x0, y0, z0) = (Math.Min(x0, c.X - r), Math.Min(y0, c.Y - r), Math.Min(z0, c.Z - r));
-            (x1, y1, z1) = (Math.Max(x1, c.X + r), Math.Max(y1, c.Y + r), Math.Max(z1, c.Z + r));
+            (Double3 lo, Double3 hi) = s.Box;
+            (min, max) = (Double3.Min(min, lo), Double3.Max(max, hi));
         }
 
-        return (new Double3(x0, y0, z0), new Double3(x1, y1, z1));
+        return (min, max);
     }
 
     /// <summary>

@@ -34,6 +34,9 @@ public sealed class Sphere
     /// <summary>The flat colour.</summary>
     public Intensity Color { get; }
 
+    /// <summary>The box that holds the sphere: centre ± radius on each axis.</summary>
+    internal (Double3 Lo, Double3 Hi) Box => (Center - new Double3(Radius, Radius, Radius), Center + new Double3(Radius, Radius, Radius));
+
     /// <summary>
     /// Finds the nearest intersection with parameter in the closed interval [<paramref name="tMin"/>,
     /// <paramref name="tMax"/>].

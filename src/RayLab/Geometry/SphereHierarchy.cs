@@ -93,8 +93,8 @@ internal sealed class SphereHierarchy
         for (int i = 0; i < n; i++)
         {
             Sphere sphere = spheres[order[i]];
-            Double3 r = new(sphere.Radius, sphere.Radius, sphere.Radius);
-            items[i] = new Item(order[i], sphere.Center - r, sphere.Center + r, sphere.Center);
+            (Double3 lo, Double3 hi) = sphere.Box;
+            items[i] = new Item(order[i], lo, hi, sphere.Center);
         }
 
         // A binary tree with leaves of ≥ 1 sphere has at most 2n − 1 nodes; each subtree gets exactly the
@@ -332,10 +332,10 @@ internal sealed class SphereHierarchy
         for (int i = start + 1; i < start + count; i++)
         {
             ref readonly Item item = ref items[i];
-            lo = Min(lo, item.Lo);
-            hi = Max(hi, item.Hi);
-            cLo = Min(cLo, item.Centre);
-            cHi = Max(cHi, item.Centre);
+            lo = Double3.Min(lo, item.Lo);
+            hi = Double3.Max(hi, item.Hi);
+            cLo = Double3.Min(cLo, item.Centre);
+            cHi = Double3.Max(cHi, item.Centre);
         }
 
         return (lo, hi, cLo, cHi);
@@ -431,8 +431,8 @@ internal sealed class SphereHierarchy
                 }
                 else
                 {
-                    _lo[b] = Min(_lo[b], items[i].Lo);
-                    _hi[b] = Max(_hi[b], items[i].Hi);
+                    _lo[b] = Double3.Min(_lo[b], items[i].Lo);
+                    _hi[b] = Double3.Max(_hi[b], items[i].Hi);
                 }
             }
         }
@@ -498,7 +498,7 @@ internal sealed class SphereHierarchy
             return;
         }
 
-        (accLo, accHi) = accCount == 0 ? (lo, hi) : (Min(accLo, lo), Max(accHi, hi));
+        (accLo, accHi) = accCount == 0 ? (lo, hi) : (Double3.Min(accLo, lo), Double3.Max(accHi, hi));
         accCount += count;
     }
 
@@ -510,10 +510,6 @@ internal sealed class SphereHierarchy
         Double3 e = hi - lo;
         return (e.X * e.Y) + (e.Y * e.Z) + (e.Z * e.X);
     }
-
-    private static Double3 Min(Double3 a, Double3 b) => new(Math.Min(a.X, b.X), Math.Min(a.Y, b.Y), Math.Min(a.Z, b.Z));
-
-    private static Double3 Max(Double3 a, Double3 b) => new(Math.Max(a.X, b.X), Math.Max(a.Y, b.Y), Math.Max(a.Z, b.Z));
 
     /// <summary>A sphere while building: its index, box and centre.</summary>
     private readonly record struct Item(int Index, Double3 Lo, Double3 Hi, Double3 Centre);

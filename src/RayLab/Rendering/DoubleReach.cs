@@ -29,8 +29,7 @@ internal static class DoubleReach
         foreach ((double alpha, double beta) in (ReadOnlySpan<(double, double)>)[(0, 0), (1, 0), (0, 1), (1, 1)])
         {
             Double3 o = plane.GetRay(alpha, beta).Origin;
-            low = new Double3(Math.Min(low.X, o.X), Math.Min(low.Y, o.Y), Math.Min(low.Z, o.Z));
-            high = new Double3(Math.Max(high.X, o.X), Math.Max(high.Y, o.Y), Math.Max(high.Z, o.Z));
+            (low, high) = (Double3.Min(low, o), Double3.Max(high, o));
         }
 
         if (Within(min, max, low, high))
@@ -41,8 +40,7 @@ internal static class DoubleReach
         for (int i = 0; i < scene.Spheres.Count; i++)
         {
             Sphere s = scene.Spheres[i];
-            var r = new Double3(s.Radius, s.Radius, s.Radius);
-            if (!Within(s.Center - r, s.Center + r, low, high))
+            if (!Within(s.Box.Lo, s.Box.Hi, low, high))
             {
                 throw new UnsupportedSceneException(i, FormattableString.Invariant(
                     $"(centre {s.Center}, radius {s.Radius:G3}) reaches more than {Limit:G1} from where the camera's rays start, on some axis: the ray–sphere test squares that distance, which overflows double, so the sphere would vanish. Bring the camera and the spheres closer together, or scale the scene down."));
