@@ -49,18 +49,18 @@ internal static class Progress
             if (problem is null)
             {
 #if (en)
-                output.WriteLine($"  written       {id,-6} {title} ({classes})");
+                output.WriteLine($"  written        {id,-6} {title} ({classes})");
 #else
-                output.WriteLine($"  napisane      {id,-6} {title} ({classes})");
+                output.WriteLine($"  napisane             {id,-6} {title} ({classes})");
 #endif
             }
             else if (written)
             {
                 throwing.Add(id);
 #if (en)
-                output.WriteLine($"  throws        {id,-6} {title} ({classes}): {problem}");
+                output.WriteLine($"  throws         {id,-6} {title} ({classes}): {problem}");
 #else
-                output.WriteLine($"  rzuca wyjątek {id,-6} {title} ({classes}): {problem}");
+                output.WriteLine($"  rzuca wyjątek        {id,-6} {title} ({classes}): {problem}");
 #endif
             }
             else
@@ -75,9 +75,9 @@ internal static class Progress
                 string detail = problem.StartsWith(own, StringComparison.Ordinal) ? problem[own.Length..] : $"wymaga najpierw: {problem}";
 #endif
 #if (en)
-                output.WriteLine($"  still to do   {id,-6} {title} ({classes}): {detail}");
+                output.WriteLine($"  still to write {id,-6} {title} ({classes}): {detail}");
 #else
-                output.WriteLine($"  do napisania  {id,-6} {title} ({classes}): {detail}");
+                output.WriteLine($"  jeszcze do napisania {id,-6} {title} ({classes}): {detail}");
 #endif
             }
         }
