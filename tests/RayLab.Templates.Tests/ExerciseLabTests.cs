@@ -76,6 +76,13 @@ public sealed partial class LabTemplateTests
             }
 
             Assert.Contains(toWrite, test, StringComparison.Ordinal);
+
+            // Each failing check once, in dotnet test's list (not again in xUnit's own report), with a stack of the lab's
+            // own frames only: the skeleton's line in src/Lab, then the check's; no frames of .NET or xUnit.
+            string window = $"{names[2]} {toWrite} — LabOrthoCamera.GetWindow(nx, ny)";
+            Assert.True(Regex.Count(test, Regex.Escape(window)) == 1, $"\"{window}\" is not in the output ({lang}) once:\n{test}");
+            Assert.Matches(@"(?m)^\s+at \S+\.LabOrthoCamera\.GetWindow\(.*\) in .*src[/\\]Lab[/\\]LabOrthoCamera\.cs:line \d+\s*$", test);
+            Assert.DoesNotMatch(FrameworkFrame(), test);
         }
     }
 
@@ -150,6 +157,8 @@ public sealed partial class LabTemplateTests
         string at = $"src/Lab/LabImage.cs:{cutLine}, LabImage.ToByte";
         Assert.True(throwExit != 0, $"2.2 passed with a ToByte that indexes past an array:\n{thrown}");
         Assert.Contains($"Twój kod rzucił IndexOutOfRangeException: Index was outside the bounds of the array. ({at}", thrown, StringComparison.Ordinal);
+        Assert.Matches($@"(?m)^\s+at \S+\.LabImage\.ToByte\(.*\) in .*src[/\\]Lab[/\\]LabImage\.cs:line {cutLine}\s*$", thrown);
+        Assert.DoesNotMatch(FrameworkFrame(), thrown);
         Assert.Equal(1, checkExit);
         Assert.Matches($@"(?m)^\s+rzuca wyjątek\s+2\.2\s.*IndexOutOfRangeException: .*\({Regex.Escape(at)}\)", listed);
         Assert.Matches(@"(?m)^\s+napisane\s+2\.1\s", listed);
@@ -202,6 +211,10 @@ public sealed partial class LabTemplateTests
 
     [GeneratedRegex(@"(?m)^\s+Failed: +(\d+)\s*$")]
     private static partial Regex DetailedFailed();
+
+    /// <summary>A stack frame of .NET's or xUnit's own code (reflection, threads, the runner) in dotnet test's output.</summary>
+    [GeneratedRegex(@"(?m)\bat (System\.|Xunit\.|InvokeStub_)")]
+    private static partial Regex FrameworkFrame();
 
     /// <summary>The sections with a failed check in dotnet test's output.</summary>
     private static string[] FailedSections(string output) =>
