@@ -8,8 +8,10 @@ namespace MyLab.Tests;
 /// <summary>
 /// What every check shares: the language of its messages, a time limit that names the pixel a hanging method was
 /// working on, a NotImplementedException turned into "still to write", and the figures written where dotnet test
-/// shows them (the test's output, and the failure message).
+/// shows them (the test's output, and the failure message). Its own frames are hidden from stack traces
+/// (<see cref="StackTraceHiddenAttribute"/>): a failure's stack starts in your code or in the check.
 /// </summary>
+[StackTraceHidden]
 internal static class Check
 {
 #if (en)
@@ -55,19 +57,19 @@ internal static class Check
             Exception e = Unwrapped(wrapped);
             if (e is Xunit.Sdk.IAssertionException)
             {
-                System.Runtime.ExceptionServices.ExceptionDispatchInfo.Throw(e); // a check's own failure, as it is
+                throw new Xunit.Sdk.CheckFailure(e.Message, e); // a check's own failure
             }
 
             if (e is NotImplementedException)
             {
                 // The skeletons' message already names the section and what is to write.
-                Assert.Fail(char.IsAsciiDigit(e.Message[0]) ? e.Message : T($"Jeszcze nie napisane: {e.Message}", $"Not written yet: {e.Message}"));
+                throw new Xunit.Sdk.CheckFailure(char.IsAsciiDigit(e.Message[0]) ? e.Message : T($"Jeszcze nie napisane: {e.Message}", $"Not written yet: {e.Message}"), e);
             }
 
             string at = WhereInYourCode(e);
             string position = where();
             string context = position == "—" ? at : $"{at}; {position}";
-            throw new Xunit.Sdk.XunitException(
+            throw new Xunit.Sdk.CheckFailure(
                 T($"Twój kod rzucił {e.GetType().Name}: {e.Message} ({context})", $"Your code threw {e.GetType().Name}: {e.Message} ({context})"),
                 e);
         }

@@ -23,9 +23,13 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
         (int width, int height) = (TwoSpheresFile.Width, TwoSpheresFile.Height);
         LabCamera settings = cameraName == "perspective" ? Perspective() : Orthographic();
         var camera = new OracleCamera(settings, width, height);
-        var image = new LabImage(width, height);
+        LabImage image = null!;
         long rays = 0;
-        TimeSpan time = Run(output, () => camera.LastPixel, () => rays = LabRenderer.Render(TwoSpheresFile.Scene, camera, new CentreSampler(), image));
+        TimeSpan time = Run(output, () => camera.LastPixel, () =>
+        {
+            image = new LabImage(width, height);
+            rays = LabRenderer.Render(TwoSpheresFile.Scene, camera, new CentreSampler(), image);
+        });
 
         var expected = new Image(width, height);
         new Renderer().Render(TwoSpheresFile.Scene, Oracle(settings), new RegularSampler(1), expected);
@@ -47,10 +51,10 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
     {
         const int width = 160, height = 120;
         var camera = new OracleCamera(Perspective(), width, height);
-        var first = new LabImage(width, height);
-        var second = new LabImage(width, height);
+        LabImage first = null!, second = null!;
         Run(output, () => camera.LastPixel, () =>
         {
+            (first, second) = (new LabImage(width, height), new LabImage(width, height));
             LabRenderer.Render(TwoSpheresFile.Scene, camera, new DrawingSampler(4), first, seed: 5);
             LabRenderer.Render(TwoSpheresFile.Scene, camera, new DrawingSampler(4), second, seed: 5);
         });
@@ -68,10 +72,14 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
     {
         (int width, int height) = (TwoSpheresFile.Width, TwoSpheresFile.Height);
         LabCamera camera = cameraName == "perspective" ? Perspective() : Orthographic();
-        var image = new LabImage(width, height);
+        LabImage image = null!;
         long rays = 0;
         var watched = new WatchedCamera(camera);
-        TimeSpan time = Run(output, () => watched.LastPixel, () => rays = LabRenderer.Render(TwoSpheresFile.Scene, watched, new LabAdaptiveSampler(maxDepth: 3, contrast: 0.05), image));
+        TimeSpan time = Run(output, () => watched.LastPixel, () =>
+        {
+            image = new LabImage(width, height);
+            rays = LabRenderer.Render(TwoSpheresFile.Scene, watched, new LabAdaptiveSampler(maxDepth: 3, contrast: 0.05), image);
+        });
 
         Camera oracle = Oracle(camera);
         Image exact = Pictures.Exact(oracle, width, height);

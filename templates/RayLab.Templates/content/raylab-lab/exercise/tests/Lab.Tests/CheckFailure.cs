@@ -1,0 +1,15 @@
+// In xUnit's namespace, as its own assertions' exceptions are: dotnet test then shows a failure's message as it is,
+// not after the exception's type name.
+namespace Xunit.Sdk;
+
+/// <summary>
+/// A check's failure as dotnet test shows it: the message, and a stack of the frames in the lab's own files only
+/// (where <c>cause</c> was thrown, in your code or the check's, then the check that ran it), without the frames of
+/// .NET's threads and reflection, which say nothing about your code.
+/// </summary>
+internal sealed class CheckFailure(string message, Exception? cause) : XunitException(message)
+{
+    public override string? StackTrace => string.Join(Environment.NewLine,
+        new[] { cause?.StackTrace, base.StackTrace }.SelectMany(trace => (trace ?? "").Split('\n'))
+            .Select(frame => frame.TrimEnd('\r')).Where(frame => frame.Contains(":line ", StringComparison.Ordinal)));
+}
