@@ -134,6 +134,7 @@ public sealed partial class LabTemplateTests(TemplateFeed feed)
         Assert.True(nowFailing >= 1, $"no test failed with the sabotaged MyMethod:\n{sabotagedOutput}");
         string tests = name.Replace('-', '_') + ".Tests"; // the namespace: the name as a C# identifier
         Assert.Matches($@"(?m)^\s*Failed {tests}\.MyMethodTests\.MyMethodIsCloseToTheExactImageAtAStatedCost", sabotagedOutput);
+        Assert.DoesNotMatch(@"(?m)\[FAIL\]\s*$", sabotagedOutput); // each failure once, in dotnet test's list, not again in xUnit's own report
         Assert.Matches($@"(?m)^\s*Failed {tests}\.TwoSpheresTests\.", sabotagedOutput);
         Assert.Matches(@"RMSE [\d.]+ levels > [\d.]+ \(perspective: RMSE [\d.]+, mean [\d.]+, max \d+ levels, [\d.]+ rays per pixel, [\d.]+ ms\)", sabotagedOutput); // the figures in the failure message
         Assert.True(stillPassing > 0, "the tests that do not use MyMethod should still pass");
