@@ -160,35 +160,28 @@ public static class RenderJob
         // A request that came as the last row finished still stops the job; once writing starts, it completes.
         cancellation.ThrowIfCancellationRequested();
 
-        // Every file is written or none: when the heat map or the stats cannot be written (a full disk, say), the
-        // files this run already wrote are removed, and the error names the option whose file failed.
-        var written = new List<string>();
+        // Every file is written or none, and a file the run would replace keeps its bytes unless every output is
+        // written: each goes to a temporary file first, and they are moved into place together. When the heat map or
+        // the stats cannot be written (a full disk, say), the error names the option whose file failed.
         double encodeMs;
-        try
+        using (var outputs = new OutputFiles())
         {
             var encodeClock = Stopwatch.StartNew();
             int quality = request.Quality ?? ImageFormats.DefaultQuality;
-            WriteOutput(request.OutputPath, "--output", written, () => image.Save(request.OutputPath, quality));
+            outputs.Write(request.OutputPath, "--output", stream => image.Save(stream, ImageFormat.FromPath(request.OutputPath), quality));
             encodeMs = encodeClock.Elapsed.TotalMilliseconds;
             if (raysPerPixel is not null)
             {
-                WriteOutput(request.HeatmapPath!, "--heatmap", written,
-                    () => HeatMap.Render(raysPerPixel, image.Width, image.Height).Save(request.HeatmapPath!, quality));
+                outputs.Write(request.HeatmapPath!, "--heatmap",
+                    stream => HeatMap.Render(raysPerPixel, image.Width, image.Height).Save(stream, ImageFormat.FromPath(request.HeatmapPath!), quality));
             }
 
             if (request.StatsPath is not null)
             {
-                WriteOutput(request.StatsPath, "--stats", written, () => WriteStats(request, prepared, stats, commitMs, encodeMs, warmupMs));
-            }
-        }
-        catch
-        {
-            foreach (string path in written)
-            {
-                File.Delete(path);
+                outputs.Write(request.StatsPath, "--stats", stream => stream.Write(StatsJson(request, prepared, stats, commitMs, encodeMs, warmupMs)));
             }
 
-            throw;
+            outputs.Commit();
         }
 
         stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
@@ -312,20 +305,6 @@ public static class RenderJob
         }
     }
 
-    private static void WriteOutput(string path, string option, List<string> written, Action write)
-    {
-        try
-        {
-            write();
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            throw new UsageException($"{option}: cannot write '{path}': {e.Message}");
-        }
-
-        written.Add(path);
-    }
-
     /// <summary>The kernel names the console accepts, as <see cref="RenderKernel"/> values in lower case.</summary>
     public static IReadOnlyList<string> Kernels { get; } = [.. Enum.GetNames<RenderKernel>().Select(n => n.ToLowerInvariant())];
 
@@ -395,7 +374,7 @@ public static class RenderJob
     /// <summary>The most samples the warm-up render takes: about 1/16 of the 1080p, 16 spp benchmark.</summary>
     public const double WarmupSamples = 1 << 21;
 
-    private static void WriteStats(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double? commitMs, double encodeMs, double? warmupMs)
+    private static byte[] StatsJson(RenderRequest request, PreparedScene prepared, RenderStatistics stats, double? commitMs, double encodeMs, double? warmupMs)
     {
         SamplerSettings sampler = prepared.Description.Sampler;
         var json = new RenderStatsFile
@@ -424,7 +403,7 @@ public static class RenderJob
             RetracedSamples = stats.RetracedSamples,
             ScalarReason = stats.ScalarReason,
         };
-        AtomicFile.WriteAllText(request.StatsPath!, JsonSerializer.Serialize(json, RenderStatsJson.Default.RenderStatsFile) + Environment.NewLine);
+        return System.Text.Encoding.UTF8.GetBytes(JsonSerializer.Serialize(json, RenderStatsJson.Default.RenderStatsFile) + Environment.NewLine);
     }
 
 }

@@ -9,7 +9,7 @@ internal static class ReportFolder
     /// <summary>
     /// Moves every file under <paramref name="staging"/> to the same relative path under <paramref name="folder"/>,
     /// after checking that no file or folder is in the way of any of them (so a clash stops the run before anything
-    /// is moved).
+    /// is moved). The moves are all or none: when one fails, every file already replaced is put back.
     /// </summary>
     /// <returns>How many files were moved, <c>index.html</c> included.</returns>
     public static int Publish(string staging, string folder)
@@ -32,11 +32,37 @@ internal static class ReportFolder
             }
         }
 
-        foreach (string file in files)
+        // All or none (OutputFiles.MoveAll): a failed move puts back the files already replaced, and the folders made
+        // for the report are removed again.
+        var made = new List<string>();
+        try
         {
-            string target = Path.Combine(folder, Path.GetRelativePath(staging, file));
-            Directory.CreateDirectory(Path.GetDirectoryName(target)!);
-            File.Move(file, target, overwrite: true);
+            var moves = new List<FileMove>();
+            foreach (string file in files)
+            {
+                string target = Path.Combine(folder, Path.GetRelativePath(staging, file));
+                for (string? parent = Path.GetDirectoryName(Path.GetFullPath(target)); parent is not null && !Directory.Exists(parent); parent = Path.GetDirectoryName(parent))
+                {
+                    made.Add(parent);
+                }
+
+                Directory.CreateDirectory(Path.GetDirectoryName(target)!);
+                moves.Add(new FileMove(file, target, "--out"));
+            }
+
+            OutputFiles.MoveAll(moves);
+        }
+        catch
+        {
+            foreach (string empty in made.Distinct().OrderByDescending(f => f.Length))
+            {
+                if (Directory.Exists(empty) && !Directory.EnumerateFileSystemEntries(empty).Any())
+                {
+                    Directory.Delete(empty);
+                }
+            }
+
+            throw;
         }
 
         return files.Length;
