@@ -40,17 +40,17 @@ public static class CompareJob
         {
             (PreparedScene scene, CompareCase[] cases, List<string> notes) = Plan(request);
             created = MissingFolders(request.OutputFolder);
+            string hidden = Path.Combine(request.OutputFolder, $".raylab-compare-{Guid.NewGuid():N}.tmp");
             try
             {
                 Directory.CreateDirectory(request.OutputFolder);
-                staging = Path.Combine(request.OutputFolder, $".raylab-compare-{Guid.NewGuid():N}.tmp");
-                Directory.CreateDirectory(staging);
+                Directory.CreateDirectory(hidden);
+                staging = hidden;
             }
             catch (Exception e) when (e is IOException or UnauthorizedAccessException)
             {
                 // Before the renders, naming the option: a folder this user cannot write in (read-only, or /proc).
-                staging = null;
-                throw new UsageException($"--out: cannot write in '{request.OutputFolder}': {(e is UnauthorizedAccessException ? "permission denied" : "folders cannot be created there")}");
+                throw OutputFolders.CannotWrite("--out", request.OutputFolder, e, hidden);
             }
 
             CompareMeasurement measured = Measure(request, stdout, scene, cases, staging, cancellation);

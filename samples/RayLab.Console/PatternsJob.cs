@@ -50,9 +50,19 @@ public static class PatternsJob
                 throw new UsageException($"--out: '{request.OutputFolder}' is a file, not a folder");
             }
 
-            Directory.CreateDirectory(request.OutputFolder);
-            staging = Path.Combine(request.OutputFolder, $".raylab-patterns-{Guid.NewGuid():N}.tmp");
-            Directory.CreateDirectory(staging);
+            string hidden = Path.Combine(request.OutputFolder, $".raylab-patterns-{Guid.NewGuid():N}.tmp");
+            try
+            {
+                Directory.CreateDirectory(request.OutputFolder);
+                Directory.CreateDirectory(hidden);
+                staging = hidden;
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                // Before any figure is drawn, naming the option (a folder this user cannot write in: read-only, or /proc).
+                throw OutputFolders.CannotWrite("--out", request.OutputFolder, e, hidden);
+            }
+
             var clock = System.Diagnostics.Stopwatch.StartNew();
             PatternsReport.Write(request, staging, stdout, cancellation);
             cancellation.ThrowIfCancellationRequested();

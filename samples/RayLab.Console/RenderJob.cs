@@ -294,14 +294,7 @@ public static class RenderJob
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            // The exception's message names the probe, a file the user never asked for: say what went wrong instead.
-            string why = e switch
-            {
-                UnauthorizedAccessException => "permission denied",
-                FileNotFoundException or DirectoryNotFoundException => "files cannot be created there",
-                _ => e.Message.Replace(probe, "a new file", StringComparison.Ordinal),
-            };
-            throw new UsageException($"{option}: cannot write in the folder '{folder}': {why}");
+            throw OutputFolders.CannotWrite(option, folder, e, probe);
         }
     }
 

@@ -161,7 +161,7 @@ public sealed partial class CompareTests : IDisposable
         if (OperatingSystem.IsLinux())
         {
             // A folder nobody can create folders in, even root: named by its option, before any render.
-            AssertFailsCleanly("raylab: error: --out: cannot write in '/proc/raylab-report': ", "compare", scene, "--out", "/proc/raylab-report");
+            AssertFailsCleanly("raylab: error: --out: cannot write in the folder '/proc/raylab-report': ", "compare", scene, "--out", "/proc/raylab-report");
         }
 
         AssertFailsCleanly("raylab: error: --budgets:", "compare", scene, "--out", _dir.File(Path.Combine("no", "report")), "--budgets", "0");
