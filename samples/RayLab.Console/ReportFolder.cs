@@ -2,7 +2,7 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// Moves a report built in a hidden staging folder into its output folder, <c>index.html</c> last, so a page never
-/// points at files that are not there yet; shared by <c>raylab compare</c> and <c>raylab patterns</c>.
+/// points at files that are not there yet; shared by <c>raylab compare</c>, <c>raylab patterns</c> and <c>raylab grade</c>.
 /// </summary>
 internal static class ReportFolder
 {
@@ -56,9 +56,16 @@ internal static class ReportFolder
         {
             foreach (string empty in made.Distinct().OrderByDescending(f => f.Length))
             {
-                if (Directory.Exists(empty) && !Directory.EnumerateFileSystemEntries(empty).Any())
+                try
                 {
-                    Directory.Delete(empty);
+                    if (Directory.Exists(empty) && !Directory.EnumerateFileSystemEntries(empty).Any())
+                    {
+                        Directory.Delete(empty);
+                    }
+                }
+                catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+                {
+                    // best effort: the failed move is the error to report
                 }
             }
 
