@@ -29,7 +29,7 @@ public sealed class OutputFiles : IDisposable
             using var stream = new FileStream(move.Temp, FileMode.CreateNew, FileAccess.Write, FileShare.None);
             _staged.Add(move); // from here on the temporary file exists, and Dispose removes it
             write(stream);
-            stream.Flush(flushToDisk: true);
+            stream.Flush();
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
