@@ -106,6 +106,8 @@ internal sealed class GradeSetup
             throw new UsageException($"--out: '{request.Output}' is inside the {(IsInside(output, submissions) ? "submissions" : "checks")} folder; write the report elsewhere");
         }
 
+        OutputFolders.Probe("--out", request.Output); // now, not after every lab is graded
+
         foreach (string needed in new[] { Path.Combine("tests", "Lab.Tests"), Path.Combine("src", "Lab") })
         {
             if (!Directory.Exists(Path.Combine(checks, needed)))

@@ -2,7 +2,7 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// The console's one message for an output folder a command cannot write in, whichever command found it (render's
-/// <c>-o</c>, <c>--stats</c> and <c>--heatmap</c>, compare's and patterns' <c>--out</c>):
+/// <c>-o</c>, <c>--stats</c> and <c>--heatmap</c>, the <c>--out</c> of compare, patterns and grade):
 /// <c>OPTION: cannot write in the folder 'FOLDER': WHY</c>.
 /// </summary>
 public static class OutputFolders
@@ -21,6 +21,35 @@ public static class OutputFolders
             _ when hidden is not null => e.Message.Replace(hidden, "a new file", StringComparison.Ordinal),
             _ => e.Message,
         };
+    }
+
+    /// <summary>
+    /// Checks, before any work, that files can be created in <paramref name="folder"/>, or, where it does not exist yet,
+    /// in the nearest folder above it that does (where the command will create it): a hidden file is created there
+    /// and deleted on close, so nothing is left.
+    /// </summary>
+    /// <param name="option">The option that named the folder or a file in it, for the error.</param>
+    /// <param name="folder">The folder, as given.</param>
+    /// <exception cref="UsageException">Nothing can be created there (<see cref="CannotWrite"/>).</exception>
+    public static void Probe(string option, string folder)
+    {
+        string? existing = Path.GetFullPath(folder);
+        while (existing is not null && !Directory.Exists(existing))
+        {
+            existing = Path.GetDirectoryName(existing);
+        }
+
+        string probe = Path.Combine(existing ?? ".", $".raylab-probe.{Guid.NewGuid():N}.tmp");
+        try
+        {
+            using (new FileStream(probe, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1, FileOptions.DeleteOnClose))
+            {
+            }
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw CannotWrite(option, folder, e, probe);
+        }
     }
 
     /// <summary>The error for an output folder that cannot be written in: the option, the folder, and <see cref="Why"/>.</summary>

@@ -285,17 +285,7 @@ public static class RenderJob
         }
 
         // Found now, not after the render: a folder this user cannot write in (read-only, or /proc).
-        string probe = Path.Combine(folder, $".raylab-probe.{Guid.NewGuid():N}.tmp");
-        try
-        {
-            using (new FileStream(probe, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1, FileOptions.DeleteOnClose))
-            {
-            }
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            throw OutputFolders.CannotWrite(option, folder, e, probe);
-        }
+        OutputFolders.Probe(option, folder);
     }
 
     /// <summary>The kernel names the console accepts, as <see cref="RenderKernel"/> values in lower case.</summary>

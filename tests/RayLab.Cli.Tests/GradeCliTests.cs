@@ -131,6 +131,19 @@ public sealed class GradeCliTests : IDisposable
         Assert.Equal($"raylab: error: --out: '{_dir.File("subs/report")}' is inside the submissions folder; write the report elsewhere", stderr.TrimEnd());
     }
 
+    [Fact]
+    public void AReportFolderNothingCanBeCreatedInIsRefusedBeforeAnyLabIsGraded()
+    {
+        Assert.SkipUnless(OperatingSystem.IsLinux(), "/proc is Linux's: nobody can create files or folders in it, not even root");
+        string checks = Checks();
+        File.WriteAllText(_dir.File("kit/feed/x.1.0.0.nupkg"), "");
+        Directory.CreateDirectory(_dir.File("subs/anna"));
+        (int code, string stdout, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", "/proc/raylab-grades");
+        Assert.Equal(1, code);
+        Assert.Equal("raylab: error: --out: cannot write in the folder '/proc/raylab-grades': nothing can be created there", stderr.TrimEnd());
+        Assert.DoesNotContain("restoring", stdout, StringComparison.Ordinal); // refused before the checks' packages are restored
+    }
+
     [Theory]
     [InlineData("--check-timeout", "0", "expected a number of seconds ≥ 1, got 0")]
     [InlineData("--jobs", "0", "expected a count ≥ 1, got 0")]
