@@ -47,9 +47,9 @@ internal static class Check
 
         if (!finished)
         {
-            Assert.Fail(T(
+            throw new Xunit.Sdk.CheckFailure(T(
                 $"Przekroczony limit czasu {Limit.TotalSeconds:F0} s: metoda się nie skończyła (zapętlenie?). Ostatnio: {where()}.",
-                $"Time limit of {Limit.TotalSeconds:F0} s passed: the method did not finish (an endless loop?). Last: {where()}."));
+                $"Time limit of {Limit.TotalSeconds:F0} s passed: the method did not finish (an endless loop?). Last: {where()}."), null);
         }
 
         if (task.Exception?.InnerException is { } wrapped)
