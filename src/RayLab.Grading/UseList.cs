@@ -21,9 +21,10 @@ public sealed class UseList
     private readonly (string Pattern, int Rank, string Reason)[] _forbidden;
     private readonly HashSet<string> _assemblies;
 
-    private UseList(Dictionary<string, string> sections, string[] assemblies, string[] allowed, Dictionary<string, string> forbidden)
+    private UseList(Dictionary<string, string> sections, string[] programOnly, string[] assemblies, string[] allowed, Dictionary<string, string> forbidden)
     {
         Sections = sections;
+        ProgramOnly = new HashSet<string>(programOnly, StringComparer.Ordinal);
         _assemblies = new HashSet<string>(assemblies, StringComparer.Ordinal);
         _allowed = [.. allowed.Select(p => (p, Rank(p)))];
         _forbidden = [.. forbidden.Select(f => (f.Key, Rank(f.Key), f.Value))];
@@ -31,6 +32,12 @@ public sealed class UseList
 
     /// <summary>Each lab class's section (<c>LabOrthoCamera</c> → <c>3.1</c>).</summary>
     public IReadOnlyDictionary<string, string> Sections { get; }
+
+    /// <summary>
+    /// The classes of the lab that only its program runs, not its checks (the method lab's <c>Program</c>, which
+    /// renders the exact image to compare with): their uses count only where a section's class reaches them.
+    /// </summary>
+    public IReadOnlySet<string> ProgramOnly { get; }
 
     /// <summary>Reads a list file.</summary>
     /// <param name="path">The file (uses.json).</param>
@@ -43,7 +50,7 @@ public sealed class UseList
     }
 
     /// <summary>Reads a list from its JSON text.</summary>
-    /// <param name="json">The text: <c>{"sections": {class: section}, "assemblies": [...], "allowed": [rule, ...], "forbidden": {rule: reason}}</c>.</param>
+    /// <param name="json">The text: <c>{"sections": {class: section}, "programOnly": [class, ...], "assemblies": [...], "allowed": [rule, ...], "forbidden": {rule: reason}}</c>.</param>
     /// <param name="source">Where the text comes from, for the messages.</param>
     /// <returns>The list.</returns>
     /// <exception cref="FormatException">The text is not a valid list: the message names the source and the field.</exception>
@@ -69,6 +76,7 @@ public sealed class UseList
                 }
             }
 
+            string[] programOnly = root.TryGetProperty("programOnly", out JsonElement po) ? Texts(po, source, "programOnly") : [];
             string[] assemblies = root.TryGetProperty("assemblies", out JsonElement a) ? Texts(a, source, "assemblies") : [];
             string[] allowed = root.TryGetProperty("allowed", out JsonElement al) ? Texts(al, source, "allowed") : [];
             var forbidden = new Dictionary<string, string>(StringComparer.Ordinal);
@@ -85,7 +93,7 @@ public sealed class UseList
                 Rule(rule, source, "allowed");
             }
 
-            return new UseList(sections, assemblies, allowed, forbidden);
+            return new UseList(sections, programOnly, assemblies, allowed, forbidden);
         }
         catch (JsonException e)
         {
@@ -133,7 +141,8 @@ public sealed class UseList
     /// <summary>
     /// Every use of <paramref name="uses"/> the list refuses, each with the sections it fails: its class's section; for a
     /// helper class, the sections of the classes whose methods reach it; for code no section reaches (a static
-    /// constructor or a module initializer can still run it), every section.
+    /// constructor or a module initializer can still run it), every section, but for a class only the program runs
+    /// (<see cref="ProgramOnly"/>), none.
     /// </summary>
     /// <param name="uses">The lab assembly's uses.</param>
     /// <returns>The refused uses, in the lab's metadata order.</returns>
@@ -158,6 +167,11 @@ public sealed class UseList
             else
             {
                 sections = [.. uses.ReachedFrom(use.LabType, Sections.ContainsKey).Where(Sections.ContainsKey).Select(t => Sections[t]).Distinct(StringComparer.Ordinal).Order(StringComparer.Ordinal)];
+                if (sections.Length == 0 && ProgramOnly.Contains(use.LabType))
+                {
+                    continue;
+                }
+
                 if (sections.Length == 0)
                 {
                     sections = all;
@@ -277,6 +291,9 @@ public sealed record UseFinding(IReadOnlyList<string> Sections, ForeignUse Use, 
         "a function pointer" => "wskaźnika do funkcji",
         "processes" => "uruchamiania procesów",
         "unsafe memory access" => "niebezpiecznego dostępu do pamięci",
+        "the network" => "sieci",
+        "the exact renderer" => "dokładnego renderera",
+        "code that runs when the lab loads" => "kodu uruchamianego przy ładowaniu laboratorium",
         _ => reason,
     };
 }
