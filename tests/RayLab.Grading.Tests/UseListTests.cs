@@ -53,3 +53,20 @@ public sealed class UseListTests
         Assert.StartsWith("t.json: not valid JSON", e.Message, StringComparison.Ordinal);
     }
 }
+
+public sealed class ProgramOnlyTests
+{
+    [Fact]
+    public void AProgramOnlyClassIsJudgedOnlyWhereASectionsClassReachesIt()
+    {
+        // The fixtures' ReflectionHelper is reached from ReflectingCamera; Sneaky is reached from no class.
+        const string json = """
+            { "sections": { "ReflectingCamera": "own" }, "programOnly": ["ReflectionHelper", "Sneaky"],
+              "allowed": ["System.*"], "forbidden": { "System.Reflection.*": "reflection", "System.Type": "reflection",
+              "System.Runtime.CompilerServices.UnsafeAccessorAttribute": "reflection" } }
+            """;
+        IReadOnlyList<UseFinding> findings = UseList.Parse(json, "t.json").Check(AssemblyUses.Read(typeof(UseListTests).Assembly.Location));
+        Assert.Contains(findings, f => f.Use.LabType == "ReflectionHelper" && f.Sections.SequenceEqual(["own"]));
+        Assert.DoesNotContain(findings, f => f.Use.LabType == "Sneaky");
+    }
+}
