@@ -105,7 +105,10 @@ internal static class GradeChecks
     /// The program the test platform starts the test host with (its <c>DotNetHostPath</c>): a script that starts
     /// <c>dotnet</c> in a bubblewrap of its own inside the sandbox, in which the checks' folder is read-only and the
     /// grader's private folder (the results, this script) is an empty one. The lab's code runs in that host; the test
-    /// platform, outside it, writes the results. Written once into the checks' private folder.
+    /// platform, outside it, writes the results. Written once into the checks' private folder. Not
+    /// <c>--die-with-parent</c>: the kernel's parent-death signal follows the thread that started the host, and the
+    /// test platform's thread pool retires that thread while the checks run; the outer sandbox's process namespace ends
+    /// the host with the run.
     /// </summary>
     /// <param name="folder">The checks' folder.</param>
     /// <returns>The script's path.</returns>
@@ -116,7 +119,7 @@ internal static class GradeChecks
         File.WriteAllText(script, $"""
             #!/bin/sh
             # The checks' test host, where the lab's code runs: the checks read-only, the results out of sight.
-            exec bwrap --bind / / --ro-bind {quoted} {quoted} --tmpfs {Quote(Path.Combine(folder, Private))} --dev /dev --proc /proc --die-with-parent -- dotnet "$@"
+            exec bwrap --bind / / --ro-bind {quoted} {quoted} --tmpfs {Quote(Path.Combine(folder, Private))} --dev /dev --proc /proc -- dotnet "$@"
 
             """);
         if (!OperatingSystem.IsWindows())

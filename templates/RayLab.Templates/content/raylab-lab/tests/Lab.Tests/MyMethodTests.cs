@@ -1,5 +1,6 @@
 using System.Globalization;
 using RayLab;
+using RayLab.Grading;
 using RayLab.Scenes;
 
 namespace MyLab.Tests;
@@ -24,6 +25,18 @@ public class MyMethodTests(ITestOutputHelper output)
     private static readonly SceneDescription File = TwoSpheres.Load();
 
     public static TheoryData<string> Cameras => ["orthographic", "perspective"];
+
+    /// <summary>
+    /// MyMethod uses only what the lab allows (uses.json, the list the grader reads too): RayLab's classes, but not the
+    /// exact renderer, and no reflection, native code or processes. Read from the built lab with RayLab.Grading.
+    /// </summary>
+    [Fact]
+    public void MyMethodUsesOnlyWhatTheLabAllows()
+    {
+        string[] refused = [.. UseList.Load(Path.Combine(AppContext.BaseDirectory, "uses.json"))
+            .Check(AssemblyUses.Read(typeof(MyMethod).Assembly.Location)).Select(f => f.Message(polish: false))];
+        Assert.True(refused.Length == 0, string.Join("\n", refused));
+    }
 
     [Theory]
     [MemberData(nameof(Cameras))]
