@@ -69,10 +69,15 @@ public static partial class GradeJob
             Directory.CreateDirectory(packages);
             stdout.WriteLine($"restoring the checks' packages from {setup.Feed} (once, outside the sandbox)");
             RestoreChecks(setup, work, packages, cancellation);
-            GradeSandbox sandbox = GradeSandbox.Create(request.UnsafeNoSandbox, [setup.Submissions, setup.Output, work], packages, request.MemoryLimitMegabytes);
+            using GradeSandbox sandbox = GradeSandbox.Create(request.UnsafeNoSandbox, [setup.Submissions, setup.Output, work], packages, request.Limits);
             if (!sandbox.IsSandboxed)
             {
                 stdout.WriteLine("warning: --unsafe-no-sandbox: the submissions' code runs as you, with your files and network");
+            }
+
+            foreach (string line in sandbox.Mechanisms)
+            {
+                stdout.WriteLine(line);
             }
 
             GradeReference reference = GradeReference.Create(setup);
@@ -199,7 +204,7 @@ public static partial class GradeJob
             cancellation.ThrowIfCancellationRequested();
             if (build.TimedOut || build.ExitCode != 0)
             {
-                row.Problems.Add(build.TimedOut ? "build time limit" : "does not build");
+                row.Problems.Add(build.TimedOut ? "build time limit" : build.Limit != SandboxLimit.None ? $"build {GradeSandbox.LimitName(build.Limit)}" : "does not build");
                 row.Detail = build.TimedOut ? "the build ran past the submission's limit" : FirstErrors(build.Output, lab.Path);
                 return lab;
             }
@@ -240,7 +245,12 @@ public static partial class GradeJob
                 {
                     row.Problems.Add(limit < setup.Request.RunTimeout ? "submission time limit" : "program time limit");
                 }
-                else if (run.ExitCode != 0 && OutOfMemory(run.Output))
+                else if (run.Limit is not SandboxLimit.None and not SandboxLimit.Memory)
+                {
+                    row.Problems.Add($"program {GradeSandbox.LimitName(run.Limit)}");
+                    row.Detail ??= FirstErrors(run.Output, lab.Path);
+                }
+                else if (run.ExitCode != 0 && (OutOfMemory(run.Output) || run.Limit == SandboxLimit.Memory))
                 {
                     row.Problems.Add("program memory limit");
                     row.Detail ??= OutOfMemoryDetail(setup, "the program");
@@ -341,7 +351,13 @@ public static partial class GradeJob
 
             ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation);
             cancellation.ThrowIfCancellationRequested();
-            if (OutOfMemory(test.Output))
+            if (test.Limit is not SandboxLimit.None and not SandboxLimit.Memory)
+            {
+                row.Problems.Add($"check {GradeSandbox.LimitName(test.Limit)}");
+                row.Detail ??= FirstErrors(test.Output, lab);
+            }
+
+            if (OutOfMemory(test.Output) || test.Limit == SandboxLimit.Memory)
             {
                 row.Problems.Add("check memory limit");
                 row.Detail ??= OutOfMemoryDetail(setup, "a check");
@@ -437,7 +453,7 @@ public static partial class GradeJob
         output.Contains("System.OutOfMemoryException", StringComparison.Ordinal) || OutOfMemoryLine().IsMatch(output);
 
     private static string OutOfMemoryDetail(GradeSetup setup, string what) => string.Create(CultureInfo.InvariantCulture,
-        $"{what} ran out of memory (OutOfMemoryException): each process may hold {setup.Request.MemoryLimitMegabytes} MB of managed memory (--memory-limit)");
+        $"{what} ran out of memory: {setup.Request.MemoryLimitMegabytes} MB (--memory-limit)");
 
     private static void ReadTimings(GradeSetup setup, string output, StudentRow row)
     {

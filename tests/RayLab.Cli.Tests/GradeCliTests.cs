@@ -168,7 +168,7 @@ public sealed class GradeCliTests : IDisposable
         GradeSandbox sandbox;
         try
         {
-            sandbox = GradeSandbox.Create(unsafeNoSandbox: !sandboxed, [], packages, memoryLimitMegabytes: 256);
+            sandbox = GradeSandbox.Create(unsafeNoSandbox: !sandboxed, [], packages, new GradeLimits { MemoryMegabytes = 256 });
         }
         catch (UsageException e) when (sandboxed)
         {
@@ -176,16 +176,17 @@ public sealed class GradeCliTests : IDisposable
             return;
         }
 
+        using GradeSandbox owned = sandbox;
         string raylab = Path.Combine(AppContext.BaseDirectory, "raylab.dll");
         ChildRun big = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "dotnet", [raylab, "render", "two-spheres", "--width", "16000", "--height", "16000", "-o", "big.png"],
-            TestContext.Current.CancellationToken);
+            TestContext.Current.CancellationToken, [AppContext.BaseDirectory]);
         Assert.False(big.TimedOut);
         Assert.True(big.ExitCode == 1, $"exit {big.ExitCode}: {big.Output}");
         Assert.Contains("raylab: error: not enough memory to render two-spheres at the requested size", big.Output, StringComparison.Ordinal);
         Assert.False(File.Exists(Path.Combine(lab, "big.png")));
 
         ChildRun small = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "dotnet", [raylab, "render", "two-spheres", "--width", "80", "--height", "60", "-o", "small.png"],
-            TestContext.Current.CancellationToken);
+            TestContext.Current.CancellationToken, [AppContext.BaseDirectory]);
         Assert.True(small.ExitCode == 0, $"exit {small.ExitCode}: {small.Output}");
         Assert.True(File.Exists(Path.Combine(lab, "small.png")));
     }
