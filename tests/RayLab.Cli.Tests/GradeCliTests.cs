@@ -148,6 +148,10 @@ public sealed class GradeCliTests : IDisposable
     [InlineData("--check-timeout", "0", "expected a number of seconds ≥ 1, got 0")]
     [InlineData("--jobs", "0", "expected a count ≥ 1, got 0")]
     [InlineData("--memory-limit", "100", "expected megabytes ≥ 256, got 100")]
+    [InlineData("--process-limit", "10", "expected a count ≥ 64, got 10")]
+    [InlineData("--disk-limit", "10", "expected megabytes ≥ 64, got 10")]
+    [InlineData("--cpu-limit", "1", "expected seconds ≥ 10, got 1")]
+    [InlineData("--unsafe-no-limit", "network", "expected memory, processes, disk, cpu, got 'network'")]
     public void ALimitOutOfRangeIsRefusedWithOneLine(string option, string value, string problem)
     {
         (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.Path, "--checks", _dir.Path, "--out", _dir.File("r"), option, value);
