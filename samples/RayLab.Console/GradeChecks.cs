@@ -5,15 +5,11 @@ namespace RayLab.Cli;
 /// <summary>
 /// The pinned checks, apart from the lab: for each submission a folder of their own in the grader's work, which the lab's
 /// build and code never see, made from the instructor's copy (the kit's checks), compiled against the lab's built
-/// assembly (a reference to the file, not the lab's project: nothing of the lab's MSBuild runs) and run with the lab's
-/// code in a test host of its own, where the checks are read-only and the results out of sight
-/// (<see cref="HostScript"/>).
+/// assembly (a reference to the file, not the lab's project: nothing of the lab's MSBuild runs) and run with their
+/// folder read-only, a folder of results the only one the run writes.
 /// </summary>
 internal static class GradeChecks
 {
-    /// <summary>The folder, inside the checks' folder, for what the grader keeps to itself: the results and the host script.</summary>
-    public const string Private = ".grade";
-
     /// <summary>The folder, inside the checks' folder, the lab's assembly and its data files are copied to.</summary>
     private const string LabFolder = "lab";
 
@@ -52,7 +48,6 @@ internal static class GradeChecks
         CopyFolder(Path.Combine(checks, "tests", "Lab.Tests"), tests);
         File.Copy(Path.Combine(checks, "Directory.Build.props"), Path.Combine(folder, "Directory.Build.props"));
         File.WriteAllText(Path.Combine(folder, "nuget.config"), nugetConfig);
-        Directory.CreateDirectory(Path.Combine(folder, Private));
         if (labNamespace is not null)
         {
             File.WriteAllText(Path.Combine(tests, "GradedLabNamespace.cs"), $"global using {labNamespace};\n");
@@ -100,37 +95,6 @@ internal static class GradeChecks
                 new XAttribute("CopyToOutputDirectory", "PreserveNewest"))));
         test.Save(project);
     }
-
-    /// <summary>
-    /// The program the test platform starts the test host with (its <c>DotNetHostPath</c>): a script that starts
-    /// <c>dotnet</c> in a bubblewrap of its own inside the sandbox, in which the checks' folder is read-only and the
-    /// grader's private folder (the results, this script) is an empty one. The lab's code runs in that host; the test
-    /// platform, outside it, writes the results. Written once into the checks' private folder. Not
-    /// <c>--die-with-parent</c>: the kernel's parent-death signal follows the thread that started the host, and the
-    /// test platform's thread pool retires that thread while the checks run; the outer sandbox's process namespace ends
-    /// the host with the run.
-    /// </summary>
-    /// <param name="folder">The checks' folder.</param>
-    /// <returns>The script's path.</returns>
-    public static string HostScript(string folder)
-    {
-        string script = Path.Combine(folder, Private, "testhost.sh");
-        string quoted = Quote(folder);
-        File.WriteAllText(script, $"""
-            #!/bin/sh
-            # The checks' test host, where the lab's code runs: the checks read-only, the results out of sight.
-            exec bwrap --bind / / --ro-bind {quoted} {quoted} --tmpfs {Quote(Path.Combine(folder, Private))} --dev /dev --proc /proc -- dotnet "$@"
-
-            """);
-        if (!OperatingSystem.IsWindows())
-        {
-            File.SetUnixFileMode(script, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute | UnixFileMode.GroupRead | UnixFileMode.GroupExecute | UnixFileMode.OtherRead | UnixFileMode.OtherExecute);
-        }
-
-        return script;
-    }
-
-    private static string Quote(string path) => "'" + path.Replace("'", "'\\''", StringComparison.Ordinal) + "'";
 
     private static void CopyFolder(string from, string to)
     {

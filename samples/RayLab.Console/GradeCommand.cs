@@ -4,7 +4,8 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// <c>raylab grade SUBMISSIONS --checks KIT/checks/KIND --out DIR [--feed KIT/feed] [--check-timeout S]
-/// [--run-timeout S] [--submission-timeout S] [--jobs N] [--memory-limit MB] [--unsafe-no-sandbox]</c>: builds, checks and runs every
+/// [--run-timeout S] [--submission-timeout S] [--jobs N] [--memory-limit MB] [--process-limit N] [--disk-limit MB]
+/// [--cpu-limit S] [--unsafe-no-limit LIMIT] [--unsafe-no-sandbox]</c>: builds, checks and runs every
 /// submitted lab in a sandbox with the instructor's pinned checks and writes one class table (<see cref="GradeJob"/>).
 /// </summary>
 public static class GradeCommand
@@ -23,11 +24,15 @@ public static class GradeCommand
         var runTimeout = new Option<int>("--run-timeout") { Description = "Seconds the lab's program (dotnet run --project src/Lab, the pictures) may run.", DefaultValueFactory = _ => 180, HelpName = "S" };
         var submissionTimeout = new Option<int>("--submission-timeout") { Description = "Seconds one submission may take in all (build, checks, program); what is left is stopped and the row says so.", DefaultValueFactory = _ => 600, HelpName = "S" };
         var jobs = new Option<int>("--jobs", "-j") { Description = "How many submissions are built and checked at once (each takes about two cores); the programs, whose times the report compares, then run one at a time. Default: half the processor count, at least 1.", DefaultValueFactory = _ => GradeRequest.DefaultJobs, HelpName = "N" };
-        var memoryLimit = new Option<int>("--memory-limit") { Description = "Megabytes of managed memory (the .NET GC heap) each process of a submission may hold: its build, its checks and its program; past it that process fails with OutOfMemoryException and the row says so.", DefaultValueFactory = _ => GradeRequest.DefaultMemoryLimitMegabytes, HelpName = "MB" };
+        var memoryLimit = new Option<int>("--memory-limit") { Description = "Megabytes of memory, native and managed, a submission's step may hold: all its processes together where the machine delegates a cgroup v2, else each process (RLIMIT_DATA); each .NET process's GC heap is capped the same. Past it the row says so.", DefaultValueFactory = _ => GradeRequest.DefaultMemoryLimitMegabytes, HelpName = "MB" };
+        var processLimit = new Option<int>("--process-limit") { Description = "Processes and threads a submission's step may run at once (a pids cgroup v2, else RLIMIT_NPROC in the sandbox's user namespace); a fork loop stops there and the row says so.", DefaultValueFactory = _ => GradeRequest.DefaultProcessLimit, HelpName = "N" };
+        var diskLimit = new Option<int>("--disk-limit") { Description = "Megabytes the lab's writable copy may hold (a tmpfs of that size; needs root), and its /tmp each; a lab that fills it gets a row that says so.", DefaultValueFactory = _ => GradeRequest.DefaultDiskLimitMegabytes, HelpName = "MB" };
+        var cpuLimit = new Option<int>("--cpu-limit") { Description = "Seconds of CPU time each process of a submission may use (RLIMIT_CPU).", DefaultValueFactory = _ => GradeRequest.DefaultCpuLimitSeconds, HelpName = "S" };
+        var unsafeNoLimit = new Option<string[]>("--unsafe-no-limit") { Description = "Grade without a limit this machine cannot hold: memory, processes, disk or cpu (repeat it for more); without it the grader refuses to start.", HelpName = "LIMIT", AllowMultipleArgumentsPerToken = false };
         var unsafeNoSandbox = new Option<bool>("--unsafe-no-sandbox") { Description = "Run the submissions' code without a sandbox, with this user's rights and network: only for labs you trust, or where bubblewrap cannot run (Windows, macOS)." };
         var grade = new Command("grade", "Grade a folder of submitted labs against the instructor's pinned checks: each one built, tested and run in a sandbox (bubblewrap: read-only system, no network, its own folder writable), its pictures scored against the exact image; writes grades.csv, grades.json and index.html.")
         {
-            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, jobs, memoryLimit, unsafeNoSandbox,
+            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, jobs, memoryLimit, processLimit, diskLimit, cpuLimit, unsafeNoLimit, unsafeNoSandbox,
         };
         grade.SetAction(result => GradeJob.Run(
             new GradeRequest(
@@ -42,6 +47,10 @@ public static class GradeCommand
             {
                 Jobs = result.GetRequiredValue(jobs),
                 MemoryLimitMegabytes = result.GetRequiredValue(memoryLimit),
+                ProcessLimit = result.GetRequiredValue(processLimit),
+                DiskLimitMegabytes = result.GetRequiredValue(diskLimit),
+                CpuLimitSeconds = result.GetRequiredValue(cpuLimit),
+                UnsafeNoLimit = result.GetValue(unsafeNoLimit) ?? [],
             },
             stdout,
             stderr,
@@ -79,8 +88,42 @@ public sealed record GradeRequest(
     public const int DefaultMemoryLimitMegabytes = 2048;
 
     /// <summary>
-    /// The managed memory (the .NET GC heap) each of a submission's processes may hold, in megabytes: its build, its
-    /// checks and its program each fail with an <see cref="OutOfMemoryException"/> past it, instead of taking the machine.
+    /// The memory, native and managed, a submission's step may hold, in megabytes: all its processes together where
+    /// the machine delegates a cgroup v2, else each process (RLIMIT_DATA); each .NET process's GC heap is capped the
+    /// same, so that managed memory ends in an <see cref="OutOfMemoryException"/> instead of taking the machine.
     /// </summary>
     public int MemoryLimitMegabytes { get; init; } = DefaultMemoryLimitMegabytes;
+
+    /// <summary>The default of <see cref="ProcessLimit"/>: 1024 (a lab's build, with MSBuild's and the compiler's threads, stays well below).</summary>
+    public const int DefaultProcessLimit = 1024;
+
+    /// <summary>The processes and threads a submission's step may run at once.</summary>
+    public int ProcessLimit { get; init; } = DefaultProcessLimit;
+
+    /// <summary>The default of <see cref="DiskLimitMegabytes"/>: 1024 MB (a built lab holds about 30 MB).</summary>
+    public const int DefaultDiskLimitMegabytes = 1024;
+
+    /// <summary>The megabytes the lab's writable copy may hold, and its /tmp each.</summary>
+    public int DiskLimitMegabytes { get; init; } = DefaultDiskLimitMegabytes;
+
+    /// <summary>The default of <see cref="CpuLimitSeconds"/>: 600 s.</summary>
+    public const int DefaultCpuLimitSeconds = 600;
+
+    /// <summary>The CPU time each of a submission's processes may use, in seconds.</summary>
+    public int CpuLimitSeconds { get; init; } = DefaultCpuLimitSeconds;
+
+    /// <summary>The limits the instructor grades without (<c>--unsafe-no-limit</c>): memory, processes, disk, cpu.</summary>
+    public IReadOnlyList<string> UnsafeNoLimit { get; init; } = [];
+
+    /// <summary>The names <c>--unsafe-no-limit</c> takes.</summary>
+    public static IReadOnlyList<string> LimitNames { get; } = ["memory", "processes", "disk", "cpu"];
+
+    /// <summary>The sandbox's limits: each one asked for, less those the instructor grades without.</summary>
+    public GradeLimits Limits => new()
+    {
+        MemoryMegabytes = UnsafeNoLimit.Contains("memory") ? null : MemoryLimitMegabytes,
+        Processes = UnsafeNoLimit.Contains("processes") ? null : ProcessLimit,
+        DiskMegabytes = UnsafeNoLimit.Contains("disk") ? null : DiskLimitMegabytes,
+        CpuSeconds = UnsafeNoLimit.Contains("cpu") ? null : CpuLimitSeconds,
+    };
 }

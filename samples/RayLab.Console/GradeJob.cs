@@ -70,10 +70,15 @@ public static partial class GradeJob
             Directory.CreateDirectory(packages);
             stdout.WriteLine($"restoring the checks' packages from {setup.Feed} (once, outside the sandbox)");
             RestoreChecks(setup, work, packages, cancellation);
-            GradeSandbox sandbox = GradeSandbox.Create(request.UnsafeNoSandbox, [setup.Submissions, setup.Output, work], packages, request.MemoryLimitMegabytes);
+            using GradeSandbox sandbox = GradeSandbox.Create(request.UnsafeNoSandbox, [setup.Submissions, setup.Output, work], packages, request.Limits);
             if (!sandbox.IsSandboxed)
             {
                 stdout.WriteLine("warning: --unsafe-no-sandbox: the submissions' code runs as you, with your files and network");
+            }
+
+            foreach (string line in sandbox.Mechanisms)
+            {
+                stdout.WriteLine(line);
             }
 
             GradeReference reference = GradeReference.Create(setup);
@@ -201,7 +206,7 @@ public static partial class GradeJob
             string? assembly = GradeChecks.BuiltAssembly(lab.Path);
             if (build.TimedOut || build.ExitCode != 0 || assembly is null)
             {
-                row.Problems.Add(build.TimedOut ? "build time limit" : "does not build");
+                row.Problems.Add(build.TimedOut ? "build time limit" : build.Limit != SandboxLimit.None ? $"build {GradeSandbox.LimitName(build.Limit)}" : "does not build");
                 row.Detail = build.TimedOut ? "the build ran past the submission's limit"
                     : build.ExitCode != 0 ? FirstErrors(build.Output, lab.Path)
                     : "the build left no assembly at src/Lab/bin/Debug/net10.0/ (the project file's name, .dll)";
@@ -220,16 +225,18 @@ public static partial class GradeJob
             cancellation.ThrowIfCancellationRequested();
             if (checksBuild.TimedOut || checksBuild.ExitCode != 0)
             {
-                row.Problems.Add(checksBuild.TimedOut ? "build time limit" : "checks do not build");
+                row.Problems.Add(checksBuild.TimedOut ? "build time limit" : checksBuild.Limit != SandboxLimit.None ? $"build {GradeSandbox.LimitName(checksBuild.Limit)}" : "checks do not build");
                 row.Detail = checksBuild.TimedOut ? "the build ran past the submission's limit" : FirstErrors(checksBuild.Output, checksFolder);
                 return lab;
             }
 
-            // 4. The checks run: runs of dotnet test; a run the hang detection stops names the checks that were running,
-            // which count as timed out, and the next run leaves them out.
-            string? host = sandbox.IsSandboxed ? GradeChecks.HostScript(checksFolder) : null;
+            // 4. The checks run, from their folder shown read-only, with only the results' folder writable: runs of
+            // dotnet test; a run the hang detection stops names the checks that were running, which count as timed out,
+            // and the next run leaves them out.
+            string results = Path.Combine(work, "results-of", row.Folder);
+            Directory.CreateDirectory(results);
             var checks = Stopwatch.StartNew();
-            RunChecks(setup, sandbox, checksFolder, host, lab.Log, row, () => lab.Left(setup), cancellation);
+            RunChecks(setup, sandbox, new CheckFolders(checksFolder, results), lab.Log, row, () => lab.Left(setup), cancellation);
             row.Steps["checks"] = checks.Elapsed.TotalSeconds;
             lab.Built = true;
             return lab;
@@ -262,7 +269,12 @@ public static partial class GradeJob
                 {
                     row.Problems.Add(limit < setup.Request.RunTimeout ? "submission time limit" : "program time limit");
                 }
-                else if (run.ExitCode != 0 && OutOfMemory(run.Output))
+                else if (run.Limit is not SandboxLimit.None and not SandboxLimit.Memory)
+                {
+                    row.Problems.Add($"program {GradeSandbox.LimitName(run.Limit)}");
+                    row.Detail ??= FirstErrors(run.Output, lab.Path);
+                }
+                else if (run.ExitCode != 0 && (OutOfMemory(run.Output) || run.Limit == SandboxLimit.Memory))
                 {
                     row.Problems.Add("program memory limit");
                     row.Detail ??= OutOfMemoryDetail(setup, "the program");
@@ -283,18 +295,15 @@ public static partial class GradeJob
         row.Seconds = lab.Clock.Elapsed.TotalSeconds;
     }
 
-    private static void RunChecks(GradeSetup setup, GradeSandbox sandbox, string lab, string? host, string log, StudentRow row, Func<TimeSpan> left, CancellationToken cancellation)
+    private static void RunChecks(GradeSetup setup, GradeSandbox sandbox, CheckFolders folders, string log, StudentRow row, Func<TimeSpan> left, CancellationToken cancellation)
     {
         var excluded = new List<string>();
-        RunCheckRuns(setup, sandbox, lab, host, log, row, left, excluded, cancellation);
+        RunCheckRuns(setup, sandbox, folders, log, row, left, excluded, cancellation);
         if (excluded.Count > 0)
         {
-            ListLeftOut(sandbox, lab, host, log, row, left, excluded, cancellation);
+            ListLeftOut(sandbox, folders, log, row, left, excluded, cancellation);
         }
     }
-
-    /// <summary>The test platform's setting that starts its test host with <paramref name="host"/>; none without one.</summary>
-    private static string[] HostSetting(string? host) => host is null ? [] : ["--", $"RunConfiguration.DotNetHostPath={host}"];
 
     /// <summary>
     /// The lab's uses of other assemblies that the checks' list refuses: each fails the sections it names, and the row
@@ -345,15 +354,16 @@ public static partial class GradeJob
     /// of that method which had no result by then never ran: listed by the test platform, they count as not run, and
     /// the row's checks add up to the lab's.
     /// </summary>
-    private static void ListLeftOut(GradeSandbox sandbox, string lab, string? host, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
+    private static void ListLeftOut(GradeSandbox sandbox, CheckFolders folders, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
     {
         if (left() <= TimeSpan.Zero)
         {
             return;
         }
 
-        ChildRun list = sandbox.Run(lab, log, Min(left(), TimeSpan.FromMinutes(1)), "dotnet",
-            ["test", Path.Combine("tests", "Lab.Tests"), "--no-build", "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}")), .. HostSetting(host)], cancellation);
+        ChildRun list = sandbox.Run(folders.Results, log, Min(left(), TimeSpan.FromMinutes(1)), "dotnet",
+            ["test", folders.Project, "--no-build", "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}"))], cancellation,
+            readOnly: [folders.Checks]);
         cancellation.ThrowIfCancellationRequested();
         if (list.TimedOut || list.ExitCode != 0)
         {
@@ -390,7 +400,7 @@ public static partial class GradeJob
         }
     }
 
-    private static void RunCheckRuns(GradeSetup setup, GradeSandbox sandbox, string lab, string? host, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
+    private static void RunCheckRuns(GradeSetup setup, GradeSandbox sandbox, CheckFolders folders, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
     {
         for (int attempt = 1; ; attempt++)
         {
@@ -400,18 +410,24 @@ public static partial class GradeJob
                 return;
             }
 
-            string results = Path.Combine(lab, GradeChecks.Private, $"results-{attempt}");
-            List<string> args = ["test", Path.Combine("tests", "Lab.Tests"), "--no-build", "--logger", "trx;LogFileName=checks.trx", "--results-directory", results,
+            string lab = folders.Results;
+            string results = Path.Combine(lab, $"results-{attempt}");
+            List<string> args = ["test", folders.Project, "--no-build", "--logger", "trx;LogFileName=checks.trx", "--results-directory", results,
                 "--blame-hang-timeout", string.Create(CultureInfo.InvariantCulture, $"{(int)Math.Ceiling(setup.Request.CheckTimeout.TotalSeconds)}s"), "--blame-hang-dump-type", "none"];
             if (excluded.Count > 0)
             {
                 args.AddRange(["--filter", string.Join('&', excluded.Select(n => $"FullyQualifiedName!={n}"))]);
             }
 
-            args.AddRange(HostSetting(host));
-            ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation);
+            ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation, readOnly: [folders.Checks]);
             cancellation.ThrowIfCancellationRequested();
-            if (OutOfMemory(test.Output))
+            if (test.Limit is not SandboxLimit.None and not SandboxLimit.Memory)
+            {
+                row.Problems.Add($"check {GradeSandbox.LimitName(test.Limit)}");
+                row.Detail ??= FirstErrors(test.Output, lab);
+            }
+
+            if (OutOfMemory(test.Output) || test.Limit == SandboxLimit.Memory)
             {
                 row.Problems.Add("check memory limit");
                 row.Detail ??= OutOfMemoryDetail(setup, "a check");
@@ -507,7 +523,7 @@ public static partial class GradeJob
         output.Contains("System.OutOfMemoryException", StringComparison.Ordinal) || OutOfMemoryLine().IsMatch(output);
 
     private static string OutOfMemoryDetail(GradeSetup setup, string what) => string.Create(CultureInfo.InvariantCulture,
-        $"{what} ran out of memory (OutOfMemoryException): each process may hold {setup.Request.MemoryLimitMegabytes} MB of managed memory (--memory-limit)");
+        $"{what} ran out of memory: {setup.Request.MemoryLimitMegabytes} MB (--memory-limit)");
 
     private static void ReadTimings(GradeSetup setup, string output, StudentRow row)
     {
@@ -841,3 +857,12 @@ internal sealed record PictureScore(double Rmse, double Flip, string? Problem);
 /// <param name="Problem">The row's problem, or null for none.</param>
 /// <param name="Detail">The row's detail, or null for none.</param>
 public readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail);
+
+/// <summary>Where a submission's checks run: their built folder (read-only to the run) and the folder the run writes, its results.</summary>
+/// <param name="Checks">The checks' folder (<see cref="GradeChecks.Prepare"/>), built.</param>
+/// <param name="Results">The run's writable folder: its home, its TRX files and the test platform's blame data.</param>
+internal sealed record CheckFolders(string Checks, string Results)
+{
+    /// <summary>The checks' test project.</summary>
+    public string Project => System.IO.Path.Combine(Checks, "tests", "Lab.Tests");
+}

@@ -85,6 +85,22 @@ internal sealed class GradeSetup
             throw new UsageException($"--memory-limit: expected megabytes ≥ 256, got {request.MemoryLimitMegabytes}");
         }
 
+        foreach ((string option, int value, int least, string unit) in new[] { ("--process-limit", request.ProcessLimit, 64, "a count"), ("--disk-limit", request.DiskLimitMegabytes, 64, "megabytes"), ("--cpu-limit", request.CpuLimitSeconds, 10, "seconds") })
+        {
+            if (value < least)
+            {
+                throw new UsageException($"{option}: expected {unit} ≥ {least}, got {value}");
+            }
+        }
+
+        foreach (string limit in request.UnsafeNoLimit)
+        {
+            if (!GradeRequest.LimitNames.Contains(limit))
+            {
+                throw new UsageException($"--unsafe-no-limit: expected {string.Join(", ", GradeRequest.LimitNames)}, got '{limit}'");
+            }
+        }
+
         string submissions = Folder(request.Submissions, "submissions");
         string checks = Folder(request.Checks, "--checks");
         string feed = request.Feed is null

@@ -163,6 +163,10 @@ public sealed class GradeCliTests : IDisposable
     [InlineData("--check-timeout", "0", "expected a number of seconds ≥ 1, got 0")]
     [InlineData("--jobs", "0", "expected a count ≥ 1, got 0")]
     [InlineData("--memory-limit", "100", "expected megabytes ≥ 256, got 100")]
+    [InlineData("--process-limit", "10", "expected a count ≥ 64, got 10")]
+    [InlineData("--disk-limit", "10", "expected megabytes ≥ 64, got 10")]
+    [InlineData("--cpu-limit", "1", "expected seconds ≥ 10, got 1")]
+    [InlineData("--unsafe-no-limit", "network", "expected memory, processes, disk, cpu, got 'network'")]
     public void ALimitOutOfRangeIsRefusedWithOneLine(string option, string value, string problem)
     {
         (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.Path, "--checks", _dir.Path, "--out", _dir.File("r"), option, value);
@@ -183,7 +187,7 @@ public sealed class GradeCliTests : IDisposable
         GradeSandbox sandbox;
         try
         {
-            sandbox = GradeSandbox.Create(unsafeNoSandbox: !sandboxed, [], packages, memoryLimitMegabytes: 256);
+            sandbox = GradeSandbox.Create(unsafeNoSandbox: !sandboxed, [], packages, new GradeLimits { MemoryMegabytes = 256 });
         }
         catch (UsageException e) when (sandboxed)
         {
@@ -191,16 +195,17 @@ public sealed class GradeCliTests : IDisposable
             return;
         }
 
+        using GradeSandbox owned = sandbox;
         string raylab = Path.Combine(AppContext.BaseDirectory, "raylab.dll");
         ChildRun big = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "dotnet", [raylab, "render", "two-spheres", "--width", "16000", "--height", "16000", "-o", "big.png"],
-            TestContext.Current.CancellationToken);
+            TestContext.Current.CancellationToken, [AppContext.BaseDirectory]);
         Assert.False(big.TimedOut);
         Assert.True(big.ExitCode == 1, $"exit {big.ExitCode}: {big.Output}");
         Assert.Contains("raylab: error: not enough memory to render two-spheres at the requested size", big.Output, StringComparison.Ordinal);
         Assert.False(File.Exists(Path.Combine(lab, "big.png")));
 
         ChildRun small = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "dotnet", [raylab, "render", "two-spheres", "--width", "80", "--height", "60", "-o", "small.png"],
-            TestContext.Current.CancellationToken);
+            TestContext.Current.CancellationToken, [AppContext.BaseDirectory]);
         Assert.True(small.ExitCode == 0, $"exit {small.ExitCode}: {small.Output}");
         Assert.True(File.Exists(Path.Combine(lab, "small.png")));
     }

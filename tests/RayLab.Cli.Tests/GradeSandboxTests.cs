@@ -1,0 +1,138 @@
+namespace RayLab.Cli.Tests;
+
+/// <summary>
+/// <c>raylab grade</c>'s sandbox for real (bubblewrap, the limits of this machine), with small shell commands as the
+/// submission: what it sees, and that each limit stops what goes past it and says which limit it was. Skipped, with
+/// the grader's own reason, where the sandbox or a limit cannot run here.
+/// </summary>
+public sealed class GradeSandboxTests : IDisposable
+{
+    private readonly TempDirectory _dir = new();
+
+    public void Dispose() => _dir.Dispose();
+
+    [Fact]
+    public void ASubmissionSeesItsCopyButNoHomeFolderNoKitAndNoOtherSubmission()
+    {
+        // A kit and another student's lab beside this lab, in the same temporary folder, and a secret in each.
+        string kit = Directory.CreateDirectory(_dir.File("kit/checks/exercise/src/Lab")).FullName;
+        File.WriteAllText(Path.Combine(kit, "LabOrthoCamera.cs"), "the reference solution");
+        string other = Directory.CreateDirectory(_dir.File("submissions/other")).FullName;
+        File.WriteAllText(Path.Combine(other, "secret.txt"), "another student's lab");
+        string lab = Directory.CreateDirectory(_dir.File("work/labs/anna")).FullName;
+        File.WriteAllText(Path.Combine(lab, "own.txt"), "my own file");
+        using GradeSandbox sandbox = Sandbox(new GradeLimits());
+
+        ChildRun run = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "bash",
+            ["-c", $"cat own.txt; echo; echo written > new.txt && echo wrote; ls -a /; for f in /root /home /work {kit}/LabOrthoCamera.cs {other}/secret.txt /etc/shadow; do test -e $f && echo \"SEES $f\"; done; cat {kit}/LabOrthoCamera.cs {other}/secret.txt /root/.bashrc 2>/dev/null; echo done"],
+            TestContext.Current.CancellationToken);
+
+        Assert.True(run.ExitCode == 0, $"exit {run.ExitCode}: {run.Output}");
+        Assert.Contains("my own file", run.Output, StringComparison.Ordinal);
+        Assert.Contains("wrote", run.Output, StringComparison.Ordinal);
+        Assert.Equal("written\n", File.ReadAllText(Path.Combine(lab, "new.txt")));
+        Assert.Contains("done", run.Output, StringComparison.Ordinal);
+        Assert.DoesNotContain("SEES ", run.Output, StringComparison.Ordinal);
+        Assert.DoesNotContain("the reference solution", run.Output, StringComparison.Ordinal);
+        Assert.DoesNotContain("another student's lab", run.Output, StringComparison.Ordinal);
+        Assert.Equal(SandboxLimit.None, run.Limit);
+    }
+
+    [Fact]
+    public void NativeMemoryPastTheLimitIsStoppedAndTheRunSaysSo()
+    {
+        // bash holds 600 MB of command output in a variable (native memory, malloc): past a limit of 256 MB.
+        string lab = Directory.CreateDirectory(_dir.File("lab")).FullName;
+        using GradeSandbox sandbox = Sandbox(new GradeLimits { MemoryMegabytes = 256 });
+        ChildRun run = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "bash",
+            ["-c", "x=$(head -c 600000000 /dev/zero | tr '\\0' a); echo \"held ${#x}\""], TestContext.Current.CancellationToken);
+        Assert.False(run.TimedOut);
+        Assert.DoesNotContain("held 600000000", run.Output, StringComparison.Ordinal);
+        Assert.True(run.Limit == SandboxLimit.Memory, $"{run.Limit}, exit {run.ExitCode}: {run.Output}");
+
+        // Within it, the same command runs.
+        ChildRun small = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "bash",
+            ["-c", "x=$(head -c 6000000 /dev/zero | tr '\\0' a); echo \"held ${#x}\""], TestContext.Current.CancellationToken);
+        Assert.Contains("held 6000000", small.Output, StringComparison.Ordinal);
+        Assert.Equal(SandboxLimit.None, small.Limit);
+    }
+
+    [Fact]
+    public void AForkLoopStopsAtTheProcessLimitAndTheRunSaysSo()
+    {
+        // 500 sleeping processes, past a limit of 64; dash gives up at the first fork that fails.
+        string lab = Directory.CreateDirectory(_dir.File("lab")).FullName;
+        using GradeSandbox sandbox = Sandbox(new GradeLimits { Processes = 64 });
+        ChildRun run = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "sh",
+            ["-c", "i=0; while [ $i -lt 500 ]; do sleep 600 & i=$((i+1)); done; echo \"started $i\""], TestContext.Current.CancellationToken);
+        Assert.False(run.TimedOut);
+        Assert.DoesNotContain("started 500", run.Output, StringComparison.Ordinal);
+        Assert.True(run.Limit == SandboxLimit.Processes, $"{run.Limit}, exit {run.ExitCode}: {run.Output}");
+    }
+
+    [Fact]
+    public void ADiskFillerStopsAtTheDiskLimitAndTheRunSaysSo()
+    {
+        // 200 MB into the copy, past a limit of 64 MB; what the copy held before is still there.
+        string lab = Directory.CreateDirectory(_dir.File("work/labs/filler")).FullName;
+        File.WriteAllText(Path.Combine(lab, "own.txt"), "my own file");
+        using GradeSandbox sandbox = Sandbox(new GradeLimits { DiskMegabytes = 64 });
+        ChildRun run = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "bash",
+            ["-c", "head -c 200000000 /dev/zero > fill.bin; echo \"exit $?\"; cat own.txt"], TestContext.Current.CancellationToken);
+        Assert.False(run.TimedOut);
+        Assert.Contains("my own file", run.Output, StringComparison.Ordinal);
+        Assert.True(run.Limit == SandboxLimit.Disk, $"{run.Limit}, exit {run.ExitCode}: {run.Output}");
+        Assert.InRange(new FileInfo(Path.Combine(lab, "fill.bin")).Length, 0, 64L << 20);
+
+        // The sandbox's /tmp has the same cap.
+        ChildRun temp = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "bash",
+            ["-c", "rm fill.bin; head -c 200000000 /dev/zero > /tmp/fill.bin; ls -l /tmp/fill.bin"], TestContext.Current.CancellationToken);
+        Assert.True(temp.Limit == SandboxLimit.Disk, $"{temp.Limit}, exit {temp.ExitCode}: {temp.Output}");
+        Assert.DoesNotContain("200000000", temp.Output, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void ALoopPastTheCpuLimitIsStoppedAndTheRunSaysSo()
+    {
+        string lab = Directory.CreateDirectory(_dir.File("lab")).FullName;
+        using GradeSandbox sandbox = Sandbox(new GradeLimits { CpuSeconds = 1 });
+        ChildRun run = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "bash", ["-c", "while :; do :; done"], TestContext.Current.CancellationToken);
+        Assert.False(run.TimedOut);
+        Assert.True(run.Limit == SandboxLimit.CpuTime, $"{run.Limit}, exit {run.ExitCode}: {run.Output}");
+    }
+
+    [Fact]
+    public void EachLimitNamesItsMechanism()
+    {
+        using GradeSandbox sandbox = Sandbox(new GradeLimits { MemoryMegabytes = 512, Processes = 256, DiskMegabytes = 128, CpuSeconds = 60 });
+        string[] lines = [.. sandbox.Mechanisms];
+        foreach (string limit in (string[])["memory limit: 512 MB", "process limit: 256 ", "disk limit: 128 MB", "CPU time limit: 60 s"])
+        {
+            Assert.Contains(lines, l => l.StartsWith(limit, StringComparison.Ordinal));
+        }
+    }
+
+    [Fact]
+    public void WithoutTheSandboxTheLimitsSayNone()
+    {
+        using GradeSandbox sandbox = GradeSandbox.Create(unsafeNoSandbox: true, [], Directory.CreateDirectory(_dir.File("packages")).FullName, new GradeLimits { MemoryMegabytes = 512 });
+        Assert.False(sandbox.IsSandboxed);
+        Assert.Contains("process limit: none", sandbox.Mechanisms);
+        Assert.Contains("disk limit: none", sandbox.Mechanisms);
+    }
+
+    /// <summary>The grader's sandbox with <paramref name="limits"/>; the test is skipped with the grader's reason where it cannot run here.</summary>
+    private GradeSandbox Sandbox(GradeLimits limits)
+    {
+        string packages = Directory.CreateDirectory(_dir.File("packages")).FullName;
+        try
+        {
+            return GradeSandbox.Create(unsafeNoSandbox: false, [_dir.File("kit"), _dir.File("submissions")], packages, limits);
+        }
+        catch (UsageException e)
+        {
+            Assert.Skip($"the sandbox or a limit cannot run here: {e.Message}");
+            throw;
+        }
+    }
+}
