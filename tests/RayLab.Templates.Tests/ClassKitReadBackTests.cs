@@ -57,14 +57,14 @@ public sealed partial class ClassKitTests
 
         // A name that is a spreadsheet formula; its program waits 2 s, prints render lines that claim 0.001 ms and
         // 1 ray per pixel, and fails with an error line that is a formula too.
-        const string formula = "=HYPERLINK(\"http://evil.example/\",\"click\")";
+        const string formula = "=HYPERLINK(\"https:evil.example\",\"click\")"; // a folder's name: no slash
         string liar = await kit.NewLabAsync(submissions, "liar", restore: false);
         Edit(liar, "src/Lab/Program.cs", LastLine, LastLine + """
 
                     Thread.Sleep(2000);
                     Console.WriteLine("orthographic mymethod    480,000 rays ( 1.00 per pixel)      0.001 ms");
                     Console.WriteLine("perspective  mymethod    480,000 rays ( 1.00 per pixel)      0.001 ms");
-                    Console.Error.WriteLine("=HYPERLINK(\"http://evil.example/\",\"click\") error: the lab's own words");
+                    Console.Error.WriteLine("=HYPERLINK(\"https:evil.example\",\"click\") error: the lab's own words");
                     Environment.Exit(3);
             """);
         Directory.Move(liar, Path.Combine(submissions, formula));
