@@ -55,8 +55,8 @@ public sealed partial class ClassKitTests
                     File.Copy("claim-20000.png", "out/two-spheres-orthographic-mymethod.png", overwrite: true);
             """);
 
-        // A name that is a spreadsheet formula; its program waits 2 s, prints render lines that claim 0.001 ms and
-        // 1 ray per pixel, and fails with an error line that is a formula too.
+        // A name that is a spreadsheet formula; its program starts with an error line that is a formula too (the first
+        // error line, the row's detail), renders, waits 2 s, prints render lines that claim 0.001 ms, and fails.
         const string formula = "=HYPERLINK(\"https:evil.example\",\"click\")"; // a folder's name: no slash
         string liar = await kit.NewLabAsync(submissions, "liar", restore: false);
         Edit(liar, "src/Lab/Program.cs", LastLine, LastLine + """
@@ -64,8 +64,11 @@ public sealed partial class ClassKitTests
                     Thread.Sleep(2000);
                     Console.WriteLine("orthographic mymethod    480,000 rays ( 1.00 per pixel)      0.001 ms");
                     Console.WriteLine("perspective  mymethod    480,000 rays ( 1.00 per pixel)      0.001 ms");
-                    Console.Error.WriteLine("=HYPERLINK(\"https:evil.example\",\"click\") error: the lab's own words");
                     Environment.Exit(3);
+            """);
+        Edit(liar, "src/Lab/Program.cs", "SceneDescription file = TwoSpheres.Load();", """
+            Console.Error.WriteLine("=HYPERLINK(\"https:evil.example\",\"click\") error: the lab's own words");
+                    SceneDescription file = TwoSpheres.Load();
             """);
         Directory.Move(liar, Path.Combine(submissions, formula));
 
