@@ -4,6 +4,7 @@ using System.Text;
 using System.Text.RegularExpressions;
 using System.Xml.Linq;
 using RayLab.Reports.Imaging;
+using RayLab.Grading;
 using RayLab.Metrics;
 using RayLab.Scenes;
 
@@ -191,24 +192,45 @@ public static partial class GradeJob
             }
 
             CopyLab(root, lab.Path);
-            PinChecks(setup, lab.Path);
+            string? space = PinBuildFiles(setup, lab.Path);
 
-            // 1. Build (the restore comes from the prepared, read-only package folder; no network).
+            // 1. The lab's own project, alone (the restore comes from the prepared, read-only package folder; no network).
             ChildRun build = sandbox.Run(lab.Path, lab.Log, Min(lab.Left(setup), TimeSpan.FromMinutes(10)), "dotnet",
-                ["build", Path.Combine("tests", "Lab.Tests"), "-nodeReuse:false", "-p:UseSharedCompilation=false"], cancellation);
+                ["build", Path.Combine("src", "Lab"), "-nodeReuse:false", "-p:UseSharedCompilation=false"], cancellation);
             row.Steps["build"] = build.Elapsed.TotalSeconds;
             cancellation.ThrowIfCancellationRequested();
-            if (build.TimedOut || build.ExitCode != 0)
+            string? assembly = GradeChecks.BuiltAssembly(lab.Path);
+            if (build.TimedOut || build.ExitCode != 0 || assembly is null)
             {
                 row.Problems.Add(build.TimedOut ? "build time limit" : "does not build");
-                row.Detail = build.TimedOut ? "the build ran past the submission's limit" : FirstErrors(build.Output, lab.Path);
+                row.Detail = build.TimedOut ? "the build ran past the submission's limit"
+                    : build.ExitCode != 0 ? FirstErrors(build.Output, lab.Path)
+                    : "the build left no assembly at src/Lab/bin/Debug/net10.0/ (the project file's name, .dll)";
                 return lab;
             }
 
-            // 2. The checks: runs of dotnet test; a run the hang detection stops names the checks that were running, which
-            // count as timed out, and the next run leaves them out.
+            // 2. What the lab's code uses from other assemblies, read from the built assembly (never loaded here).
+            ScanUses(setup, assembly, row);
+
+            // 3. The checks, in a folder of their own the lab never sees, compiled against the lab's assembly.
+            string checksFolder = Path.Combine(work, "checks-of", row.Folder);
+            GradeChecks.Prepare(setup.Checks, NuGetConfig(setup.Feed), assembly, space, checksFolder);
+            ChildRun checksBuild = sandbox.Run(checksFolder, lab.Log, Min(lab.Left(setup), TimeSpan.FromMinutes(10)), "dotnet",
+                ["build", Path.Combine("tests", "Lab.Tests"), "-nodeReuse:false", "-p:UseSharedCompilation=false"], cancellation);
+            row.Steps["build"] += checksBuild.Elapsed.TotalSeconds;
+            cancellation.ThrowIfCancellationRequested();
+            if (checksBuild.TimedOut || checksBuild.ExitCode != 0)
+            {
+                row.Problems.Add(checksBuild.TimedOut ? "build time limit" : "checks do not build");
+                row.Detail = checksBuild.TimedOut ? "the build ran past the submission's limit" : FirstErrors(checksBuild.Output, checksFolder);
+                return lab;
+            }
+
+            // 4. The checks run: runs of dotnet test; a run the hang detection stops names the checks that were running,
+            // which count as timed out, and the next run leaves them out.
+            string? host = sandbox.IsSandboxed ? GradeChecks.HostScript(checksFolder) : null;
             var checks = Stopwatch.StartNew();
-            RunChecks(setup, sandbox, lab.Path, lab.Log, row, () => lab.Left(setup), cancellation);
+            RunChecks(setup, sandbox, checksFolder, host, lab.Log, row, () => lab.Left(setup), cancellation);
             row.Steps["checks"] = checks.Elapsed.TotalSeconds;
             lab.Built = true;
             return lab;
@@ -267,13 +289,60 @@ public static partial class GradeJob
         row.Seconds = lab.Clock.Elapsed.TotalSeconds;
     }
 
-    private static void RunChecks(GradeSetup setup, GradeSandbox sandbox, string lab, string log, StudentRow row, Func<TimeSpan> left, CancellationToken cancellation)
+    private static void RunChecks(GradeSetup setup, GradeSandbox sandbox, string lab, string? host, string log, StudentRow row, Func<TimeSpan> left, CancellationToken cancellation)
     {
         var excluded = new List<string>();
-        RunCheckRuns(setup, sandbox, lab, log, row, left, excluded, cancellation);
+        RunCheckRuns(setup, sandbox, lab, host, log, row, left, excluded, cancellation);
         if (excluded.Count > 0)
         {
-            ListLeftOut(sandbox, lab, log, row, left, excluded, cancellation);
+            ListLeftOut(sandbox, lab, host, log, row, left, excluded, cancellation);
+        }
+    }
+
+    /// <summary>The test platform's setting that starts its test host with <paramref name="host"/>; none without one.</summary>
+    private static string[] HostSetting(string? host) => host is null ? [] : ["--", $"RunConfiguration.DotNetHostPath={host}"];
+
+    /// <summary>
+    /// The lab's uses of other assemblies that the checks' list refuses: each fails the sections it names, and the row
+    /// says so with the first of them.
+    /// </summary>
+    private static void ScanUses(GradeSetup setup, string assembly, StudentRow row)
+    {
+        if (setup.Uses is null)
+        {
+            return;
+        }
+
+        AssemblyUses uses;
+        try
+        {
+            uses = AssemblyUses.Read(assembly);
+        }
+        catch (BadImageFormatException e)
+        {
+            row.Problems.Add("not its own code");
+            row.Detail ??= $"the built lab is not a .NET assembly this grader can read: {e.Message}";
+            foreach (string section in setup.Uses.Sections.Values.Distinct(StringComparer.Ordinal))
+            {
+                row.Refused.TryAdd(section, "the built lab cannot be read");
+            }
+
+            return;
+        }
+
+        foreach (UseFinding finding in setup.Uses.Check(uses))
+        {
+            row.Uses.Add(finding.Line(polish: false));
+            foreach (string section in finding.Sections)
+            {
+                row.Refused.TryAdd(section, finding.Message(polish: false));
+            }
+        }
+
+        if (row.Uses.Count > 0)
+        {
+            row.Problems.Add("not its own code");
+            row.Detail ??= row.Uses[0];
         }
     }
 
@@ -282,7 +351,7 @@ public static partial class GradeJob
     /// of that method which had no result by then never ran: listed by the test platform, they count as not run, and
     /// the row's checks add up to the lab's.
     /// </summary>
-    private static void ListLeftOut(GradeSandbox sandbox, string lab, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
+    private static void ListLeftOut(GradeSandbox sandbox, string lab, string? host, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
     {
         if (left() <= TimeSpan.Zero)
         {
@@ -290,7 +359,7 @@ public static partial class GradeJob
         }
 
         ChildRun list = sandbox.Run(lab, log, Min(left(), TimeSpan.FromMinutes(1)), "dotnet",
-            ["test", Path.Combine("tests", "Lab.Tests"), "--no-build", "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}"))], cancellation);
+            ["test", Path.Combine("tests", "Lab.Tests"), "--no-build", "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}")), .. HostSetting(host)], cancellation);
         cancellation.ThrowIfCancellationRequested();
         if (list.TimedOut || list.ExitCode != 0)
         {
@@ -327,7 +396,7 @@ public static partial class GradeJob
         }
     }
 
-    private static void RunCheckRuns(GradeSetup setup, GradeSandbox sandbox, string lab, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
+    private static void RunCheckRuns(GradeSetup setup, GradeSandbox sandbox, string lab, string? host, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
     {
         for (int attempt = 1; ; attempt++)
         {
@@ -337,7 +406,7 @@ public static partial class GradeJob
                 return;
             }
 
-            string results = Path.Combine(lab, ".grade", $"results-{attempt}");
+            string results = Path.Combine(lab, GradeChecks.Private, $"results-{attempt}");
             List<string> args = ["test", Path.Combine("tests", "Lab.Tests"), "--no-build", "--logger", "trx;LogFileName=checks.trx", "--results-directory", results,
                 "--blame-hang-timeout", string.Create(CultureInfo.InvariantCulture, $"{(int)Math.Ceiling(setup.Request.CheckTimeout.TotalSeconds)}s"), "--blame-hang-dump-type", "none"];
             if (excluded.Count > 0)
@@ -345,6 +414,7 @@ public static partial class GradeJob
                 args.AddRange(["--filter", string.Join('&', excluded.Select(n => $"FullyQualifiedName!={n}"))]);
             }
 
+            args.AddRange(HostSetting(host));
             ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation);
             cancellation.ThrowIfCancellationRequested();
             if (OutOfMemory(test.Output))
@@ -551,11 +621,13 @@ public static partial class GradeJob
     }
 
     /// <summary>
-    /// The instructor's checks in place of the student's: the whole tests/ folder, the root Directory.Build.props, no
-    /// root file that could change how the checks build (Directory.Build.targets, Directory.Packages.props,
-    /// global.json, another nuget.config), the kit's feed as the only source, and the student's namespace in scope.
+    /// The instructor's build settings in place of the student's for the lab's own build: the root
+    /// Directory.Build.props, no root file that could change how it builds (Directory.Build.targets,
+    /// Directory.Packages.props, global.json, another nuget.config), the kit's feed as the only source; the student's
+    /// tests/ left out (the checks are built elsewhere, <see cref="GradeChecks"/>).
     /// </summary>
-    private static void PinChecks(GradeSetup setup, string lab)
+    /// <returns>The lab's root namespace where it differs from the checks' (to bring into the checks' scope), or null.</returns>
+    private static string? PinBuildFiles(GradeSetup setup, string lab)
     {
         string tests = Path.Combine(lab, "tests");
         if (Directory.Exists(tests))
@@ -563,7 +635,6 @@ public static partial class GradeJob
             Directory.Delete(tests, recursive: true);
         }
 
-        CopyLab(Path.Combine(setup.Checks, "tests", "Lab.Tests"), Path.Combine(tests, "Lab.Tests"));
         foreach (string file in Directory.EnumerateFiles(lab))
         {
             string fileName = Path.GetFileName(file);
@@ -578,22 +649,21 @@ public static partial class GradeJob
         WriteNuGetConfig(lab, setup.Feed);
         string? project = Directory.EnumerateFiles(Path.Combine(lab, "src", "Lab"), "*.csproj").Order(StringComparer.Ordinal).FirstOrDefault();
         string? space = project is null ? null : RootNamespace().Match(File.ReadAllText(project)) is { Success: true } m ? m.Groups[1].Value.Trim() : null;
-        if (space is not null && space != setup.ChecksNamespace && Identifier().IsMatch(space))
-        {
-            File.WriteAllText(Path.Combine(tests, "Lab.Tests", "GradedLabNamespace.cs"), $"global using {space};\n");
-        }
+        return space is not null && space != setup.ChecksNamespace && Identifier().IsMatch(space) ? space : null;
     }
 
-    private static void WriteNuGetConfig(string lab, string feed) =>
-        File.WriteAllText(Path.Combine(lab, "nuget.config"), $"""
-            <?xml version="1.0" encoding="utf-8"?>
-            <configuration>
-              <packageSources>
-                <clear />
-                <add key="class-kit" value="{System.Security.SecurityElement.Escape(feed)}" />
-              </packageSources>
-            </configuration>
-            """);
+    private static void WriteNuGetConfig(string lab, string feed) => File.WriteAllText(Path.Combine(lab, "nuget.config"), NuGetConfig(feed));
+
+    /// <summary>A nuget.config whose only package source is the kit's feed.</summary>
+    private static string NuGetConfig(string feed) => $"""
+        <?xml version="1.0" encoding="utf-8"?>
+        <configuration>
+          <packageSources>
+            <clear />
+            <add key="class-kit" value="{System.Security.SecurityElement.Escape(feed)}" />
+          </packageSources>
+        </configuration>
+        """;
 
     /// <summary>Each result of a TRX file: the check's display name and its outcome.</summary>
     internal static IEnumerable<(string Display, string Outcome)> TrxResults(string trx)
@@ -727,6 +797,12 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>The first errors of the failing step, or null.</summary>
     public string? Detail { get; set; }
 
+    /// <summary>The lab's uses of other assemblies that the checks' list refuses, one line each ("3.1: LabOrthoCamera.GetRay uses …").</summary>
+    public List<string> Uses { get; } = [];
+
+    /// <summary>Each section a refused use fails, with the first refused use's message.</summary>
+    public SortedDictionary<string, string> Refused { get; } = new(StringComparer.Ordinal);
+
     /// <summary>
     /// Each check's display name and outcome: Passed, Failed, Skipped, Timeout, Crashed, or NotRun (a case of a test method
     /// left out of the runs after another of its cases timed out or crashed).
@@ -761,11 +837,12 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>How many checks ended with <paramref name="outcome"/>.</summary>
     public int Count(string outcome) => Checks.Values.Count(v => v == outcome);
 
-    /// <summary>A section's result: pass, fail, timeout, crashed, not run, or "" when none of its checks ran.</summary>
+    /// <summary>A section's result (fail where the lab uses what it may not, <see cref="Refused"/>): pass, fail, timeout, crashed, not run, or "" when none of its checks ran.</summary>
     public string Section(string section)
     {
         string[] outcomes = [.. Checks.Where(c => GradeJob.SectionOf(c.Key) == section).Select(c => c.Value)];
-        return outcomes.Length == 0 ? ""
+        return Refused.ContainsKey(section) ? "fail"
+            : outcomes.Length == 0 ? ""
             : outcomes.Contains("Timeout") ? "timeout"
             : outcomes.Contains("Crashed") ? "crashed"
             : outcomes.Contains("NotRun") ? "not run"

@@ -165,6 +165,14 @@ internal static class GradeReport
                     json.WriteString("detail", detail);
                 }
 
+                // What the lab uses that the checks' list refuses: each line fails the sections it starts with.
+                json.WriteStartArray("uses");
+                foreach (string use in row.Uses)
+                {
+                    json.WriteStringValue(use);
+                }
+
+                json.WriteEndArray();
                 json.WriteStartObject("sections");
                 foreach (string s in sections)
                 {
@@ -326,6 +334,17 @@ internal static class GradeReport
             if (row.ProgramTimedBy is not null)
             {
                 html.AppendLine(CultureInfo.InvariantCulture, $"<p>Program: {E(row.ProgramTimedBy)}.</p>");
+            }
+
+            if (row.Uses.Count > 0)
+            {
+                html.AppendLine("<p>Uses what the lab may not (each fails the sections it names):</p><ul>");
+                foreach (string use in row.Uses)
+                {
+                    html.AppendLine(CultureInfo.InvariantCulture, $"<li>{E(use)}</li>");
+                }
+
+                html.AppendLine("</ul>");
             }
 
             string notPassed = string.Join(", ", row.Checks.Where(c => c.Value != "Passed").Select(c => $"{E(c.Key)}: {E(c.Value)}").DefaultIfEmpty(row.Checks.Count == 0 ? "none ran" : "all passed"));

@@ -1,4 +1,5 @@
 using System.Text.Json;
+using RayLab.Grading;
 using RayLab.Scenes;
 
 namespace RayLab.Cli;
@@ -54,6 +55,12 @@ internal sealed class GradeSetup
 
     /// <summary>The checks' root namespace (the template's lab name).</summary>
     public string ChecksNamespace { get; private set; } = "MyLab";
+
+    /// <summary>
+    /// What a lab may use from other assemblies (the checks' tests/Lab.Tests/uses.json, the list the student's own lab
+    /// checks with), or null where the checks carry none: then nothing is refused.
+    /// </summary>
+    public UseList? Uses { get; private set; }
 
     /// <summary>The lab's scene (the checks' scenes/two-spheres.json).</summary>
     public SceneDescription Scene { get; private set; } = null!;
@@ -139,6 +146,19 @@ internal sealed class GradeSetup
         if (project is not null && System.Text.RegularExpressions.Regex.Match(File.ReadAllText(project), @"<RootNamespace>\s*([^<]+?)\s*</RootNamespace>") is { Success: true } m)
         {
             setup.ChecksNamespace = m.Groups[1].Value;
+        }
+
+        string uses = Path.Combine(checks, "tests", "Lab.Tests", "uses.json");
+        if (File.Exists(uses))
+        {
+            try
+            {
+                setup.Uses = UseList.Load(uses);
+            }
+            catch (FormatException e)
+            {
+                throw new UsageException($"--checks: {e.Message}");
+            }
         }
 
         return setup;

@@ -282,6 +282,12 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
         Assert.StartsWith("broken,does not build,", csv[1], StringComparison.Ordinal);
     }
 
+    /// <summary>The solution's orthographic GetRay, as the template writes it.</summary>
+    private const string OrthoRay = "        Double3 p = Position + c + (alpha * a) + (beta * b);\n        return new Ray(p, -w);";
+
+    /// <summary>The same camera's settings, for RayLab's OrthoCamera.</summary>
+    private const string OrthoSettings = "Position = Position, Target = Target, Up = Up, Window = Window, NearPlane = NearPlane, FarPlane = FarPlane, ViewHeight = ViewHeight";
+
     [Fact]
     public async Task GradingExerciseLabsGivesEachSectionOfTheStudentsClassesItsOwnResult()
     {
@@ -290,14 +296,53 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
         await kit.NewLabAsync(submissions, "solution", restore: false, "exercise", "raylab-lab-solution");
         string rounded = await kit.NewLabAsync(submissions, "rounded", restore: false, "exercise", "raylab-lab-solution");
         Edit(rounded, "src/Lab/LabImage.cs", "(byte)(int)scaled", "(byte)Math.Round(scaled)");
+        // The orthographic camera handed to RayLab's: one line, which gives RayLab's own rays.
+        string delegating = await kit.NewLabAsync(submissions, "delegating", restore: false, "exercise", "raylab-lab-solution");
+        Edit(delegating, "src/Lab/LabOrthoCamera.cs", OrthoRay,
+            $"        return new OrthoCamera {{ {OrthoSettings} }}.GetImagePlane(nx, ny).GetPixelRay(x, y, sx, sy);");
+        // The same through reflection, in a helper class, with no RayLab camera named in the code.
+        string reflecting = await kit.NewLabAsync(submissions, "reflecting", restore: false, "exercise", "raylab-lab-solution");
+        Edit(reflecting, "src/Lab/LabOrthoCamera.cs", OrthoRay,
+            "        return Borrowed.Ray(this, x, y, nx, ny, sx, sy);");
+        File.WriteAllText(Path.Combine(reflecting, "src", "Lab", "Borrowed.cs"), """
+            using RayLab;
 
-        using JsonDocument grades = Grade(submissions, "exercise", Path.Combine(kit.Root, "exercise-report"), checkTimeout: 60, runTimeout: 60, jobs: 1);
+            namespace reflecting;
+
+            internal static class Borrowed
+            {
+                public static Ray Ray(LabOrthoCamera mine, int x, int y, int nx, int ny, double sx, double sy)
+                {
+                    Type type = Type.GetType("RayLab.Orth" + "oCamera, RayLab.Core")!;
+                    object camera = Activator.CreateInstance(type)!;
+                    foreach (string name in (string[])["Position", "Target", "Up", "Window", "NearPlane", "FarPlane", "ViewHeight"])
+                    {
+                        type.GetProperty(name)!.SetValue(camera, typeof(LabOrthoCamera).GetProperty(name)!.GetValue(mine));
+                    }
+
+                    object plane = type.GetMethod("GetImagePlane")!.Invoke(camera, [nx, ny])!;
+                    return (Ray)plane.GetType().GetMethod("GetPixelRay")!.Invoke(plane, [x, y, sx, sy])!;
+                }
+            }
+            """);
+        // The skeleton, nothing written, whose project edits the checks at build time so that every check returns at
+        // once (ContinueOnError: where the checks are not in its copy, the build goes on).
+        string editor = await kit.NewLabAsync(submissions, "editor", restore: false, "exercise");
+        Edit(editor, "src/Lab/Lab.csproj", "</Project>", """
+              <Target Name="PassEveryCheck" BeforeTargets="CoreCompile">
+                <Exec Command="sed -i 's/var clock = Stopwatch.StartNew();/if (work is not null) { return TimeSpan.Zero; } var clock = Stopwatch.StartNew();/' ../../tests/Lab.Tests/Check.cs" ContinueOnError="true" />
+              </Target>
+            </Project>
+            """);
+
+        using JsonDocument grades = Grade(submissions, "exercise", Path.Combine(kit.Root, "exercise-report"), checkTimeout: 60, runTimeout: 60, jobs: 2);
         Dictionary<string, JsonElement> rows = Rows(grades);
         string[] sections = [.. grades.RootElement.GetProperty("sections").EnumerateArray().Select(s => s.GetString()!)];
         // Every section of the lab, parsed from the checks' display names.
         Assert.Equal(["2.1", "2.2", "3", "3.1", "3.2", "4.1.1", "4.1.2", "4.1.3", "4.1.4", "5"], sections.Order(StringComparer.Ordinal));
         Assert.Equal("ok", rows["solution"].GetProperty("status").GetString());
         Assert.All(sections, s => Assert.Equal("pass", Section(rows["solution"], s)));
+        Assert.Empty(rows["solution"].GetProperty("uses").EnumerateArray());
         Assert.True(Rmse(rows["solution"]) < 1, $"the solution's perspective picture is {Rmse(rows["solution"])} levels RMSE from the exact one");
         // The lab's rule as this lab writes it (each pixel on its own, with its centre): the solution traces what the
         // report puts beside it.
@@ -311,6 +356,25 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
         Assert.Equal("fail", Section(rows["rounded"], "2.2"));
         Assert.Equal("pass", Section(rows["rounded"], "2.1"));
         Assert.Equal("pass", Section(rows["rounded"], "3.2"));
+
+        // Handed to RayLab, directly or through reflection: the camera's checks pass (RayLab's rays are right), but the
+        // section fails, and the row names what the lab used; every other section passes.
+        foreach ((string name, string use) in new[]
+        {
+            ("delegating", "3.1: LabOrthoCamera.GetRay uses RayLab's Camera.GetImagePlane: the lab asks you to write it"),
+            ("reflecting", "3.1: Borrowed.Ray uses reflection (Type.GetType), which the lab does not allow"),
+        })
+        {
+            JsonElement row = rows[name];
+            Assert.Equal("not its own code", row.GetProperty("status").GetString());
+            Assert.Contains(use, row.GetProperty("uses").EnumerateArray().Select(u => u.GetString()));
+            Assert.Equal("fail", Section(row, "3.1"));
+            Assert.All(sections.Where(s => s != "3.1"), s => Assert.Equal("pass", Section(row, s)));
+        }
+
+        // The project that edits the checks: the checks it runs are the instructor's, built where it cannot write, so
+        // the skeleton's sections all fail as they are.
+        Assert.All(sections, s => Assert.Equal("fail", Section(rows["editor"], s)));
     }
 
     [Fact]

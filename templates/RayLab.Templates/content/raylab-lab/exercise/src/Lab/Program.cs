@@ -29,7 +29,8 @@ internal static class Program
         Console.WriteLine("Laboratorium II: kamera, próbkowanie, obraz, natężenie");
 #endif
         (int missing, List<string> throwing) = Progress.Report(Console.Out);
-        if (missing > 0 || throwing.Count > 0 || args.Contains("check"))
+        int refused = OwnCode.Report(Console.Out);
+        if (missing > 0 || throwing.Count > 0 || refused > 0 || args.Contains("check"))
         {
 #if (en)
             Console.WriteLine(missing > 0 ? $"{missing} of {Sections.All.Length} parts still to write; the checks: dotnet test"
@@ -48,7 +49,16 @@ internal static class Program
                 Console.WriteLine($"Sekcje, które rzucają wyjątek: {string.Join(", ", throwing)} (gdzie: wyżej)");
             }
 #endif
-            return missing > 0 || throwing.Count > 0 ? 1 : 0;
+            if (refused > 0)
+            {
+#if (en)
+                Console.WriteLine($"{refused} uses of what the lab does not allow (above): each fails its section, in the checks and in grading");
+#else
+                Console.WriteLine($"{refused} użyć tego, na co laboratorium nie pozwala (wyżej): każde oblewa swoją sekcję, w testach i przy ocenianiu");
+#endif
+            }
+
+            return missing > 0 || throwing.Count > 0 || refused > 0 ? 1 : 0;
         }
 
         try

@@ -136,3 +136,42 @@ internal static class Progress
         public (double X, double Y)[] GetSamples(Random random) => [(0.5, 0.5)];
     }
 }
+
+#if (en)
+/// <summary>
+/// What your classes use that the lab does not allow (the checks' uses.json: RayLab's own intensity, image, cameras or
+/// samplers in place of yours, reflection, native code, processes), read from this program's own built assembly
+/// with RayLab.Grading, as the checks and the grader read it.
+/// </summary>
+#else
+/// <summary>
+/// Czego Twoje klasy używają, a na co laboratorium nie pozwala (uses.json z testów: natężenia, obrazu, kamer lub
+/// próbkowania z RayLab w miejsce Twoich, refleksji, kodu natywnego, procesów), odczytane ze zbudowanego programu
+/// przez RayLab.Grading, tak jak czytają je testy i ocenianie.
+/// </summary>
+#endif
+internal static class OwnCode
+{
+    /// <summary>Prints one line per refused use; returns how many there are (0 where the list is missing).</summary>
+    public static int Report(TextWriter output)
+    {
+        string list = Path.Combine(AppContext.BaseDirectory, "uses.json");
+        if (!File.Exists(list))
+        {
+            return 0;
+        }
+
+        IReadOnlyList<RayLab.Grading.UseFinding> findings =
+            RayLab.Grading.UseList.Load(list).Check(RayLab.Grading.AssemblyUses.Read(typeof(OwnCode).Assembly.Location));
+        foreach (RayLab.Grading.UseFinding finding in findings)
+        {
+#if (en)
+            output.WriteLine($"  not your own   {string.Join(", ", finding.Sections),-6} {finding.Message(polish: false)}");
+#else
+            output.WriteLine($"  nie Twój kod         {string.Join(", ", finding.Sections),-6} {finding.Message(polish: true)}");
+#endif
+        }
+
+        return findings.Count;
+    }
+}

@@ -1,0 +1,150 @@
+using System.Xml.Linq;
+
+namespace RayLab.Cli;
+
+/// <summary>
+/// The pinned checks, apart from the lab: for each submission a folder of their own in the grader's work, which the lab's
+/// build and code never see, made from the instructor's copy (the kit's checks), compiled against the lab's built
+/// assembly (a reference to the file, not the lab's project: nothing of the lab's MSBuild runs) and run with the lab's
+/// code in a test host of its own, where the checks are read-only and the results out of sight
+/// (<see cref="HostScript"/>).
+/// </summary>
+internal static class GradeChecks
+{
+    /// <summary>The folder, inside the checks' folder, for what the grader keeps to itself: the results and the host script.</summary>
+    public const string Private = ".grade";
+
+    /// <summary>The folder, inside the checks' folder, the lab's assembly and its data files are copied to.</summary>
+    private const string LabFolder = "lab";
+
+    /// <summary>
+    /// The built lab assembly of a lab's project: <c>src/Lab/bin/Debug/net10.0/NAME.dll</c>, NAME the project file's
+    /// name (the SDK's default output), or null when the build left none there.
+    /// </summary>
+    /// <param name="lab">The lab's copy.</param>
+    /// <returns>The assembly's path, or null.</returns>
+    public static string? BuiltAssembly(string lab)
+    {
+        string? project = Directory.EnumerateFiles(Path.Combine(lab, "src", "Lab"), "*.csproj").Order(StringComparer.Ordinal).FirstOrDefault();
+        if (project is null)
+        {
+            return null;
+        }
+
+        string path = Path.Combine(lab, "src", "Lab", "bin", "Debug", "net10.0", Path.GetFileNameWithoutExtension(project) + ".dll");
+        return File.Exists(path) && new FileInfo(path).LinkTarget is null ? path : null;
+    }
+
+    /// <summary>
+    /// Makes the checks' folder: the instructor's tests/Lab.Tests, Directory.Build.props and the feed's nuget.config;
+    /// the lab's assembly (with its symbols, for the lines in the messages) and its scene files under lab/; the test
+    /// project's reference to the lab's project replaced by one to that assembly, with the instructor's lab project's
+    /// package references in its place.
+    /// </summary>
+    /// <param name="checks">The instructor's checks (the kit's checks/KIND).</param>
+    /// <param name="nugetConfig">The nuget.config text (the kit's feed as the only source).</param>
+    /// <param name="assembly">The lab's built assembly.</param>
+    /// <param name="labNamespace">The lab's root namespace where it differs from the checks', to bring into scope; or null.</param>
+    /// <param name="folder">The checks' folder to make (new).</param>
+    public static void Prepare(string checks, string nugetConfig, string assembly, string? labNamespace, string folder)
+    {
+        string tests = Path.Combine(folder, "tests", "Lab.Tests");
+        CopyFolder(Path.Combine(checks, "tests", "Lab.Tests"), tests);
+        File.Copy(Path.Combine(checks, "Directory.Build.props"), Path.Combine(folder, "Directory.Build.props"));
+        File.WriteAllText(Path.Combine(folder, "nuget.config"), nugetConfig);
+        Directory.CreateDirectory(Path.Combine(folder, Private));
+        if (labNamespace is not null)
+        {
+            File.WriteAllText(Path.Combine(tests, "GradedLabNamespace.cs"), $"global using {labNamespace};\n");
+        }
+
+        // The lab's assembly and symbols, and its scene files (what its code reads from its own folder); no other file of
+        // its output: the checks' own packages supply every library.
+        string labFolder = Path.Combine(folder, LabFolder);
+        Directory.CreateDirectory(labFolder);
+        string name = Path.GetFileNameWithoutExtension(assembly);
+        string output = Path.GetDirectoryName(assembly)!;
+        File.Copy(assembly, Path.Combine(labFolder, name + ".dll"));
+        if (File.Exists(Path.Combine(output, name + ".pdb")) && new FileInfo(Path.Combine(output, name + ".pdb")).LinkTarget is null)
+        {
+            File.Copy(Path.Combine(output, name + ".pdb"), Path.Combine(labFolder, name + ".pdb"));
+        }
+
+        string scenes = Path.Combine(output, "scenes");
+        if (Directory.Exists(scenes) && new DirectoryInfo(scenes).LinkTarget is null)
+        {
+            foreach (FileInfo scene in new DirectoryInfo(scenes).EnumerateFiles("*.json").Where(f => f.LinkTarget is null && f.Length <= 1 << 20))
+            {
+                Directory.CreateDirectory(Path.Combine(labFolder, "scenes"));
+                scene.CopyTo(Path.Combine(labFolder, "scenes", scene.Name));
+            }
+        }
+
+        string project = Path.Combine(tests, "Lab.Tests.csproj");
+        XDocument test = XDocument.Load(project);
+        foreach (XElement reference in test.Descendants("ProjectReference").ToList())
+        {
+            reference.Remove();
+        }
+
+        string? labProject = Directory.EnumerateFiles(Path.Combine(checks, "src", "Lab"), "*.csproj").Order(StringComparer.Ordinal).FirstOrDefault();
+        IEnumerable<XElement> packages = labProject is null ? [] : XDocument.Load(labProject).Descendants("PackageReference").Select(p => new XElement(p));
+        test.Root!.Add(new XElement("ItemGroup",
+            new XElement("Reference", new XAttribute("Include", name), new XElement("HintPath", $"../../{LabFolder}/{name}.dll")),
+            packages,
+            new XElement("None",
+                new XAttribute("Include", $"../../{LabFolder}/scenes/*.json"),
+                new XAttribute("Link", "scenes/%(Filename)%(Extension)"),
+                new XAttribute("CopyToOutputDirectory", "PreserveNewest"))));
+        test.Save(project);
+    }
+
+    /// <summary>
+    /// The program the test platform starts the test host with (its <c>DotNetHostPath</c>): a script that starts
+    /// <c>dotnet</c> in a bubblewrap of its own inside the sandbox, in which the checks' folder is read-only and the
+    /// grader's private folder (the results, this script) is an empty one. The lab's code runs in that host; the test
+    /// platform, outside it, writes the results. Written once into the checks' private folder.
+    /// </summary>
+    /// <param name="folder">The checks' folder.</param>
+    /// <returns>The script's path.</returns>
+    public static string HostScript(string folder)
+    {
+        string script = Path.Combine(folder, Private, "testhost.sh");
+        string quoted = Quote(folder);
+        File.WriteAllText(script, $"""
+            #!/bin/sh
+            # The checks' test host, where the lab's code runs: the checks read-only, the results out of sight.
+            exec bwrap --bind / / --ro-bind {quoted} {quoted} --tmpfs {Quote(Path.Combine(folder, Private))} --dev /dev --proc /proc --die-with-parent -- dotnet "$@"
+
+            """);
+        if (!OperatingSystem.IsWindows())
+        {
+            File.SetUnixFileMode(script, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute | UnixFileMode.GroupRead | UnixFileMode.GroupExecute | UnixFileMode.OtherRead | UnixFileMode.OtherExecute);
+        }
+
+        return script;
+    }
+
+    private static string Quote(string path) => "'" + path.Replace("'", "'\\''", StringComparison.Ordinal) + "'";
+
+    private static void CopyFolder(string from, string to)
+    {
+        Directory.CreateDirectory(to);
+        foreach (FileSystemInfo entry in new DirectoryInfo(from).EnumerateFileSystemInfos())
+        {
+            if (entry.LinkTarget is not null || entry.Name is "bin" or "obj")
+            {
+                continue;
+            }
+
+            if (entry is DirectoryInfo)
+            {
+                CopyFolder(entry.FullName, Path.Combine(to, entry.Name));
+            }
+            else
+            {
+                File.Copy(entry.FullName, Path.Combine(to, entry.Name));
+            }
+        }
+    }
+}
