@@ -172,30 +172,26 @@ public static partial class GradeJob
     }
 
     /// <summary>
-    /// How the grader starts a built lab's program and times it: the program itself, <c>dotnet PATH.dll</c> in the
-    /// lab's root (as <c>dotnet run</c> starts it), where the build left exactly one program below <c>src/Lab/bin</c>
-    /// (a <c>.runtimeconfig.json</c> with its <c>.dll</c>), so that the grader's clock holds the program and not
-    /// <c>dotnet run</c>'s reading of the project; else <c>dotnet run --no-build</c>, and the report says that its
-    /// start is counted.
+    /// How the grader starts a built lab's program and times it: the assembly the grader scanned and built the checks
+    /// against (<see cref="GradeChecks.BuiltAssembly"/>), started as <c>dotnet src/Lab/bin/Debug/net10.0/NAME.dll</c>
+    /// in the lab's root (as <c>dotnet run</c> starts it) where its <c>.runtimeconfig.json</c> is beside it, so that
+    /// the grader's clock holds the program and not <c>dotnet run</c>'s reading of the project; else <c>dotnet run
+    /// --no-build</c>, and the report says that its start is counted.
     /// </summary>
     /// <param name="lab">The lab's copy, built.</param>
     /// <returns>The command and how its time is taken.</returns>
     public static ProgramLaunch ProgramCommand(string lab)
     {
         ArgumentException.ThrowIfNullOrEmpty(lab);
-        string bin = Path.Combine(lab, "src", "Lab", "bin");
-        string[] programs = Directory.Exists(bin) && new DirectoryInfo(bin).LinkTarget is null
-            ? [.. Directory.EnumerateFiles(bin, "*.runtimeconfig.json", new EnumerationOptions { RecurseSubdirectories = true, AttributesToSkip = FileAttributes.ReparsePoint })
-                .Select(f => f[..^".runtimeconfig.json".Length] + ".dll")
-                .Where(dll => File.Exists(dll) && new FileInfo(dll).LinkTarget is null)]
-            : [];
-        if (programs.Length == 1)
+        string? assembly = Directory.Exists(Path.Combine(lab, "src", "Lab")) ? GradeChecks.BuiltAssembly(lab) : null;
+        string? config = assembly is null ? null : Path.ChangeExtension(assembly, ".runtimeconfig.json");
+        if (assembly is not null && File.Exists(config) && new FileInfo(config).LinkTarget is null)
         {
-            string dll = Path.GetRelativePath(lab, programs[0]).Replace(Path.DirectorySeparatorChar, '/');
+            string dll = Path.GetRelativePath(lab, assembly).Replace(Path.DirectorySeparatorChar, '/');
             return new ProgramLaunch("dotnet", [dll], $"the grader's clock around the built program (dotnet {dll}), in the sandbox, one program at a time");
         }
 
         return new ProgramLaunch("dotnet", ["run", "--project", Path.Combine("src", "Lab"), "--no-build"],
-            $"the grader's clock around dotnet run --no-build (its start counted: the build left {programs.Length} programs in src/Lab/bin), in the sandbox, one program at a time");
+            "the grader's clock around dotnet run --no-build (its start counted: no built program with its runtimeconfig.json in src/Lab/bin/Debug/net10.0), in the sandbox, one program at a time");
     }
 }
