@@ -39,7 +39,7 @@ internal static class GradeChecks
     /// Makes the checks' folder: the instructor's tests/Lab.Tests, Directory.Build.props and the feed's nuget.config;
     /// the lab's assembly (with its symbols, for the lines in the messages) and its scene files under lab/; the test
     /// project's reference to the lab's project replaced by one to that assembly, with the instructor's lab project's
-    /// package references in its place.
+    /// package references it does not have itself.
     /// </summary>
     /// <param name="checks">The instructor's checks (the kit's checks/KIND).</param>
     /// <param name="nugetConfig">The nuget.config text (the kit's feed as the only source).</param>
@@ -88,7 +88,9 @@ internal static class GradeChecks
         }
 
         string? labProject = Directory.EnumerateFiles(Path.Combine(checks, "src", "Lab"), "*.csproj").Order(StringComparer.Ordinal).FirstOrDefault();
-        IEnumerable<XElement> packages = labProject is null ? [] : XDocument.Load(labProject).Descendants("PackageReference").Select(p => new XElement(p));
+        var own = new HashSet<string>(test.Descendants("PackageReference").Select(p => (string?)p.Attribute("Include") ?? ""), StringComparer.OrdinalIgnoreCase);
+        IEnumerable<XElement> packages = labProject is null ? []
+            : XDocument.Load(labProject).Descendants("PackageReference").Where(p => !own.Contains((string?)p.Attribute("Include") ?? "")).Select(p => new XElement(p));
         test.Root!.Add(new XElement("ItemGroup",
             new XElement("Reference", new XAttribute("Include", name), new XElement("HintPath", $"../../{LabFolder}/{name}.dll")),
             packages,

@@ -95,6 +95,21 @@ public sealed class GradeCliTests : IDisposable
     }
 
     [Fact]
+    public void ChecksWhoseListOfUsesIsNotAListNameTheFileAndTheFieldBeforeAnyLabIsGraded()
+    {
+        string checks = Checks();
+        File.WriteAllText(_dir.File("kit/feed/x.1.0.0.nupkg"), "");
+        Directory.CreateDirectory(_dir.File("subs/anna"));
+        string uses = Path.Combine(checks, "tests", "Lab.Tests", "uses.json");
+        File.WriteAllText(uses, """{ "allowed": ["RayLab.*.Camera"] }""");
+        (int code, string stdout, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", _dir.File("report"));
+        Assert.Equal(1, code);
+        Assert.Equal("", stdout);
+        Assert.Equal($"raylab: error: --checks: {uses}: allowed: 'RayLab.*.Camera' is not a rule: expected Namespace.*, Namespace.Type or Namespace.Type::Member", stderr.TrimEnd());
+        Assert.False(Directory.Exists(_dir.File("report")));
+    }
+
+    [Fact]
     public void AKitWithoutAFeedSaysWhereItLooked()
     {
         string checks = Checks();
