@@ -127,6 +127,7 @@ public sealed class GradeReadBackTests : IDisposable
     [Fact]
     public void TheProgramIsTheBuiltAssemblyStartedDirectlyWhenItIsAProgram()
     {
+        Directory.CreateDirectory(Lab("src/Lab"));
         File.WriteAllText(Lab("src/Lab/Lab.csproj"), "<Project />");
         ProgramLaunch none = GradeJob.ProgramCommand(Lab()); // nothing built: dotnet run says why
         Assert.Equal(["run", "--project", Path.Combine("src", "Lab"), "--no-build"], none.Args);
