@@ -14,9 +14,10 @@ namespace RayLab.Cli;
 /// <c>raylab grade</c>: for each submitted lab, a copy whose <c>tests/</c>, root build files and <c>nuget.config</c> are
 /// the instructor's (the pinned checks, and the kit's feed as the only package source); built, tested (one TRX per
 /// run, each check stopped after its limit by the test platform's hang detection and the rest run again without it)
-/// and run (<c>dotnet run --project src/Lab</c>, the pictures) in the sandbox (<see cref="GradeSandbox"/>); its two
-/// pictures scored against the exact image (RMSE in 8-bit levels, mean FLIP), its rays per pixel and time read from
-/// the program's lines beside the rays the lab's adaptive rule takes. One row per student in grades.csv,
+/// and run (the built program, the pictures) in the sandbox (<see cref="GradeSandbox"/>); its two
+/// pictures read back as untrusted and scored against the exact image (RMSE in 8-bit levels, mean FLIP), the
+/// program timed by the grader's own clock, and the rays per pixel its lines claim shown as its own report beside the
+/// rays the lab's adaptive rule takes. One row per student in grades.csv,
 /// grades.json and index.html.
 /// </summary>
 public static partial class GradeJob
@@ -247,7 +248,10 @@ public static partial class GradeJob
         }
     }
 
-    /// <summary>3. The program of a lab that built: the pictures, and its lines of rays and time; then the pictures scored.</summary>
+    /// <summary>
+    /// 3. The program of a lab that built (<see cref="ProgramCommand"/>): its pictures, timed by the grader's own clock,
+    /// and the rays per pixel its lines claim; then the pictures scored.
+    /// </summary>
     private static void RunProgram(GradeSetup setup, GradeSandbox sandbox, GradeReference reference, GradedLab lab, Stopwatch grading, CancellationToken cancellation)
     {
         StudentRow row = lab.Row;
@@ -262,8 +266,10 @@ public static partial class GradeJob
             {
                 TimeSpan limit = Min(lab.Left(setup), setup.Request.RunTimeout);
                 row.ProgramStart = grading.Elapsed.TotalSeconds;
-                ChildRun run = sandbox.Run(lab.Path, lab.Log, limit, "dotnet", ["run", "--project", Path.Combine("src", "Lab"), "--no-build"], cancellation);
+                ProgramLaunch launch = ProgramCommand(lab.Path);
+                ChildRun run = sandbox.Run(lab.Path, lab.Log, limit, launch.Command, launch.Args, cancellation);
                 row.Steps["program"] = run.Elapsed.TotalSeconds;
+                row.ProgramTimedBy = launch.TimedBy;
                 cancellation.ThrowIfCancellationRequested();
                 if (run.TimedOut)
                 {
@@ -525,40 +531,48 @@ public static partial class GradeJob
     private static string OutOfMemoryDetail(GradeSetup setup, string what) => string.Create(CultureInfo.InvariantCulture,
         $"{what} ran out of memory: {setup.Request.MemoryLimitMegabytes} MB (--memory-limit)");
 
+    /// <summary>
+    /// The rays per pixel the program's own lines claim for the timed method, kept as the lab's own report: shown
+    /// and labelled so, never graded (the checks count the rays themselves). Their times are not read: the grader
+    /// times the program itself.
+    /// </summary>
     private static void ReadTimings(GradeSetup setup, string output, StudentRow row)
     {
         foreach (Match m in RenderLine().Matches(output))
         {
             if (m.Groups["method"].Value == setup.TimedMethod
-                && double.TryParse(m.Groups["rpp"].Value, NumberStyles.Float, CultureInfo.InvariantCulture, out double rpp)
-                && double.TryParse(m.Groups["ms"].Value, NumberStyles.Float, CultureInfo.InvariantCulture, out double ms))
+                && double.TryParse(m.Groups["rpp"].Value, NumberStyles.Float, CultureInfo.InvariantCulture, out double rpp))
             {
-                row.Timings[m.Groups["camera"].Value] = (rpp, ms);
+                row.LabRaysPerPixel[m.Groups["camera"].Value] = rpp;
             }
         }
     }
 
+    /// <summary>
+    /// Each picture read back from the lab's copy as untrusted (<see cref="ReadPicture"/>: no link, a capped size,
+    /// the header checked before any pixel is decoded), then scored against the exact image.
+    /// </summary>
     private static void ScorePictures(GradeSetup setup, GradeReference reference, string lab, string folder, StudentRow row)
     {
         bool missing = false;
         foreach ((string camera, string file) in setup.Pictures)
         {
-            string path = Path.Combine(lab, file);
-            if (!File.Exists(path))
+            Image exact = reference.Exact[camera];
+            PictureRead read = ReadPicture(lab, file, exact.Width, exact.Height);
+            if (read.Missing)
             {
                 missing = true;
                 continue;
             }
 
-            Image exact = reference.Exact[camera];
-            Image picture;
-            try
+            if (read.Status is not null)
             {
-                picture = Image.Load(path);
+                row.Problems.Add(read.Status);
             }
-            catch (Exception e) when (e is InvalidDataException or IOException or NotSupportedException)
+
+            if (read.Picture is not { } picture)
             {
-                row.Pictures[camera] = new PictureScore(double.NaN, double.NaN, $"{file} does not decode");
+                row.Pictures[camera] = new PictureScore(double.NaN, double.NaN, read.Problem ?? $"{file} does not decode");
                 continue;
             }
 
@@ -814,8 +828,11 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>Each camera's picture score.</summary>
     public Dictionary<string, PictureScore> Pictures { get; } = [];
 
-    /// <summary>Each camera's rays per pixel and milliseconds of the timed method, from the program's lines.</summary>
-    public Dictionary<string, (double RaysPerPixel, double Milliseconds)> Timings { get; } = [];
+    /// <summary>Each camera's rays per pixel of the timed method as the program's own lines claim them: the lab's report, not graded.</summary>
+    public Dictionary<string, double> LabRaysPerPixel { get; } = [];
+
+    /// <summary>How the program's seconds (<see cref="Steps"/>' "program") were taken, or null when it did not run.</summary>
+    public string? ProgramTimedBy { get; set; }
 
     /// <summary>The submission's wall time in the grader: its own steps, not the time it waited for others.</summary>
     public double Seconds { get; set; }

@@ -94,11 +94,11 @@ internal static class GradeReport
         header.AddRange(["checks passed", "checks failed", "checks timed out", "checks crashed", "checks not run"]);
         foreach (string c in cameras)
         {
-            header.AddRange([$"{c} rmse", $"{c} flip", $"{c} rays per pixel", $"{c} lab adaptive rays per pixel", $"{c} ms"]);
+            header.AddRange([$"{c} rmse", $"{c} flip", $"{c} rays per pixel (the program's own line)", $"{c} lab adaptive rays per pixel"]);
         }
 
-        header.AddRange(["seconds", "detail"]);
-        csv.AppendLine(string.Join(',', header.Select(Quote)));
+        header.AddRange(["program seconds (the grader's clock)", "seconds", "detail"]);
+        csv.AppendLine(string.Join(',', header.Select(GradeCsv.Cell)));
         foreach (StudentRow row in rows)
         {
             var cells = new List<string> { row.Name, row.Status };
@@ -107,13 +107,12 @@ internal static class GradeReport
             foreach (string c in cameras)
             {
                 PictureScore? p = row.Pictures.GetValueOrDefault(c);
-                bool timed = row.Timings.TryGetValue(c, out (double RaysPerPixel, double Milliseconds) t);
-                cells.AddRange([Number(p?.Rmse, "F4"), Number(p?.Flip, "F6"), timed ? t.RaysPerPixel.ToString("F2", Inv) : "",
-                    reference.AdaptiveRaysPerPixel[c].ToString("F2", Inv), timed ? t.Milliseconds.ToString("F1", Inv) : ""]);
+                cells.AddRange([Number(p?.Rmse, "F4"), Number(p?.Flip, "F6"), row.LabRaysPerPixel.TryGetValue(c, out double rpp) ? rpp.ToString("F2", Inv) : "",
+                    reference.AdaptiveRaysPerPixel[c].ToString("F2", Inv)]);
             }
 
-            cells.AddRange([row.Seconds.ToString("F0", Inv), row.Detail ?? ""]);
-            csv.AppendLine(string.Join(',', cells.Select(Quote)));
+            cells.AddRange([ProgramSeconds(row) is double program ? program.ToString("F2", Inv) : "", row.Seconds.ToString("F0", Inv), Detail(row) ?? ""]);
+            csv.AppendLine(string.Join(',', cells.Select(GradeCsv.Cell)));
         }
 
         return csv.ToString();
@@ -161,9 +160,9 @@ internal static class GradeReport
                 }
 
                 json.WriteEndArray();
-                if (row.Detail is not null)
+                if (Detail(row) is { } detail)
                 {
-                    json.WriteString("detail", row.Detail);
+                    json.WriteString("detail", detail);
                 }
 
                 // What the lab uses that the checks' list refuses: each line fails the sections it starts with.
@@ -227,13 +226,21 @@ internal static class GradeReport
                 }
 
                 json.WriteEndObject();
-                json.WriteStartObject("timing");
+                if (ProgramSeconds(row) is double program)
+                {
+                    json.WriteStartObject("program");
+                    json.WriteNumber("seconds", Math.Round(program, 2));
+                    json.WriteString("timedBy", row.ProgramTimedBy);
+                    json.WriteEndObject();
+                }
+
+                json.WriteStartObject("labReport");
                 json.WriteString("method", setup.TimedMethod);
-                foreach ((string c, (double rpp, double ms)) in row.Timings.OrderBy(t => t.Key, StringComparer.Ordinal))
+                json.WriteString("source", LabReportSource);
+                foreach ((string c, double rpp) in row.LabRaysPerPixel.OrderBy(t => t.Key, StringComparer.Ordinal))
                 {
                     json.WriteStartObject(c);
                     json.WriteNumber("raysPerPixel", rpp);
-                    json.WriteNumber("ms", ms);
                     json.WriteEndObject();
                 }
 
@@ -275,7 +282,9 @@ internal static class GradeReport
         html.AppendLine($"<h1>RayLab grades: the {E(setup.Kind)} lab</h1>");
         html.AppendLine($"<p>{rows.Count} submissions, checks from <code>{E(setup.Checks)}</code> (RayLab {E(setup.Version)}), "
             + (sandboxed ? "each run in bubblewrap (no network, read-only system)." : "<strong>run without a sandbox (--unsafe-no-sandbox)</strong>.")
-            + $" Pictures: RMSE in 8-bit levels and mean FLIP against the exact image; rays per pixel and time of <code>{E(setup.TimedMethod)}</code> from the program's lines, beside the rays of the lab's adaptive rule."
+            + " Pictures: RMSE in 8-bit levels and mean FLIP against the exact image, read back from each lab's copy as untrusted (no link followed, the size capped, the header checked before decoding)."
+            + " Program s: the grader's own clock around the lab's built program, started directly (not through <code>dotnet run</code>)."
+            + $" Rays per pixel of <code>{E(setup.TimedMethod)}</code>: as the program's own lines claim them, unchecked here (the checks count rays themselves), beside the rays of the lab's adaptive rule."
             + (setup.Jobs == 1 ? " Built, checked and run one at a time."
                 : string.Create(CultureInfo.InvariantCulture, $" Built and checked {setup.Jobs} at a time; the programs ran one at a time."))
             + string.Create(CultureInfo.InvariantCulture, $" Each process held at most {setup.Request.MemoryLimitMegabytes} MB of managed memory.")
@@ -288,10 +297,10 @@ internal static class GradeReport
 
         foreach (string c in cameras)
         {
-            html.Append(CultureInfo.InvariantCulture, $"<th>{E(c)}<br>RMSE / FLIP</th><th>{E(c)}<br>rays/px (lab {reference.AdaptiveRaysPerPixel[c].ToString("F2", Inv)}), ms</th>");
+            html.Append(CultureInfo.InvariantCulture, $"<th>{E(c)}<br>RMSE / FLIP</th><th>{E(c)}<br>rays/px, the program's own line (lab rule {reference.AdaptiveRaysPerPixel[c].ToString("F2", Inv)})</th>");
         }
 
-        html.AppendLine("<th>s</th></tr>");
+        html.AppendLine("<th>program s<br>(grader's clock)</th><th>s</th></tr>");
         foreach (StudentRow row in rows)
         {
             html.Append(CultureInfo.InvariantCulture, $"<tr><td class=\"l\"><a href=\"#{E(row.Folder)}\">{E(row.Name)}</a></td><td class=\"l\">{E(row.Status)}</td>");
@@ -305,21 +314,26 @@ internal static class GradeReport
             {
                 PictureScore? p = row.Pictures.GetValueOrDefault(c);
                 string score = p is null ? "—" : p.Problem is null ? $"{p.Rmse.ToString("F3", Inv)} / {p.Flip.ToString("F4", Inv)}" : E(p.Problem);
-                string timing = row.Timings.TryGetValue(c, out (double RaysPerPixel, double Milliseconds) t)
-                    ? $"{t.RaysPerPixel.ToString("F2", Inv)}, {t.Milliseconds.ToString("F0", Inv)}" : "—";
-                html.Append(CultureInfo.InvariantCulture, $"<td>{score}</td><td>{timing}</td>");
+                string rays = row.LabRaysPerPixel.TryGetValue(c, out double rpp) ? rpp.ToString("F2", Inv) : "—";
+                html.Append(CultureInfo.InvariantCulture, $"<td>{score}</td><td>{rays}</td>");
             }
 
-            html.AppendLine(CultureInfo.InvariantCulture, $"<td>{row.Seconds.ToString("F0", Inv)}</td></tr>");
+            string program = ProgramSeconds(row) is double seconds ? seconds.ToString("F2", Inv) : "—";
+            html.AppendLine(CultureInfo.InvariantCulture, $"<td>{program}</td><td>{row.Seconds.ToString("F0", Inv)}</td></tr>");
         }
 
         html.AppendLine("</table>");
         foreach (StudentRow row in rows)
         {
             html.AppendLine(CultureInfo.InvariantCulture, $"<h2 id=\"{E(row.Folder)}\">{E(row.Name)}: {E(row.Status)}</h2>");
-            if (row.Detail is not null)
+            if (Detail(row) is { } detail)
             {
-                html.AppendLine(CultureInfo.InvariantCulture, $"<pre>{E(row.Detail)}</pre>");
+                html.AppendLine(CultureInfo.InvariantCulture, $"<pre>{E(detail)}</pre>");
+            }
+
+            if (row.ProgramTimedBy is not null)
+            {
+                html.AppendLine(CultureInfo.InvariantCulture, $"<p>Program: {E(row.ProgramTimedBy)}.</p>");
             }
 
             if (row.Uses.Count > 0)
@@ -353,8 +367,21 @@ internal static class GradeReport
     private static string Number(double? value, string format) =>
         value is { } v && double.IsFinite(v) ? v.ToString(format, Inv) : "";
 
-    private static string Quote(string cell) =>
-        cell.IndexOfAny([',', '"', '\n', '\r']) >= 0 ? $"\"{cell.Replace("\"", "\"\"", StringComparison.Ordinal)}\"" : cell;
+    /// <summary>What the report says of the rays per pixel it shows: the lab's own words.</summary>
+    private const string LabReportSource = "the program's own lines: not checked by the grader, not graded (the checks count the rays themselves)";
+
+    /// <summary>The most characters of a row's detail (the lab's own output) the report shows.</summary>
+    private const int DetailLimit = 1000;
+
+    /// <summary>The program's seconds by the grader's clock, or null when it did not run.</summary>
+    private static double? ProgramSeconds(StudentRow row) =>
+        row.ProgramTimedBy is not null && row.Steps.TryGetValue("program", out double seconds) ? seconds : null;
+
+    /// <summary>The row's detail, cut to <see cref="DetailLimit"/> characters with a note that says so.</summary>
+    private static string? Detail(StudentRow row) =>
+        row.Detail is not { } detail ? null
+        : detail.Length <= DetailLimit ? detail
+        : string.Create(Inv, $"{detail[..DetailLimit]}… ({detail.Length - DetailLimit:N0} characters more in the log)");
 
     /// <summary>Section numbers in numeric order (2.1, 2.2, 3, 3.1, …, 4.1.4, 5), then own, then class names.</summary>
     private sealed class SectionOrder : IComparer<string>
@@ -401,5 +428,23 @@ internal static class GradeReport
 
             return numbers;
         }
+    }
+}
+
+/// <summary>The cells of <c>raylab grade</c>'s grades.csv, safe to open in a spreadsheet.</summary>
+public static class GradeCsv
+{
+    /// <summary>
+    /// One cell: a text that starts with <c>=</c>, <c>+</c>, <c>-</c>, <c>@</c>, a tab or a carriage return (which a
+    /// spreadsheet takes for a formula: OWASP's CSV injection rule) gets a leading <c>'</c>, then a cell with a comma,
+    /// a quote or a line break is quoted as RFC 4180 asks, its quotes doubled.
+    /// </summary>
+    /// <param name="text">The cell's text: a student's name, a status, the lab's own error lines.</param>
+    /// <returns>The cell as written in the file.</returns>
+    public static string Cell(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        string cell = text.Length > 0 && text[0] is '=' or '+' or '-' or '@' or '\t' or '\r' ? "'" + text : text;
+        return cell.IndexOfAny([',', '"', '\n', '\r']) >= 0 ? $"\"{cell.Replace("\"", "\"\"", StringComparison.Ordinal)}\"" : cell;
     }
 }

@@ -421,7 +421,7 @@ public sealed partial class GradeSandbox : IDisposable
             string end = timedOut ? $"stopped after the limit of {limit.TotalSeconds:0} s"
                 : hit != SandboxLimit.None ? $"exit {run.ExitCode}, {LimitName(hit)}"
                 : $"exit {run.ExitCode}";
-            File.AppendAllText(log, $"$ {command} {string.Join(' ', args)}\n{text}\n[{end}, {clock.Elapsed.TotalSeconds:0.0} s]\n\n");
+            AppendLog(log, $"$ {command} {string.Join(' ', args)}", text, $"[{end}, {clock.Elapsed.TotalSeconds:0.0} s]");
         }
 
         return run;
@@ -845,6 +845,72 @@ public sealed partial class GradeSandbox : IDisposable
         return relative == "." || (!relative.StartsWith("..", StringComparison.Ordinal) && !Path.IsPathRooted(relative));
     }
 
+    /// <summary>The most characters of one step's output the log keeps: its first and last halves, and a line that says how much was left out between them.</summary>
+    public const int LogStepLimit = 64 * 1024;
+
+    /// <summary>The most bytes a submission's log holds in all; past it, one line says that the rest was left out.</summary>
+    public const int LogTotalLimit = 1024 * 1024;
+
+    /// <summary>The line a log ends with once it reaches <see cref="LogTotalLimit"/>.</summary>
+    public static readonly string LogFullLine = string.Create(CultureInfo.InvariantCulture,
+        $"[the log is cut here: it reached its limit of {LogTotalLimit / 1024:N0} KiB; the rest of this submission's output is left out]");
+
+    /// <summary>
+    /// Appends one step to a submission's log: its command line, its output (the lab's own words: control characters,
+    /// terminal escapes among them, as '?'; at most <see cref="LogStepLimit"/> characters, the cut said where it is),
+    /// and how it ended; the whole log at most <see cref="LogTotalLimit"/> bytes, the cut said at its end.
+    /// </summary>
+    /// <param name="log">The log file.</param>
+    /// <param name="commandLine">The step's command line.</param>
+    /// <param name="output">The step's output.</param>
+    /// <param name="end">How the step ended, one line.</param>
+    public static void AppendLog(string log, string commandLine, string output, string end)
+    {
+        ArgumentException.ThrowIfNullOrEmpty(log);
+        ArgumentNullException.ThrowIfNull(commandLine);
+        ArgumentNullException.ThrowIfNull(output);
+        ArgumentNullException.ThrowIfNull(end);
+        string kept = output;
+        if (kept.Length > LogStepLimit)
+        {
+            int half = LogStepLimit / 2;
+            kept = string.Create(CultureInfo.InvariantCulture,
+                $"{kept[..half]}\n[… {kept.Length - (2 * half):N0} characters of this step's output left out here: the log keeps the first and the last {half:N0} of each step …]\n{kept[^half..]}");
+        }
+
+        var clean = new StringBuilder(kept.Length);
+        foreach (char c in kept)
+        {
+            clean.Append(char.IsControl(c) && c is not '\n' and not '\t' ? '?' : c);
+        }
+
+        byte[] entry = Encoding.UTF8.GetBytes($"{commandLine}\n{clean}\n{end}\n\n");
+        byte[] full = Encoding.UTF8.GetBytes("\n" + LogFullLine + "\n");
+        long used = File.Exists(log) ? new FileInfo(log).Length : 0;
+        using var stream = new FileStream(log, FileMode.Append, FileAccess.Write);
+        if (used + entry.Length <= LogTotalLimit - full.Length)
+        {
+            stream.Write(entry);
+            return;
+        }
+
+        long room = LogTotalLimit - full.Length - used;
+        if (room < 0)
+        {
+            return; // already cut
+        }
+
+        // As much of the step as fits, cut before a character's first byte, and the line that says so.
+        int take = (int)room;
+        while (take > 0 && take < entry.Length && (entry[take] & 0xC0) == 0x80)
+        {
+            take--;
+        }
+
+        stream.Write(entry.AsSpan(0, take));
+        stream.Write(full);
+    }
+
     private static void Append(StringBuilder output, string? line)
     {
         if (line is null)
@@ -854,12 +920,22 @@ public sealed partial class GradeSandbox : IDisposable
 
         lock (output)
         {
-            if (output.Length < 4_000_000)
+            if (output.Length < OutputLimit)
             {
                 output.AppendLine(line);
             }
+            else if (!output.ToString(output.Length - NotKept.Length, NotKept.Length).Equals(NotKept, StringComparison.Ordinal))
+            {
+                output.Append(NotKept);
+            }
         }
     }
+
+    /// <summary>The most characters of a child's output kept in memory.</summary>
+    private const int OutputLimit = 4_000_000;
+
+    /// <summary>The line that ends a child's output past <see cref="OutputLimit"/>.</summary>
+    private static readonly string NotKept = string.Create(CultureInfo.InvariantCulture, $"[output past {OutputLimit:N0} characters not kept]\n");
 
     private static void Kill(Process process)
     {

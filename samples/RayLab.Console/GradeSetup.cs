@@ -50,7 +50,7 @@ internal sealed class GradeSetup
         ["perspective"] = "out/two-spheres-perspective.png",
     };
 
-    /// <summary>The method whose rays per pixel and time the program's lines report (adaptive, or the method lab's mymethod).</summary>
+    /// <summary>The method whose rays per pixel the program's lines report, shown as its own report (adaptive, or the method lab's mymethod).</summary>
     public string TimedMethod { get; private set; } = "adaptive";
 
     /// <summary>The checks' root namespace (the template's lab name).</summary>

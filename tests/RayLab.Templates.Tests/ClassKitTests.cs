@@ -115,7 +115,7 @@ public sealed class ClassKit : IAsyncLifetime
 /// gets one right row each, within the limits given.
 /// </summary>
 [Trait("Category", "Templates")]
-public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
+public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
 {
     /// <summary>
     /// The class's limit per submission. The lab that hangs must build and finish one run of its checks, which ends a
@@ -241,7 +241,7 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         }
 
         Assert.True(Rmse(rows["correct"]) < Rmse(rows["template"]) / 4, $"RMSE {Rmse(rows["correct"])} against the template's {Rmse(rows["template"])}");
-        Assert.Equal(16, rows["correct"].GetProperty("timing").GetProperty("perspective").GetProperty("raysPerPixel").GetDouble(), 3);
+        Assert.Equal(16, rows["correct"].GetProperty("labReport").GetProperty("perspective").GetProperty("raysPerPixel").GetDouble(), 3);
 
         // Sabotaged: the method's section fails under the instructor's threshold, whatever the student's copy says; the others pass.
         Assert.Equal("ok", rows["sabotaged"].GetProperty("status").GetString());
@@ -349,7 +349,7 @@ public sealed class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit>
         foreach (string camera in (string[])["orthographic", "perspective"])
         {
             double lab = grades.RootElement.GetProperty("reference").GetProperty(camera).GetProperty("labAdaptiveRaysPerPixel").GetDouble();
-            Assert.Equal(lab, rows["solution"].GetProperty("timing").GetProperty(camera).GetProperty("raysPerPixel").GetDouble(), 0.01);
+            Assert.Equal(lab, rows["solution"].GetProperty("labReport").GetProperty(camera).GetProperty("raysPerPixel").GetDouble(), 0.01);
         }
 
         Assert.Equal("ok", rows["rounded"].GetProperty("status").GetString());

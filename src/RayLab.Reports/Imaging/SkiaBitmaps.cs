@@ -91,50 +91,104 @@ public static class SkiaBitmaps
                 throw new UnauthorizedAccessException($"{path}: is a folder, not a picture");
             }
 
-            byte[] bytes = File.ReadAllBytes(path);
-            using SKData data = SKData.CreateCopy(bytes);
-            using SKCodec? codec = bytes.Length == 0 ? null : SKCodec.Create(data);
-            if (codec is null)
-            {
-                throw new InvalidDataException($"{path}: not a picture (expected PNG, JPEG, WebP, BMP or GIF)");
-            }
-
-            int width = codec.Info.Width, height = codec.Info.Height;
-            // Decoded as RGBA first: four bytes a pixel must fit in one array.
-            if (width < 1 || height < 1 || (long)width * height * 4 > Array.MaxLength)
-            {
-                throw new InvalidDataException($"{path}: a {width}×{height} picture is more than can be read (at most {Array.MaxLength / 4:N0} pixels)");
-            }
-
-            var info = new SKImageInfo(width, height, SKColorType.Rgba8888, SKAlphaType.Unpremul);
-            byte[] rgba = new byte[info.BytesSize64];
-            GCHandle pin = GCHandle.Alloc(rgba, GCHandleType.Pinned);
-            SKCodecResult result;
-            try
-            {
-                result = codec.GetPixels(info, pin.AddrOfPinnedObject());
-            }
-            finally
-            {
-                pin.Free();
-            }
-
-            if (result != SKCodecResult.Success)
-            {
-                throw new InvalidDataException(result == SKCodecResult.IncompleteInput
-                    ? $"{path}: the picture's data is cut short"
-                    : $"{path}: the picture cannot be decoded ({result})");
-            }
-
-            var picture = new Image(width, height);
-            Span<byte> target = picture.PixelBytes;
-            for (int y = 0; y < height; y++)
-            {
-                DropAlpha(rgba.AsSpan(y * info.RowBytes, width * 4), target.Slice(y * width * 3, width * 3));
-            }
-
-            return picture;
+            return Decode(File.ReadAllBytes(path), path, int.MaxValue, int.MaxValue);
         }
+
+        /// <summary>
+        /// Reads a picture held in memory into a new <see cref="Image"/>, as <see cref="Load(string)"/> reads a file,
+        /// but only one of at most <paramref name="maxWidth"/>×<paramref name="maxHeight"/> pixels: the size is read
+        /// from the picture's header, and a larger picture is refused before any pixel is decoded or any memory is
+        /// taken for its pixels. For pictures from a source you do not trust, whose header may claim any size (a PNG
+        /// of 74 bytes can claim 23000×23000 pixels, 2 GB to decode into).
+        /// </summary>
+        /// <param name="data">The picture file's bytes.</param>
+        /// <param name="name">The picture's name in messages (its file, for example).</param>
+        /// <param name="maxWidth">The widest picture read, ≥ 1.</param>
+        /// <param name="maxHeight">The tallest picture read, ≥ 1.</param>
+        /// <returns>The picture.</returns>
+        /// <exception cref="ArgumentOutOfRangeException">A largest size is less than 1.</exception>
+        /// <exception cref="InvalidDataException">
+        /// The data is not a picture SkiaSharp decodes, is cut short or damaged, is larger than
+        /// <paramref name="maxWidth"/>×<paramref name="maxHeight"/> or has more than 2³¹ / 4 pixels (each message
+        /// starts with <paramref name="name"/>).
+        /// </exception>
+        public static Image Load(ReadOnlySpan<byte> data, string name, int maxWidth, int maxHeight)
+        {
+            ArgumentNullException.ThrowIfNull(name);
+            ArgumentOutOfRangeException.ThrowIfLessThan(maxWidth, 1);
+            ArgumentOutOfRangeException.ThrowIfLessThan(maxHeight, 1);
+            return Decode(data, name, maxWidth, maxHeight);
+        }
+    }
+
+    /// <summary>
+    /// The size a picture held in memory claims in its header (PNG, JPEG, WebP, BMP or GIF), read without decoding a
+    /// pixel: what a caller checks before it decodes a picture from a source it does not trust.
+    /// </summary>
+    /// <param name="data">The picture file's bytes.</param>
+    /// <returns>The width and height its header claims, or null when SkiaSharp does not take it for a picture.</returns>
+    public static (int Width, int Height)? ReadSize(ReadOnlySpan<byte> data)
+    {
+        if (data.IsEmpty)
+        {
+            return null;
+        }
+
+        using SKData copy = SKData.CreateCopy(data);
+        using SKCodec? codec = SKCodec.Create(copy);
+        return codec is null ? null : (codec.Info.Width, codec.Info.Height);
+    }
+
+    private static Image Decode(ReadOnlySpan<byte> bytes, string name, int maxWidth, int maxHeight)
+    {
+        using SKData data = SKData.CreateCopy(bytes);
+        using SKCodec? codec = bytes.Length == 0 ? null : SKCodec.Create(data);
+        if (codec is null)
+        {
+            throw new InvalidDataException($"{name}: not a picture (expected PNG, JPEG, WebP, BMP or GIF)");
+        }
+
+        // The header's size, before anything is allocated for the pixels.
+        int width = codec.Info.Width, height = codec.Info.Height;
+        if (width > maxWidth || height > maxHeight)
+        {
+            throw new InvalidDataException($"{name}: a {width}×{height} picture is larger than the {maxWidth}×{maxHeight} read here; not decoded");
+        }
+
+        // Decoded as RGBA first: four bytes a pixel must fit in one array.
+        if (width < 1 || height < 1 || (long)width * height * 4 > Array.MaxLength)
+        {
+            throw new InvalidDataException($"{name}: a {width}×{height} picture is more than can be read (at most {Array.MaxLength / 4:N0} pixels)");
+        }
+
+        var info = new SKImageInfo(width, height, SKColorType.Rgba8888, SKAlphaType.Unpremul);
+        byte[] rgba = new byte[info.BytesSize64];
+        GCHandle pin = GCHandle.Alloc(rgba, GCHandleType.Pinned);
+        SKCodecResult result;
+        try
+        {
+            result = codec.GetPixels(info, pin.AddrOfPinnedObject());
+        }
+        finally
+        {
+            pin.Free();
+        }
+
+        if (result != SKCodecResult.Success)
+        {
+            throw new InvalidDataException(result == SKCodecResult.IncompleteInput
+                ? $"{name}: the picture's data is cut short"
+                : $"{name}: the picture cannot be decoded ({result})");
+        }
+
+        var picture = new Image(width, height);
+        Span<byte> target = picture.PixelBytes;
+        for (int y = 0; y < height; y++)
+        {
+            DropAlpha(rgba.AsSpan(y * info.RowBytes, width * 4), target.Slice(y * width * 3, width * 3));
+        }
+
+        return picture;
     }
 
     private static void ExpandRow(ReadOnlySpan<byte> rgb, Span<byte> rgba)

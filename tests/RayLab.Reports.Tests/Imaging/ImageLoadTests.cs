@@ -67,4 +67,34 @@ public sealed class ImageLoadTests : IDisposable
         Assert.Throws<FileNotFoundException>(() => Image.Load(_dir.File("missing.png")));
         Assert.Throws<UnauthorizedAccessException>(() => Image.Load(_dir.Path));
     }
+
+    [Fact]
+    public void APictureInMemoryReadsBackAsFromItsFile()
+    {
+        Image image = Pattern(37, 23);
+        string path = _dir.File("p.png");
+        image.Save(path);
+        byte[] bytes = File.ReadAllBytes(path);
+
+        Assert.Equal((37, 23), SkiaBitmaps.ReadSize(bytes));
+        Assert.Equal(image.PixelBytes.ToArray(), Image.Load(bytes, "p.png", 37, 23).PixelBytes.ToArray());
+        Assert.Null(SkiaBitmaps.ReadSize("not a picture"u8));
+        Assert.Null(SkiaBitmaps.ReadSize([]));
+        Assert.Equal("p.png: a 37×23 picture is larger than the 37×22 read here; not decoded",
+            Assert.Throws<InvalidDataException>(() => Image.Load(bytes, "p.png", 37, 22)).Message);
+    }
+
+    [Theory]
+    [InlineData(100_000, 100_000)] // more than an image can hold: refused by Load(path) too
+    [InlineData(20_000, 20_000)]   // what an image can hold: Load(path) allocates 1.6 GB for it before it finds the data cut short
+    public void APngClaimingAHugeSizeIsRefusedFromItsHeaderBeforeItsPixelsAreAllocated(int width, int height)
+    {
+        byte[] claim = ClaimingPng.Of(width, height);
+        Assert.Equal((width, height), SkiaBitmaps.ReadSize(claim));
+        long before = GC.GetAllocatedBytesForCurrentThread();
+        var e = Assert.Throws<InvalidDataException>(() => Image.Load(claim, "claim.png", 800, 600));
+        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+        Assert.Equal($"claim.png: a {width}×{height} picture is larger than the 800×600 read here; not decoded", e.Message);
+        Assert.True(allocated < 1 << 20, $"{allocated:N0} bytes allocated to refuse it");
+    }
 }
