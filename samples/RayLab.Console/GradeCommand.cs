@@ -4,7 +4,7 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// <c>raylab grade SUBMISSIONS --checks KIT/checks/KIND --out DIR [--feed KIT/feed] [--check-timeout S]
-/// [--run-timeout S] [--submission-timeout S] [--jobs N] [--memory-limit MB] [--unsafe-no-sandbox]</c>: builds, checks and runs every
+/// [--run-timeout S] [--submission-timeout S] [--jobs N] [--memory-limit MB] [--moodle-worksheet CSV] [--unsafe-no-sandbox]</c>: builds, checks and runs every
 /// submitted lab in a sandbox with the instructor's pinned checks and writes one class table (<see cref="GradeJob"/>).
 /// </summary>
 public static class GradeCommand
@@ -15,7 +15,7 @@ public static class GradeCommand
     /// <param name="cancellation">Cancels the run (Ctrl+C): the submission in progress is stopped and no report is written.</param>
     public static Command Create(TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
-        var submissions = new Argument<string>("submissions") { Description = "The folder of submitted labs: one folder per student (the folder's name is the student's row), each a lab with src/Lab (or one folder holding it)." };
+        var submissions = new Argument<string>("submissions") { Description = "The submitted labs: a folder of one folder per student (the folder's name is the student's row; GitHub Classroom's clones too), or a Moodle assignment's \"Download all submissions\" folder or zip (one Full Name_12345_assignsubmission_file_ folder per student; the full name is the row). Each holds a lab with src/Lab (or one folder holding it), or the zip of one, unpacked safely." };
         var checks = new Option<string>("--checks") { Description = "The instructor's pinned checks: a class kit's checks/exercise or checks/method (a lab whose tests/Lab.Tests, Directory.Build.props and grading.json replace the student's).", Required = true, HelpName = "DIR" };
         var feed = new Option<string?>("--feed") { Description = "The folder feed every package comes from, the only package source. Default: the kit's feed/ (two folders above --checks).", HelpName = "DIR" };
         var output = new Option<string>("--out") { Description = "The folder for the report: grades.csv, grades.json, index.html, each student's pictures, error maps and logs (created if missing).", Required = true, HelpName = "DIR" };
@@ -24,10 +24,11 @@ public static class GradeCommand
         var submissionTimeout = new Option<int>("--submission-timeout") { Description = "Seconds one submission may take in all (build, checks, program); what is left is stopped and the row says so.", DefaultValueFactory = _ => 600, HelpName = "S" };
         var jobs = new Option<int>("--jobs", "-j") { Description = "How many submissions are built and checked at once (each takes about two cores); the programs, whose times the report compares, then run one at a time. Default: half the processor count, at least 1.", DefaultValueFactory = _ => GradeRequest.DefaultJobs, HelpName = "N" };
         var memoryLimit = new Option<int>("--memory-limit") { Description = "Megabytes of managed memory (the .NET GC heap) each process of a submission may hold: its build, its checks and its program; past it that process fails with OutOfMemoryException and the row says so.", DefaultValueFactory = _ => GradeRequest.DefaultMemoryLimitMegabytes, HelpName = "MB" };
+        var moodleWorksheet = new Option<string?>("--moodle-worksheet") { Description = "The Moodle assignment's offline grading worksheet (CSV): the report folder gets moodle-worksheet.csv, the same file with each graded student's Grade and Feedback comments (in Polish) filled, for \"Upload grading worksheet\".", HelpName = "CSV" };
         var unsafeNoSandbox = new Option<bool>("--unsafe-no-sandbox") { Description = "Run the submissions' code without a sandbox, with this user's rights and network: only for labs you trust, or where bubblewrap cannot run (Windows, macOS)." };
         var grade = new Command("grade", "Grade a folder of submitted labs against the instructor's pinned checks: each one built, tested and run in a sandbox (bubblewrap: read-only system, no network, its own folder writable), its pictures scored against the exact image; writes grades.csv, grades.json and index.html.")
         {
-            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, jobs, memoryLimit, unsafeNoSandbox,
+            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, jobs, memoryLimit, moodleWorksheet, unsafeNoSandbox,
         };
         grade.SetAction(result => GradeJob.Run(
             new GradeRequest(
@@ -42,6 +43,7 @@ public static class GradeCommand
             {
                 Jobs = result.GetRequiredValue(jobs),
                 MemoryLimitMegabytes = result.GetRequiredValue(memoryLimit),
+                MoodleWorksheet = result.GetValue(moodleWorksheet),
             },
             stdout,
             stderr,
@@ -83,4 +85,7 @@ public sealed record GradeRequest(
     /// checks and its program each fail with an <see cref="OutOfMemoryException"/> past it, instead of taking the machine.
     /// </summary>
     public int MemoryLimitMegabytes { get; init; } = DefaultMemoryLimitMegabytes;
+
+    /// <summary>Moodle's grading worksheet to fill, or null.</summary>
+    public string? MoodleWorksheet { get; init; }
 }
