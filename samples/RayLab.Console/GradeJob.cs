@@ -117,6 +117,11 @@ public static partial class GradeJob
                     $"{row.Name}: {row.Status}; {row.CheckCounts} ({row.Seconds:0} s)"));
             }
 
+            foreach (string warning in GradeMarks.UnknownSections(setup, rows))
+            {
+                stdout.WriteLine(warning);
+            }
+
             GradeReport.Write(staging, setup, reference, rows, sandbox.IsSandboxed);
             string? worksheet = GradeMarks.WriteWorksheet(staging, setup, rows, stdout);
             Directory.CreateDirectory(setup.Output);

@@ -1,3 +1,4 @@
+using System.Globalization;
 using System.Xml.Linq;
 using RayLab.Grading;
 
@@ -69,6 +70,21 @@ internal static class GradeMarks
     public static double MaxGrade(GradeSetup setup, IEnumerable<string> sections, IReadOnlyCollection<string> cameras) =>
         setup.Scheme.MaxGrade(sections, cameras.Count);
 
+    /// <summary>A warning for each section grading.json's points name that no check of any submission has (a typo, or a section the checks lack).</summary>
+    public static IEnumerable<string> UnknownSections(GradeSetup setup, IReadOnlyList<StudentRow> rows)
+    {
+        if (setup.Scheme.SectionPoints is not { } points || rows.All(r => r.Checks.Count == 0))
+        {
+            yield break;
+        }
+
+        var sections = rows.SelectMany(r => r.Checks.Keys).Select(GradeJob.SectionOf).ToHashSet(StringComparer.Ordinal);
+        foreach (string section in points.Keys.Where(s => !sections.Contains(s)))
+        {
+            yield return $"warning: grading.json: points.{section}: no check has this section; its points count in the full grade only";
+        }
+    }
+
     /// <summary>The student's feedback in Polish: what stopped the grading, then each section that did not pass with its first message.</summary>
     public static string Feedback(StudentRow row, IEnumerable<string> sections)
     {
@@ -120,6 +136,13 @@ internal static class GradeMarks
             }
 
             grades[id] = new WorksheetGrade(row.Grade, Feedback(row, sections));
+        }
+
+        double full = MaxGrade(setup, sections, setup.Pictures.Keys);
+        if (worksheet.MaximumGrade is double maximum && Math.Abs(maximum - full) > 1e-9)
+        {
+            stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"warning: --moodle-worksheet: the assignment's maximum grade is {maximum:0.##}, the checks' full grade {full:0.##}; make them agree in Moodle or in grading.json's points"));
         }
 
         File.WriteAllBytes(Path.Combine(staging, WorksheetFile), worksheet.Fill(grades));

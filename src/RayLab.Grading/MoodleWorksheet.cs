@@ -74,7 +74,13 @@ public sealed partial class MoodleWorksheet
         int maximum = Column(header, MaximumGradeNames, required: false);
         _newLine = ends.FirstOrDefault(e => e.Length > 0) ?? "\n";
         _decimal = maximum >= 0 && records.Skip(1).Any(r => maximum < r.Count && DecimalComma().IsMatch(r[maximum].Value)) ? ',' : '.';
+        MaximumGrade = maximum < 0 ? null : records.Skip(1)
+            .Select(r => maximum < r.Count && double.TryParse(r[maximum].Value.Trim().Replace(',', '.'), NumberStyles.Float, CultureInfo.InvariantCulture, out double m) ? m : (double?)null)
+            .FirstOrDefault(m => m is not null);
     }
+
+    /// <summary>The assignment's maximum grade, from the first row's <c>Maximum Grade</c> cell that holds a number, or null.</summary>
+    public double? MaximumGrade { get; }
 
     /// <summary>Each row's participant id (the number of "Participant 12345") and full name, in the file's order.</summary>
     public IReadOnlyList<(string ParticipantId, string FullName)> Participants =>

@@ -22,6 +22,7 @@ public sealed class MoodleWorksheetTests
         byte[] bytes = Encoding(bom).GetPreamble().Concat(Encoding(bom).GetBytes(text)).ToArray();
         MoodleWorksheet sheet = MoodleWorksheet.Parse(bytes, "grades.csv");
         Assert.Equal([("101", "Zażółć Gęślą"), ("104", "Piotr Brak"), ("102", "Kowalski, Jan")], sheet.Participants);
+        Assert.Equal(10, sheet.MaximumGrade);
 
         byte[] filled = sheet.Fill(new Dictionary<string, WorksheetGrade>
         {
@@ -52,6 +53,7 @@ public sealed class MoodleWorksheetTests
         string written = System.Text.Encoding.UTF8.GetString(sheet.Fill(new Dictionary<string, WorksheetGrade> { ["7"] = new(8.25, "Wszystkie sekcje zaliczone.") }));
         Assert.Equal(Header + "\nParticipant 7,Ewa Nowak,e@x,Submitted,\"8,25\",\"10,00\",Yes,-,-,Wszystkie sekcje zaliczone.", written);
         Assert.Equal("7", sheet.ParticipantOf("Ewa Nowak"));
+        Assert.Equal(10, sheet.MaximumGrade);
         Assert.Null(sheet.ParticipantOf("Jan Kowalski"));
     }
 
