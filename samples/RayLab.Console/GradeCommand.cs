@@ -5,7 +5,7 @@ namespace RayLab.Cli;
 /// <summary>
 /// <c>raylab grade SUBMISSIONS --checks KIT/checks/KIND --out DIR [--feed KIT/feed] [--check-timeout S]
 /// [--run-timeout S] [--submission-timeout S] [--jobs N] [--memory-limit MB] [--process-limit N] [--disk-limit MB]
-/// [--cpu-limit S] [--unsafe-no-limit LIMIT] [--unsafe-no-sandbox]</c>: builds, checks and runs every
+/// [--cpu-limit S] [--unsafe-no-limit LIMIT] [--moodle-worksheet CSV] [--unsafe-no-sandbox]</c>: builds, checks and runs every
 /// submitted lab in a sandbox with the instructor's pinned checks and writes one class table (<see cref="GradeJob"/>).
 /// </summary>
 public static class GradeCommand
@@ -16,7 +16,7 @@ public static class GradeCommand
     /// <param name="cancellation">Cancels the run (Ctrl+C): the submission in progress is stopped and no report is written.</param>
     public static Command Create(TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
     {
-        var submissions = new Argument<string>("submissions") { Description = "The folder of submitted labs: one folder per student (the folder's name is the student's row), each a lab with src/Lab (or one folder holding it)." };
+        var submissions = new Argument<string>("submissions") { Description = "The submitted labs: a folder of one folder per student (the folder's name is the student's row; GitHub Classroom's clones too), or a Moodle assignment's \"Download all submissions\" folder or zip (one Full Name_12345_assignsubmission_file_ folder per student; the full name is the row). Each holds a lab with src/Lab (or one folder holding it), or the zip of one, unpacked safely." };
         var checks = new Option<string>("--checks") { Description = "The instructor's pinned checks: a class kit's checks/exercise or checks/method (a lab whose tests/Lab.Tests, Directory.Build.props and grading.json replace the student's).", Required = true, HelpName = "DIR" };
         var feed = new Option<string?>("--feed") { Description = "The folder feed every package comes from, the only package source. Default: the kit's feed/ (two folders above --checks).", HelpName = "DIR" };
         var output = new Option<string>("--out") { Description = "The folder for the report: grades.csv, grades.json, index.html, each student's pictures, error maps and logs (created if missing).", Required = true, HelpName = "DIR" };
@@ -29,10 +29,11 @@ public static class GradeCommand
         var diskLimit = new Option<int>("--disk-limit") { Description = "Megabytes the lab's writable copy may hold (a tmpfs of that size; needs root), and its /tmp each; a lab that fills it gets a row that says so.", DefaultValueFactory = _ => GradeRequest.DefaultDiskLimitMegabytes, HelpName = "MB" };
         var cpuLimit = new Option<int>("--cpu-limit") { Description = "Seconds of CPU time each process of a submission may use (RLIMIT_CPU).", DefaultValueFactory = _ => GradeRequest.DefaultCpuLimitSeconds, HelpName = "S" };
         var unsafeNoLimit = new Option<string[]>("--unsafe-no-limit") { Description = "Grade without a limit this machine cannot hold: memory, processes, disk or cpu (repeat it for more); without it the grader refuses to start.", HelpName = "LIMIT", AllowMultipleArgumentsPerToken = false };
+        var moodleWorksheet = new Option<string?>("--moodle-worksheet") { Description = "The Moodle assignment's offline grading worksheet (CSV): the report folder gets moodle-worksheet.csv, the same file with each graded student's Grade and Feedback comments (in Polish) filled, for \"Upload grading worksheet\".", HelpName = "CSV" };
         var unsafeNoSandbox = new Option<bool>("--unsafe-no-sandbox") { Description = "Run the submissions' code without a sandbox, with this user's rights and network: only for labs you trust, or where bubblewrap cannot run (Windows, macOS)." };
         var grade = new Command("grade", "Grade a folder of submitted labs against the instructor's pinned checks: each one built, tested and run in a sandbox (bubblewrap: read-only system, no network, its own folder writable), its pictures scored against the exact image; writes grades.csv, grades.json and index.html.")
         {
-            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, jobs, memoryLimit, processLimit, diskLimit, cpuLimit, unsafeNoLimit, unsafeNoSandbox,
+            submissions, checks, feed, output, checkTimeout, runTimeout, submissionTimeout, jobs, memoryLimit, processLimit, diskLimit, cpuLimit, unsafeNoLimit, moodleWorksheet, unsafeNoSandbox,
         };
         grade.SetAction(result => GradeJob.Run(
             new GradeRequest(
@@ -51,6 +52,7 @@ public static class GradeCommand
                 DiskLimitMegabytes = result.GetRequiredValue(diskLimit),
                 CpuLimitSeconds = result.GetRequiredValue(cpuLimit),
                 UnsafeNoLimit = result.GetValue(unsafeNoLimit) ?? [],
+                MoodleWorksheet = result.GetValue(moodleWorksheet),
             },
             stdout,
             stderr,
@@ -126,4 +128,7 @@ public sealed record GradeRequest(
         DiskMegabytes = UnsafeNoLimit.Contains("disk") ? null : DiskLimitMegabytes,
         CpuSeconds = UnsafeNoLimit.Contains("cpu") ? null : CpuLimitSeconds,
     };
+
+    /// <summary>Moodle's grading worksheet to fill, or null.</summary>
+    public string? MoodleWorksheet { get; init; }
 }

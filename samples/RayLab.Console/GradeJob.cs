@@ -3,8 +3,8 @@ using System.Globalization;
 using System.Text;
 using System.Text.RegularExpressions;
 using System.Xml.Linq;
-using RayLab.Reports.Imaging;
 using RayLab.Grading;
+using RayLab.Reports.Imaging;
 using RayLab.Metrics;
 using RayLab.Scenes;
 
@@ -63,10 +63,10 @@ public static partial class GradeJob
 
     private static int RunChecked(GradeRequest request, TextWriter stdout, CancellationToken cancellation)
     {
-        GradeSetup setup = GradeSetup.Check(request);
         string work = Directory.CreateTempSubdirectory("raylab-grade-").FullName;
         try
         {
+            GradeSetup setup = GradeSetup.Check(request, work);
             string packages = Path.Combine(work, "packages");
             Directory.CreateDirectory(packages);
             stdout.WriteLine($"restoring the checks' packages from {setup.Feed} (once, outside the sandbox)");
@@ -87,14 +87,19 @@ public static partial class GradeJob
             Directory.CreateDirectory(staging);
             reference.Save(staging);
             var grading = Stopwatch.StartNew();
-            string[] names = [.. setup.Students.Select(s => Path.GetFileName(s))];
+            string[] names = [.. setup.Submitted.Select(s => s.Name)];
             string[] folders = StudentFolders(names);
             var labs = new GradedLab[setup.Students.Length];
             stdout.WriteLine($"building and checking {labs.Length} submissions, {setup.Jobs} at a time");
             int done = 0;
             SideBySide.Run(labs.Length, setup.Jobs, (i, stop) =>
             {
-                GradedLab lab = BuildAndCheck(setup, sandbox, setup.Students[i], new StudentRow(names[i], folders[i]), work, staging, stop);
+                // What the student uploaded, unpacked safely; a refused zip is the row's status, and nothing of it is graded.
+                var row = new StudentRow(names[i], folders[i]) { ParticipantId = setup.Submitted[i].ParticipantId };
+                UploadedLab upload = UploadedLab.Unpack(setup.Students[i], Path.Combine(work, "uploads", folders[i]), ZipLimits.Upload);
+                GradedLab lab = upload.Folder is null
+                    ? GradeMarks.Refused(upload, row, staging)
+                    : GradeMarks.ReadMessages(BuildAndCheck(setup, sandbox, upload.Folder, row, work, staging, stop));
                 labs[i] = lab;
                 int k = Interlocked.Increment(ref done);
                 lock (stdout)
@@ -118,10 +123,20 @@ public static partial class GradeJob
                     $"{row.Name}: {row.Status}; {row.CheckCounts} ({row.Seconds:0} s)"));
             }
 
+            foreach (string warning in GradeMarks.UnknownSections(setup, rows))
+            {
+                stdout.WriteLine(warning);
+            }
+
             GradeReport.Write(staging, setup, reference, rows, sandbox.IsSandboxed);
+            string? worksheet = GradeMarks.WriteWorksheet(staging, setup, rows, stdout);
             Directory.CreateDirectory(setup.Output);
             ReportFolder.Publish(staging, setup.Output);
             stdout.WriteLine($"wrote {Path.Combine(setup.Output, "index.html")}, grades.csv and grades.json: {rows.Count} submissions");
+            if (worksheet is not null)
+            {
+                stdout.WriteLine($"wrote the Moodle grading worksheet {Path.Combine(setup.Output, worksheet)}: upload it with \"Upload grading worksheet\"");
+            }
             return 0;
         }
         finally
@@ -236,6 +251,7 @@ public static partial class GradeJob
             // and the next run leaves them out.
             string results = Path.Combine(work, "results-of", row.Folder);
             Directory.CreateDirectory(results);
+            lab.Results = results;
             var checks = Stopwatch.StartNew();
             RunChecks(setup, sandbox, new CheckFolders(checksFolder, results), lab.Log, row, () => lab.Left(setup), cancellation);
             row.Steps["checks"] = checks.Elapsed.TotalSeconds;
@@ -798,15 +814,30 @@ internal sealed record GradedLab(StudentRow Row, string Path, string Log, string
     /// <summary>Whether it built (and its checks ran): its program runs.</summary>
     public bool Built { get; set; }
 
+    /// <summary>The folder the checks' runs wrote their results (TRX files) in, once they ran; null before.</summary>
+    public string? Results { get; set; }
+
     /// <summary>What is left of the submission's limit.</summary>
     public TimeSpan Left(GradeSetup setup) => setup.Request.SubmissionTimeout - Clock.Elapsed;
 }
 
 /// <summary>One student's row of the class table.</summary>
-/// <param name="Name">The submission folder's name.</param>
+/// <param name="Name">The submission folder's name, or the student's full name in a Moodle download.</param>
 /// <param name="Folder">That name made safe for a file path (the report's folder of the student's pictures and log).</param>
 internal sealed record StudentRow(string Name, string Folder)
 {
+    /// <summary>Moodle's participant id, or null.</summary>
+    public string? ParticipantId { get; init; }
+
+    /// <summary>Why the upload was refused, in Polish (the feedback), or null.</summary>
+    public string? PolishRefusal { get; set; }
+
+    /// <summary>Each check that did not pass: the first line of its message, where it left one.</summary>
+    public Dictionary<string, string> Messages { get; } = new(StringComparer.Ordinal);
+
+    /// <summary>The grade: the points of the sections that pass and of the pictures within the thresholds (<see cref="GradingScheme"/>).</summary>
+    public double Grade { get; set; }
+
     /// <summary>What went wrong (build, limits, program), in order; empty when everything ran.</summary>
     public List<string> Problems { get; } = [];
 

@@ -81,6 +81,11 @@ internal static class GradeReport
     {
         string[] sections = [.. rows.SelectMany(r => r.Checks.Keys).Select(GradeJob.SectionOf).Distinct().Order(SectionOrder.Instance)];
         string[] cameras = [.. setup.Pictures.Keys];
+        foreach (StudentRow row in rows)
+        {
+            row.Grade = GradeMarks.Grade(setup, row, sections, cameras);
+        }
+
         File.WriteAllText(Path.Combine(staging, "grades.csv"), Csv(rows, sections, cameras, reference));
         File.WriteAllText(Path.Combine(staging, "grades.json"), Json(setup, rows, sections, cameras, reference, sandboxed));
         File.WriteAllText(Path.Combine(staging, "index.html"), Html(setup, rows, sections, cameras, reference, sandboxed));
@@ -89,7 +94,7 @@ internal static class GradeReport
     private static string Csv(IReadOnlyList<StudentRow> rows, string[] sections, string[] cameras, GradeReference reference)
     {
         var csv = new StringBuilder();
-        var header = new List<string> { "student", "status" };
+        var header = new List<string> { "student", "status", "grade" };
         header.AddRange(sections);
         header.AddRange(["checks passed", "checks failed", "checks timed out", "checks crashed", "checks not run"]);
         foreach (string c in cameras)
@@ -101,7 +106,7 @@ internal static class GradeReport
         csv.AppendLine(string.Join(',', header.Select(GradeCsv.Cell)));
         foreach (StudentRow row in rows)
         {
-            var cells = new List<string> { row.Name, row.Status };
+            var cells = new List<string> { row.Name, row.Status, row.Grade.ToString("0.##", Inv) };
             cells.AddRange(sections.Select(row.Section));
             cells.AddRange([.. CountedOutcomes.Select(o => row.Count(o).ToString(Inv))]);
             foreach (string c in cameras)
@@ -130,6 +135,7 @@ internal static class GradeReport
             json.WriteBoolean("sandboxed", sandboxed);
             json.WriteNumber("jobs", setup.Jobs);
             json.WriteNumber("memoryLimitMB", setup.Request.MemoryLimitMegabytes);
+            json.WriteNumber("maxGrade", GradeMarks.MaxGrade(setup, sections, cameras));
             json.WriteStartArray("sections");
             foreach (string s in sections)
             {
@@ -153,6 +159,12 @@ internal static class GradeReport
                 json.WriteStartObject();
                 json.WriteString("name", row.Name);
                 json.WriteString("status", row.Status);
+                json.WriteNumber("grade", row.Grade);
+                if (row.ParticipantId is not null)
+                {
+                    json.WriteString("moodleParticipant", row.ParticipantId);
+                }
+
                 json.WriteStartArray("problems");
                 foreach (string p in row.Problems.Distinct())
                 {
@@ -289,7 +301,7 @@ internal static class GradeReport
                 : string.Create(CultureInfo.InvariantCulture, $" Built and checked {setup.Jobs} at a time; the programs ran one at a time."))
             + string.Create(CultureInfo.InvariantCulture, $" Each process held at most {setup.Request.MemoryLimitMegabytes} MB of managed memory.")
             + " The last column is each submission's own seconds.</p>");
-        html.AppendLine("<table><tr><th>student</th><th>status</th>");
+        html.AppendLine(CultureInfo.InvariantCulture, $"<table><tr><th>student</th><th>status</th><th>grade<br>(of {GradeMarks.MaxGrade(setup, sections, cameras).ToString("0.##", Inv)})</th>");
         foreach (string s in sections)
         {
             html.Append(CultureInfo.InvariantCulture, $"<th>{E(s)}</th>");
@@ -303,7 +315,7 @@ internal static class GradeReport
         html.AppendLine("<th>program s<br>(grader's clock)</th><th>s</th></tr>");
         foreach (StudentRow row in rows)
         {
-            html.Append(CultureInfo.InvariantCulture, $"<tr><td class=\"l\"><a href=\"#{E(row.Folder)}\">{E(row.Name)}</a></td><td class=\"l\">{E(row.Status)}</td>");
+            html.Append(CultureInfo.InvariantCulture, $"<tr><td class=\"l\"><a href=\"#{E(row.Folder)}\">{E(row.Name)}</a></td><td class=\"l\">{E(row.Status)}</td><td>{row.Grade.ToString("0.##", Inv)}</td>");
             foreach (string s in sections)
             {
                 string r = row.Section(s);
@@ -384,7 +396,7 @@ internal static class GradeReport
         : string.Create(Inv, $"{detail[..DetailLimit]}… ({detail.Length - DetailLimit:N0} characters more in the log)");
 
     /// <summary>Section numbers in numeric order (2.1, 2.2, 3, 3.1, …, 4.1.4, 5), then own, then class names.</summary>
-    private sealed class SectionOrder : IComparer<string>
+    internal sealed class SectionOrder : IComparer<string>
     {
         public static readonly SectionOrder Instance = new();
 

@@ -5,17 +5,19 @@ using RayLab.Scenes;
 namespace RayLab.Cli;
 
 /// <summary>
-/// <c>raylab grade</c>'s checked input: the submissions (one folder each, by name), the pinned checks' lab and its
-/// grading.json (which pictures to score, which method's rays and time to show), the feed, the report folder.
+/// <c>raylab grade</c>'s checked input: the submissions (one folder each, by name, or a Moodle download's folder or
+/// zip, by full name), the pinned checks' lab and its grading.json (which pictures to score, which method's rays and
+/// time to show, the points), the feed, the report folder, Moodle's grading worksheet.
 /// Every problem is a <see cref="UsageException"/> naming the option and what is wrong, before anything runs.
 /// </summary>
 internal sealed class GradeSetup
 {
-    private GradeSetup(GradeRequest request, string submissions, string[] students, string checks, string feed, string output)
+    private GradeSetup(GradeRequest request, string submissions, ClassSubmission[] submitted, string checks, string feed, string output)
     {
         Request = request;
         Submissions = submissions;
-        Students = students;
+        Submitted = submitted;
+        Students = [.. submitted.Select(s => s.Folder)];
         Checks = checks;
         Feed = feed;
         Output = output;
@@ -27,6 +29,15 @@ internal sealed class GradeSetup
 
     /// <summary>Each submission's folder, in ordinal order of the names.</summary>
     public string[] Students { get; }
+
+    /// <summary>Each submission's row name, folder and Moodle participant id, in the order of <see cref="Students"/>.</summary>
+    public ClassSubmission[] Submitted { get; }
+
+    /// <summary>How the grade is counted (grading.json's points and picture thresholds).</summary>
+    public GradingScheme Scheme { get; private set; } = GradingScheme.Default;
+
+    /// <summary>Moodle's grading worksheet to fill (<c>--moodle-worksheet</c>), or null.</summary>
+    public MoodleWorksheet? Worksheet { get; private set; }
 
     /// <summary>How many submissions are built and checked at once: <c>--jobs</c>, at most one per submission.</summary>
     public int Jobs => Math.Min(Request.Jobs, Students.Length);
@@ -65,7 +76,8 @@ internal sealed class GradeSetup
     /// <summary>The lab's scene (the checks' scenes/two-spheres.json).</summary>
     public SceneDescription Scene { get; private set; } = null!;
 
-    public static GradeSetup Check(GradeRequest request)
+    /// <summary>Checks the request; a Moodle download's zip is unpacked into <paramref name="work"/>.</summary>
+    public static GradeSetup Check(GradeRequest request, string work)
     {
         foreach ((string option, TimeSpan value) in new[] { ("--check-timeout", request.CheckTimeout), ("--run-timeout", request.RunTimeout), ("--submission-timeout", request.SubmissionTimeout) })
         {
@@ -101,7 +113,7 @@ internal sealed class GradeSetup
             }
         }
 
-        string submissions = Folder(request.Submissions, "submissions");
+        string submissions = SubmissionsFolder(request.Submissions, work);
         string checks = Folder(request.Checks, "--checks");
         string feed = request.Feed is null
             ? Path.GetFullPath(Path.Combine(checks, "..", "..", "feed"))
@@ -124,9 +136,9 @@ internal sealed class GradeSetup
             throw new UsageException($"--out: '{request.Output}' is a file; the report is a folder");
         }
 
-        if (IsInside(output, submissions) || IsInside(output, checks))
+        if ((Directory.Exists(request.Submissions) && IsInside(output, submissions)) || IsInside(output, checks))
         {
-            throw new UsageException($"--out: '{request.Output}' is inside the {(IsInside(output, submissions) ? "submissions" : "checks")} folder; write the report elsewhere");
+            throw new UsageException($"--out: '{request.Output}' is inside the {(IsInside(output, checks) ? "checks" : "submissions")} folder; write the report elsewhere");
         }
 
         OutputFolders.Probe("--out", request.Output); // now, not after every lab is graded
@@ -147,16 +159,17 @@ internal sealed class GradeSetup
             }
         }
 
-        string[] students = [.. Directory.EnumerateDirectories(submissions)
-            .Where(d => !Path.GetFileName(d).StartsWith('.'))
-            .Order(StringComparer.Ordinal)];
+        ClassSubmission[] students = [.. ClassSubmissions.Read(submissions)];
         if (students.Length == 0)
         {
-            throw new UsageException($"submissions: {request.Submissions} has no folders; it holds one folder per student, each a lab");
+            throw new UsageException(Directory.EnumerateFiles(submissions).Any(f => f.Contains("_assignsubmission_", StringComparison.Ordinal))
+                ? $"submissions: {request.Submissions} holds Moodle's files without their folders; download them again with \"Download submissions in folders\""
+                : $"submissions: {request.Submissions} has no folders; it holds one folder per student, each a lab or the zip of one");
         }
 
         var setup = new GradeSetup(request, submissions, students, checks, feed, output);
         setup.ReadGrading();
+        setup.Worksheet = ReadWorksheet(request.MoodleWorksheet);
         setup.Scene = SceneFile.Load(Path.Combine(checks, "scenes", "two-spheres.json"));
         string? project = Directory.EnumerateFiles(Path.Combine(checks, "src", "Lab"), "*.csproj").FirstOrDefault();
         if (project is not null && System.Text.RegularExpressions.Regex.Match(File.ReadAllText(project), @"<RootNamespace>\s*([^<]+?)\s*</RootNamespace>") is { Success: true } m)
@@ -180,7 +193,10 @@ internal sealed class GradeSetup
         return setup;
     }
 
-    /// <summary>grading.json (written by tools/class-kit.sh): kind, raylabVersion, pictures (camera → path), timedMethod; each optional.</summary>
+    /// <summary>
+    /// grading.json (written by tools/class-kit.sh): kind, raylabVersion, pictures (camera → path), timedMethod, points
+    /// (section → points), picturePoints, pictureThresholds (rmse, flip); each optional.
+    /// </summary>
     private void ReadGrading()
     {
         string path = Path.Combine(Checks, "grading.json");
@@ -226,10 +242,62 @@ internal sealed class GradeSetup
                     Pictures[picture.Name] = file;
                 }
             }
+
+            Scheme = GradingScheme.Read(root, path);
+        }
+        catch (GradingFileException e)
+        {
+            throw new UsageException($"--checks: {e.Message}");
         }
         catch (Exception e) when (e is JsonException or InvalidOperationException)
         {
             throw new UsageException($"--checks: {path}: {e.Message}");
+        }
+    }
+
+    /// <summary>The submissions' folder: the folder given, or a Moodle download's zip unpacked safely into the grader's work.</summary>
+    private static string SubmissionsFolder(string path, string work)
+    {
+        if (!File.Exists(path) || !path.EndsWith(".zip", StringComparison.OrdinalIgnoreCase))
+        {
+            return Folder(path, "submissions");
+        }
+
+        string download = Path.Combine(work, "download");
+        try
+        {
+            SafeZip.Extract(path, download, DownloadLimits);
+        }
+        catch (ZipRefusedException e)
+        {
+            throw new UsageException($"submissions: {path}: zip refused: {e.Message}");
+        }
+
+        return download;
+    }
+
+    /// <summary>The most a class's download may unpack to: 8 GiB, 500 000 entries (each student's zip is unpacked later, with its own limits).</summary>
+    private static readonly ZipLimits DownloadLimits = new(8L << 30, 500_000);
+
+    private static MoodleWorksheet? ReadWorksheet(string? path)
+    {
+        if (path is null)
+        {
+            return null;
+        }
+
+        if (!File.Exists(path))
+        {
+            throw new UsageException(Directory.Exists(path) ? $"--moodle-worksheet: '{path}' is a folder; give the worksheet's CSV file" : $"--moodle-worksheet: no such file '{path}'");
+        }
+
+        try
+        {
+            return MoodleWorksheet.Read(path);
+        }
+        catch (MoodleWorksheetException e)
+        {
+            throw new UsageException($"--moodle-worksheet: {e.Message}");
         }
     }
 

@@ -211,6 +211,49 @@ public sealed class GradeCliTests : IDisposable
     }
 
     [Fact]
+    public void ABadPointsValueInGradingJsonNamesTheFileAndTheField()
+    {
+        string checks = Checks();
+        File.WriteAllText(_dir.File("kit/feed/x.1.0.0.nupkg"), "");
+        Directory.CreateDirectory(_dir.File("subs/anna"));
+        File.WriteAllText(Path.Combine(checks, "grading.json"), "{ \"kind\": \"method\", \"points\": { \"3.1\": -1 } }");
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", _dir.File("report"));
+        Assert.Equal(1, code);
+        Assert.Equal($"raylab: error: --checks: {Path.Combine(checks, "grading.json")}: points.3.1: expected points ≥ 0, got -1", stderr.TrimEnd());
+    }
+
+    [Fact]
+    public void AWorksheetThatIsNotMoodlesSaysWhichColumnIsMissing()
+    {
+        string checks = Checks();
+        File.WriteAllText(_dir.File("kit/feed/x.1.0.0.nupkg"), "");
+        Directory.CreateDirectory(_dir.File("subs/anna"));
+        File.WriteAllText(_dir.File("sheet.csv"), "Identifier,Full name,Feedback comments\nParticipant 1,Anna,\n");
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", _dir.File("subs"), "--checks", checks, "--out", _dir.File("report"), "--moodle-worksheet", _dir.File("sheet.csv"));
+        Assert.Equal(1, code);
+        Assert.Equal($"raylab: error: --moodle-worksheet: {_dir.File("sheet.csv")}: no column 'Grade' in the header (Identifier, Full name, Feedback comments); give the assignment's grading worksheet as Moodle writes it", stderr.TrimEnd());
+        Assert.False(Directory.Exists(_dir.File("report")));
+    }
+
+    [Fact]
+    public void AMoodleDownloadZipThatClimbsOutIsRefusedWhole()
+    {
+        string checks = Checks();
+        File.WriteAllText(_dir.File("kit/feed/x.1.0.0.nupkg"), "");
+        string zip = _dir.File("download.zip");
+        using (var archive = System.IO.Compression.ZipFile.Open(zip, System.IO.Compression.ZipArchiveMode.Create))
+        {
+            archive.CreateEntry("Anna Nowak_1_assignsubmission_file_/lab.zip");
+            archive.CreateEntry("../evil.txt");
+        }
+
+        (int code, _, string stderr) = ConsoleRunner.Run("grade", zip, "--checks", checks, "--out", _dir.File("report"));
+        Assert.Equal(1, code);
+        Assert.Equal($"raylab: error: submissions: {zip}: zip refused: entry ../evil.txt climbs out of the folder", stderr.TrimEnd());
+        Assert.False(File.Exists(_dir.File("evil.txt")));
+    }
+
+    [Fact]
     public void NamesThatMakeTheSameFolderGetFoldersOfTheirOwn()
     {
         // Polish letters, spaces and case all fold: each student still gets a folder (work copy, pictures, log) of their own.
