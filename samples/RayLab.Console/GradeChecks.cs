@@ -45,7 +45,7 @@ internal static class GradeChecks
     public static void Prepare(string checks, string nugetConfig, string assembly, string? labNamespace, string folder)
     {
         string tests = Path.Combine(folder, "tests", "Lab.Tests");
-        CopyFolder(Path.Combine(checks, "tests", "Lab.Tests"), tests);
+        GradeJob.CopyLab(Path.Combine(checks, "tests", "Lab.Tests"), tests);
         File.Copy(Path.Combine(checks, "Directory.Build.props"), Path.Combine(folder, "Directory.Build.props"));
         File.WriteAllText(Path.Combine(folder, "nuget.config"), nugetConfig);
         if (labNamespace is not null)
@@ -94,26 +94,5 @@ internal static class GradeChecks
                 new XAttribute("Link", "scenes/%(Filename)%(Extension)"),
                 new XAttribute("CopyToOutputDirectory", "PreserveNewest"))));
         test.Save(project);
-    }
-
-    private static void CopyFolder(string from, string to)
-    {
-        Directory.CreateDirectory(to);
-        foreach (FileSystemInfo entry in new DirectoryInfo(from).EnumerateFileSystemInfos())
-        {
-            if (entry.LinkTarget is not null || entry.Name is "bin" or "obj")
-            {
-                continue;
-            }
-
-            if (entry is DirectoryInfo)
-            {
-                CopyFolder(entry.FullName, Path.Combine(to, entry.Name));
-            }
-            else
-            {
-                File.Copy(entry.FullName, Path.Combine(to, entry.Name));
-            }
-        }
     }
 }

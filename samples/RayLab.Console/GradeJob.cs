@@ -627,7 +627,7 @@ public static partial class GradeJob
     }
 
     /// <summary>Copies a lab without build output, version control or links (a link could point anywhere).</summary>
-    private static void CopyLab(string from, string to)
+    internal static void CopyLab(string from, string to)
     {
         Directory.CreateDirectory(to);
         foreach (FileSystemInfo entry in new DirectoryInfo(from).EnumerateFileSystemInfos())
