@@ -59,6 +59,7 @@ public sealed class AssemblyUses
         return Read(pe);
     }
 
+    // Long: one pass over the metadata in its own order (the assembly's attributes, then each type's base, interfaces, attributes, fields and methods), each a few lines beside the next.
     private static AssemblyUses Read(PEReader pe)
     {
         MetadataReader md = pe.GetMetadataReader();
@@ -181,6 +182,7 @@ public sealed class AssemblyUses
         return found;
     }
 
+    // Long: one IL decoder: a switch over the operand kinds, every opcode's operand skipped or read in one place.
     private static void ReadBody(MetadataReader md, byte[] il, string owner, string method, Action<ForeignUse> add, Dictionary<string, HashSet<string>> callers)
     {
         int i = 0;

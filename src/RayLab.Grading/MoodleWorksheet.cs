@@ -104,6 +104,7 @@ public sealed partial class MoodleWorksheet
     /// <param name="file">The file's name, for the errors.</param>
     /// <returns>The worksheet.</returns>
     /// <exception cref="MoodleWorksheetException">Not UTF-8, a quote left open, or a header without Identifier, Grade or Feedback comments.</exception>
+    // Long: one RFC 4180 reader that keeps each row's exact bytes (quotes, line ends, BOM) beside its cells, so unchanged rows are written back as read.
     public static MoodleWorksheet Parse(byte[] bytes, string file)
     {
         ArgumentNullException.ThrowIfNull(bytes);

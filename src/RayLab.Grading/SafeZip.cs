@@ -86,6 +86,7 @@ public static class SafeZip
     /// <param name="limits">The most entries and bytes.</param>
     /// <exception cref="ZipRefusedException">The zip is refused, or cannot be read as a zip; the folder is not left behind.</exception>
     /// <exception cref="ArgumentException">An empty path, or a folder that already exists.</exception>
+    // Long: one loop that checks each entry (path, link, count, bytes actually written) and writes it, with the cleanup of a refused zip around it.
     public static void Extract(string zip, string folder, ZipLimits limits)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(zip);
