@@ -25,11 +25,10 @@ public sealed class AssemblyUses
 
     private readonly Dictionary<string, HashSet<string>> _callers;
 
-    private AssemblyUses(string name, IReadOnlyList<ForeignUse> uses, IReadOnlyList<string> types, Dictionary<string, HashSet<string>> callers)
+    private AssemblyUses(string name, IReadOnlyList<ForeignUse> uses, Dictionary<string, HashSet<string>> callers)
     {
         Name = name;
         Uses = uses;
-        Types = types;
         _callers = callers;
     }
 
@@ -38,9 +37,6 @@ public sealed class AssemblyUses
 
     /// <summary>Every use of another assembly's member, once per (lab method, member), in metadata order.</summary>
     public IReadOnlyList<ForeignUse> Uses { get; }
-
-    /// <summary>The assembly's own top-level types, by name without namespace.</summary>
-    public IReadOnlyList<string> Types { get; }
 
     /// <summary>Reads the assembly at <paramref name="path"/>.</summary>
     /// <param name="path">A .NET assembly (a .dll built from the lab).</param>
@@ -139,14 +135,8 @@ public sealed class AssemblyUses
             }
         }
 
-        string[] types = [.. md.TypeDefinitions
-            .Select(md.GetTypeDefinition)
-            .Where(t => t.GetDeclaringType().IsNil)
-            .Select(t => md.GetString(t.Name))
-            .Where(n => n != "<Module>" && !n.StartsWith('<'))
-            .Distinct(StringComparer.Ordinal)];
         string assembly = md.IsAssembly ? md.GetString(md.GetAssemblyDefinition().Name) : "?";
-        return new AssemblyUses(assembly, uses, types, callers);
+        return new AssemblyUses(assembly, uses, callers);
     }
 
     /// <summary>
