@@ -356,9 +356,10 @@ public sealed partial class GradeSandbox : IDisposable
         else
         {
             List<string> a = [.. Outside(), _bwrap, .. View(lab)];
-            foreach (string folder in readOnly ?? [])
+            foreach (string folder in (readOnly ?? []).Select(Path.GetFullPath))
             {
-                a.AddRange(["--ro-bind", Path.GetFullPath(folder), Path.GetFullPath(folder)]);
+                Reachable(folder);
+                a.AddRange(["--ro-bind", folder, folder]);
             }
 
             a.AddRange(["--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent", "--new-session", "--clearenv"]);
@@ -716,6 +717,29 @@ public sealed partial class GradeSandbox : IDisposable
                 {
                     up.UnixFileMode |= UnixFileMode.OtherExecute | (up.FullName == info.FullName ? UnixFileMode.OtherRead : 0);
                 }
+            }
+        }
+    }
+
+    /// <summary>
+    /// Makes a folder the sandbox is shown read-only reachable by the sandbox's uid where it lies in the temporary
+    /// folder; elsewhere a folder above it closed to other users is an error that names it, not bwrap's "Can't find
+    /// source path".
+    /// </summary>
+    private void Reachable(string folder)
+    {
+        if (_setpriv is null || !OperatingSystem.IsLinux())
+        {
+            return;
+        }
+
+        OpenToSandbox(folder, ancestorsOnly: true);
+        for (var up = new DirectoryInfo(folder); up is not null; up = up.Parent)
+        {
+            if (up.Exists && up.LinkTarget is null && (up.UnixFileMode & UnixFileMode.OtherExecute) == 0)
+            {
+                throw new IOException(string.Create(CultureInfo.InvariantCulture,
+                    $"the sandbox's uid {SandboxUid} cannot reach {folder}: {up.FullName} is closed to other users; open it (chmod o+x) or keep the folder elsewhere"));
             }
         }
     }
