@@ -196,11 +196,17 @@ public sealed class GradeCliTests : IDisposable
         }
 
         using GradeSandbox owned = sandbox;
-        // raylab's assemblies in a folder of the test's own: the checkout may lie in a folder the sandbox's uid cannot pass.
+        // raylab's assemblies and scenes in a folder of the test's own: the checkout may lie in a folder the sandbox's uid cannot pass.
         string bin = Directory.CreateDirectory(_dir.File("raylab")).FullName;
         foreach (string file in Directory.EnumerateFiles(AppContext.BaseDirectory).Where(f => f.EndsWith(".dll", StringComparison.Ordinal) || Path.GetFileName(f).StartsWith("raylab.", StringComparison.Ordinal)))
         {
             File.Copy(file, Path.Combine(bin, Path.GetFileName(file)));
+        }
+
+        Directory.CreateDirectory(Path.Combine(bin, "scenes"));
+        foreach (string file in Directory.EnumerateFiles(Path.Combine(AppContext.BaseDirectory, "scenes")))
+        {
+            File.Copy(file, Path.Combine(bin, "scenes", Path.GetFileName(file)));
         }
 
         string raylab = Path.Combine(bin, "raylab.dll");
