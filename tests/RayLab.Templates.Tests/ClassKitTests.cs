@@ -335,6 +335,13 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
             </Project>
             """);
 
+        // The skeleton, nothing written, whose intensity writes, while the checks run, a TRX with one passing check per
+        // section where the grader reads the run's results, and makes it read-only so that the test platform cannot
+        // write its own.
+        string forger = await kit.NewLabAsync(submissions, "forger", restore: false, "exercise");
+        Edit(forger, "src/Lab/LightIntensity.cs", "public readonly struct LightIntensity\n{", "public readonly struct LightIntensity\n{\n    static LightIntensity() => Forger.Forge();\n");
+        File.WriteAllText(Path.Combine(forger, "src", "Lab", "Forger.cs"), ForgerSource);
+
         using JsonDocument grades = Grade(submissions, "exercise", Path.Combine(kit.Root, "exercise-report"), checkTimeout: 60, runTimeout: 60, jobs: 2);
         Dictionary<string, JsonElement> rows = Rows(grades);
         string[] sections = [.. grades.RootElement.GetProperty("sections").EnumerateArray().Select(s => s.GetString()!)];
@@ -375,7 +382,67 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
         // The project that edits the checks: the checks it runs are the instructor's, built where it cannot write, so
         // the skeleton's sections all fail as they are.
         Assert.All(sections, s => Assert.Equal("fail", Section(rows["editor"], s)));
+
+        // The lab that forges the results: where the checks run its code sees them read-only, so its sections all fail
+        // as the skeleton's do, and no check the forgery names is in its row.
+        Assert.All(sections, s => Assert.Equal("fail", Section(rows["forger"], s)));
+        Assert.DoesNotContain(rows["forger"].GetProperty("checks").EnumerateArray(), c => c.GetProperty("name").GetString()!.EndsWith(" forged", StringComparison.Ordinal));
     }
+
+    /// <summary>
+    /// A helper of the forging lab: finds the folder of every run's results, from the test platform's command lines
+    /// and from the grader's temporary folders, and writes a TRX there with one passing check per section.
+    /// </summary>
+    private const string ForgerSource = """
+        namespace forger;
+
+        internal static class Forger
+        {
+            public static void Forge()
+            {
+                string trx = "<?xml version=\"1.0\" encoding=\"utf-8\"?><TestRun xmlns=\"http://microsoft.com/schemas/VisualStudio/TeamTest/2010\"><Results>"
+                    + string.Concat(((string[])["2.1", "2.2", "3", "3.1", "3.2", "4.1.1", "4.1.2", "4.1.3", "4.1.4", "5"]).Select(s => $"<UnitTestResult testName=\"{s} forged\" outcome=\"Passed\" />"))
+                    + "</Results></TestRun>";
+                var folders = new List<string>();
+                foreach (string process in Directory.GetDirectories("/proc"))
+                {
+                    string[] args;
+                    try
+                    {
+                        args = File.ReadAllText(Path.Combine(process, "cmdline")).Split('\0');
+                    }
+                    catch (Exception)
+                    {
+                        continue;
+                    }
+
+                    int at = Array.IndexOf(args, "--results-directory");
+                    if (at >= 0 && at + 1 < args.Length)
+                    {
+                        folders.Add(args[at + 1]);
+                    }
+                }
+
+                foreach (string work in Directory.GetDirectories(Path.GetTempPath(), "raylab-grade-*"))
+                {
+                    string of = Path.Combine(work, "results-of");
+                    if (Directory.Exists(of))
+                    {
+                        folders.AddRange(Directory.GetDirectories(of).SelectMany(d => Enumerable.Range(1, 3).Select(n => Path.Combine(d, $"results-{n}"))));
+                    }
+                }
+
+                foreach (string folder in folders.Distinct())
+                {
+                    Directory.CreateDirectory(folder);
+                    string file = Path.Combine(folder, "checks.trx");
+                    File.WriteAllText(file, trx);
+                    File.SetUnixFileMode(file, UnixFileMode.UserRead | UnixFileMode.GroupRead | UnixFileMode.OtherRead);
+                    File.SetUnixFileMode(folder, UnixFileMode.UserRead | UnixFileMode.UserExecute | UnixFileMode.GroupRead | UnixFileMode.GroupExecute | UnixFileMode.OtherRead | UnixFileMode.OtherExecute);
+                }
+            }
+        }
+        """;
 
     [Fact]
     public async Task CtrlCWhileTwoLabsAreGradedSideBySideStopsBothSandboxesAndWritesNoReport()
