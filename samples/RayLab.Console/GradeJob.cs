@@ -319,6 +319,8 @@ public static partial class GradeJob
 
     private static void RunChecks(GradeSetup setup, GradeSandbox sandbox, CheckFolders folders, string log, StudentRow row, Func<TimeSpan> left, CancellationToken cancellation)
     {
+        // The test host, where the lab's code runs, in a sandbox of its own: the checks and the results read-only to it.
+        folders.Launcher = sandbox.TestHostLauncher(Path.Combine(folders.Checks, ".testhost"), [folders.Checks, folders.Results]);
         var excluded = new List<string>();
         RunCheckRuns(setup, sandbox, folders, log, row, left, excluded, cancellation);
         if (excluded.Count > 0)
@@ -384,8 +386,8 @@ public static partial class GradeJob
         }
 
         ChildRun list = sandbox.Run(folders.Results, log, Min(left(), TimeSpan.FromMinutes(1)), "dotnet",
-            ["test", folders.Project, "--no-build", "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}"))], cancellation,
-            readOnly: [folders.Checks]);
+            ["test", folders.Project, "--no-build", "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}")), .. folders.HostSettings], cancellation,
+            readOnly: [folders.Checks], nested: folders.Launcher is not null);
         cancellation.ThrowIfCancellationRequested();
         if (list.TimedOut || list.ExitCode != 0)
         {
@@ -441,7 +443,8 @@ public static partial class GradeJob
                 args.AddRange(["--filter", string.Join('&', excluded.Select(n => $"FullyQualifiedName!={n}"))]);
             }
 
-            ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation, readOnly: [folders.Checks]);
+            args.AddRange(folders.HostSettings);
+            ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation, readOnly: [folders.Checks], nested: folders.Launcher is not null);
             cancellation.ThrowIfCancellationRequested();
             if (test.Limit is not SandboxLimit.None and not SandboxLimit.Memory)
             {
@@ -913,4 +916,10 @@ internal sealed record CheckFolders(string Checks, string Results)
 {
     /// <summary>The checks' test project.</summary>
     public string Project => System.IO.Path.Combine(Checks, "tests", "Lab.Tests");
+
+    /// <summary>The launcher of the test host in a sandbox of its own (<see cref="GradeSandbox.TestHostLauncher"/>), or null.</summary>
+    public string? Launcher { get; set; }
+
+    /// <summary>The arguments that end a <c>dotnet test</c> command: the test platform's dotnet host, the launcher.</summary>
+    public IEnumerable<string> HostSettings => Launcher is null ? [] : ["--", $"RunConfiguration.DotNetHostPath={Launcher}"];
 }

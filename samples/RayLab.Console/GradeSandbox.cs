@@ -279,8 +279,9 @@ public sealed partial class GradeSandbox : IDisposable
     /// <param name="args">Its arguments.</param>
     /// <param name="cancellation">Stops the child as the limit would.</param>
     /// <param name="readOnly">Folders besides the view the command reads, shown read-only at their own paths (the grader's own programs, say); none by default.</param>
+    /// <param name="nested">Whether the command may make one user namespace more: a check run whose test host has a sandbox of its own (<see cref="TestHostLauncher"/>).</param>
     /// <returns>How it ended.</returns>
-    public ChildRun Run(string lab, string? log, TimeSpan limit, string command, IReadOnlyList<string> args, CancellationToken cancellation, IReadOnlyList<string>? readOnly = null)
+    public ChildRun Run(string lab, string? log, TimeSpan limit, string command, IReadOnlyList<string> args, CancellationToken cancellation, IReadOnlyList<string>? readOnly = null, bool nested = false)
     {
         ArgumentException.ThrowIfNullOrEmpty(lab);
         ArgumentException.ThrowIfNullOrEmpty(command);
@@ -362,7 +363,10 @@ public sealed partial class GradeSandbox : IDisposable
                 a.AddRange(["--ro-bind", folder, folder]);
             }
 
-            a.AddRange(["--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent", "--new-session", "--clearenv"]);
+            // A step whose test host has a sandbox of its own (TestHostLauncher) may make that one user namespace; the
+            // inner sandbox forbids any more.
+            a.AddRange(nested ? ["--unshare-all", "--unshare-user"] : ["--unshare-all", "--unshare-user", "--disable-userns"]);
+            a.AddRange(["--die-with-parent", "--new-session", "--clearenv"]);
             a.AddRange(["--setenv", "PATH", $"{_dotnetRoot}:/usr/local/bin:/usr/bin:/bin", "--setenv", "DOTNET_ROOT", _dotnetRoot]);
             if (Environment.GetEnvironmentVariable("LANG") is { Length: > 0 } language)
             {
@@ -427,6 +431,52 @@ public sealed partial class GradeSandbox : IDisposable
 
         return run;
     }
+
+    /// <summary>
+    /// Writes the launcher of a check run's test host, the process where the lab's code runs, into
+    /// <paramref name="folder"/>: a script, given to the test platform as its dotnet host, that starts the test host in a
+    /// sandbox of its own inside the step's (<see cref="Run"/> with <c>nested</c>). There the folders in
+    /// <paramref name="readOnly"/> and the packages are read-only, /tmp and the home are its own, the processes and threads
+    /// already running (the test platform's) are hidden from /proc, and no user namespace can be made. The test platform,
+    /// outside it, writes the results where the lab's code cannot.
+    /// </summary>
+    /// <param name="folder">A folder the step sees and the lab's code never writes (the checks').</param>
+    /// <param name="readOnly">The folders the test host sees read-only: the checks and the run's results.</param>
+    /// <returns>The launcher's path, or null where the commands run without a sandbox.</returns>
+    public string? TestHostLauncher(string folder, IReadOnlyList<string> readOnly)
+    {
+        ArgumentException.ThrowIfNullOrEmpty(folder);
+        ArgumentNullException.ThrowIfNull(readOnly);
+        if (_bwrap is null || !OperatingSystem.IsLinux())
+        {
+            return null;
+        }
+
+        var binds = new StringBuilder();
+        foreach (string path in readOnly.Append(_packages).Select(Path.GetFullPath).Distinct())
+        {
+            binds.Append(CultureInfo.InvariantCulture, $" --ro-bind {Quoted(path)} {Quoted(path)}");
+        }
+
+        string script = $$"""
+            #!/bin/sh
+            # The test host, where the lab's code runs, in a sandbox of its own (raylab grade writes this file).
+            hide=""
+            for task in /proc/[0-9]*/task/[0-9]*; do
+              hide="$hide --tmpfs /proc/${task##*/}"
+            done
+            # Not exec: the sandbox dies with this shell, which the test platform stops when a check hangs.
+            # shellcheck disable=SC2086
+            {{Quoted(_bwrap)}} --bind / / --tmpfs /tmp{{binds}} $hide --unshare-user --disable-userns --die-with-parent               --setenv HOME /tmp --setenv DOTNET_CLI_HOME /tmp --setenv TMPDIR /tmp -- {{Quoted(Path.Combine(_dotnetRoot, "dotnet"))}} "$@"
+            """;
+        string launcher = Path.Combine(Directory.CreateDirectory(folder).FullName, "testhost.sh");
+        File.WriteAllText(launcher, script.ReplaceLineEndings("\n") + "\n");
+        File.SetUnixFileMode(launcher, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute
+            | UnixFileMode.GroupRead | UnixFileMode.GroupExecute | UnixFileMode.OtherRead | UnixFileMode.OtherExecute);
+        return launcher;
+    }
+
+    private static string Quoted(string text) => "'" + text.Replace("'", "'\\''", StringComparison.Ordinal) + "'";
 
     /// <summary>Unmounts the copies' file systems and removes the sandbox's own /etc files.</summary>
     public void Dispose()
@@ -734,13 +784,20 @@ public sealed partial class GradeSandbox : IDisposable
         }
 
         OpenToSandbox(folder, ancestorsOnly: true);
-        for (var up = new DirectoryInfo(folder); up is not null; up = up.Parent)
+        ChildRun probe = Plain(_setpriv, [string.Create(CultureInfo.InvariantCulture, $"--reuid={SandboxUid}"), string.Create(CultureInfo.InvariantCulture, $"--regid={SandboxUid}"), "--clear-groups", "--", "test", "-x", folder]);
+        if (probe.ExitCode != 0)
         {
-            if (up.Exists && up.LinkTarget is null && (up.UnixFileMode & UnixFileMode.OtherExecute) == 0)
+            string closed = folder;
+            for (var up = new DirectoryInfo(folder); up is not null; up = up.Parent)
             {
-                throw new IOException(string.Create(CultureInfo.InvariantCulture,
-                    $"the sandbox's uid {SandboxUid} cannot reach {folder}: {up.FullName} is closed to other users; open it (chmod o+x) or keep the folder elsewhere"));
+                if (up.Exists && (up.UnixFileMode & UnixFileMode.OtherExecute) == 0)
+                {
+                    closed = up.FullName;
+                }
             }
+
+            throw new IOException(string.Create(CultureInfo.InvariantCulture,
+                $"the sandbox's uid {SandboxUid} cannot reach {folder}: {closed} is closed to other users; open it (chmod o+x) or keep the folder elsewhere"));
         }
     }
 
