@@ -745,6 +745,25 @@ public static partial class GradeJob
     }
 
     /// <summary>
+    /// A section's result from its checks' outcomes: pass only where every check passed; a skipped check (a section
+    /// still to write) is never earned, whatever skipped it.
+    /// </summary>
+    /// <param name="outcomes">Its checks' outcomes: Passed, Failed, Skipped, Timeout, Crashed, NotRun.</param>
+    /// <param name="refused">Whether the section uses what the lab may not.</param>
+    /// <returns>pass, fail, timeout, crashed, not run, not written, or "" when none of its checks ran.</returns>
+    public static string SectionResult(IEnumerable<string> outcomes, bool refused)
+    {
+        string[] all = [.. outcomes];
+        return refused ? "fail"
+            : all.Length == 0 ? ""
+            : all.Contains("Timeout") ? "timeout"
+            : all.Contains("Crashed") ? "crashed"
+            : all.Contains("NotRun") ? "not run"
+            : all.All(o => o is "Passed") ? "pass"
+            : all.All(o => o is "Passed" or "Skipped") ? "not written" : "fail";
+    }
+
+    /// <summary>
     /// A check's lab section: the display name's first word where it is a section number or <c>own</c>
     /// ("3.2 Kamera perspektywiczna: …" → 3.2), else its class ("MyLab.Tests.CameraTests.Frame" → CameraTests).
     /// </summary>
@@ -887,17 +906,9 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>How many checks ended with <paramref name="outcome"/>.</summary>
     public int Count(string outcome) => Checks.Values.Count(v => v == outcome);
 
-    /// <summary>A section's result (fail where the lab uses what it may not, <see cref="Refused"/>): pass, fail, timeout, crashed, not run, or "" when none of its checks ran.</summary>
-    public string Section(string section)
-    {
-        string[] outcomes = [.. Checks.Where(c => GradeJob.SectionOf(c.Key) == section).Select(c => c.Value)];
-        return Refused.ContainsKey(section) ? "fail"
-            : outcomes.Length == 0 ? ""
-            : outcomes.Contains("Timeout") ? "timeout"
-            : outcomes.Contains("Crashed") ? "crashed"
-            : outcomes.Contains("NotRun") ? "not run"
-            : outcomes.All(o => o is "Passed" or "Skipped") ? "pass" : "fail";
-    }
+    /// <summary>A section's result (<see cref="GradeJob.SectionResult"/>); fail where the lab uses what it may not (<see cref="Refused"/>).</summary>
+    public string Section(string section) =>
+        GradeJob.SectionResult(Checks.Where(c => GradeJob.SectionOf(c.Key) == section).Select(c => c.Value), Refused.ContainsKey(section));
 }
 
 /// <summary>A picture against the exact image: RMSE in 8-bit levels and mean FLIP, or why it has none.</summary>

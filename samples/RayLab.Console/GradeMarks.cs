@@ -97,9 +97,11 @@ internal static class GradeMarks
                 continue;
             }
 
-            (string display, string outcome) = row.Checks.First(c => GradeJob.SectionOf(c.Key) == section && c.Value is not "Passed" and not "Skipped");
-            failed.Add(new FailedSection(section, row.Messages.GetValueOrDefault(display) ?? outcome switch
+            // A section refused for what it uses may have every check passed: its message is the use, in the row.
+            (string display, string outcome) = row.Checks.FirstOrDefault(c => GradeJob.SectionOf(c.Key) == section && c.Value is not "Passed");
+            failed.Add(new FailedSection(section, display is null ? null : row.Messages.GetValueOrDefault(display) ?? outcome switch
             {
+                "Skipped" => "do napisania",
                 "Timeout" => "test przekroczył limit czasu",
                 "Crashed" => "test przerwał proces testów",
                 "NotRun" => "test nie został uruchomiony",

@@ -288,7 +288,7 @@ internal static class GradeReport
         html.AppendLine("<!DOCTYPE html>");
         html.AppendLine("<html lang=\"en\"><head><meta charset=\"utf-8\"><title>RayLab grades</title><style>");
         html.AppendLine("body{font-family:sans-serif;margin:1.5em}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:.25em .5em;text-align:center}"
-            + "td.pass{background:#d8f5d0}td.fail{background:#f8d0d0}td.timeout,td.crashed,td.not-run{background:#f8e8b0}td.l{text-align:left}"
+            + "td.pass{background:#d8f5d0}td.fail{background:#f8d0d0}td.timeout,td.crashed,td.not-run{background:#f8e8b0}td.not-written{background:#e8e8e8}td.l{text-align:left}"
             + "figure{display:inline-block;margin:.3em}figure img{width:320px;image-rendering:pixelated}figcaption{font-size:.85em}");
         html.AppendLine("</style></head><body>");
         html.AppendLine($"<h1>RayLab grades: the {E(setup.Kind)} lab</h1>");

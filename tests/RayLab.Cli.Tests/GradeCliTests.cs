@@ -24,6 +24,18 @@ public sealed class GradeCliTests : IDisposable
         Assert.Equal(section, GradeJob.SectionOf(display));
 
     [Theory]
+    [InlineData("pass", false, "Passed", "Passed")]
+    [InlineData("fail", false, "Passed", "Failed")]
+    [InlineData("fail", true, "Passed", "Passed")]                 // a refused use
+    [InlineData("not written", false, "Passed", "Skipped")]        // a skip is never earned, whatever skipped it
+    [InlineData("not written", false, "Skipped")]
+    [InlineData("fail", false, "Skipped", "Failed")]
+    [InlineData("timeout", false, "Passed", "Timeout", "Failed")]
+    [InlineData("", false)]
+    public void ASectionPassesOnlyWhereEveryCheckPassed(string result, bool refused, params string[] outcomes) =>
+        Assert.Equal(result, GradeJob.SectionResult(outcomes, refused));
+
+    [Theory]
     [InlineData(true, 12, 0, false, 1, false, null, false)]                  // every check ended: ok
     [InlineData(false, 0, 0, false, 1, false, "checks did not run", true)]   // no TRX: the run's first errors say why
     [InlineData(true, 0, 0, true, 1, false, "checks did not run", false)]    // stopped before the first check ended
