@@ -60,13 +60,13 @@ public abstract class LabCamera
     public static double Beta(int y, double sy, int ny) => 1 - ((y + sy) / ny);
 #else
     /// <summary>u, v, w.</summary>
-    public (Double3 U, Double3 V, Double3 W) Frame() => throw ToWrite.Section("3", "Frame()");
+    public (Double3 U, Double3 V, Double3 W) Frame() => throw ToWrite.Section("3", "LabCamera.Frame()");
 
     /// <summary>α = (x + sx)/nx.</summary>
-    public static double Alpha(int x, double sx, int nx) => throw ToWrite.Section("3", "Alpha(x, sx, nx)");
+    public static double Alpha(int x, double sx, int nx) => throw ToWrite.Section("3", "LabCamera.Alpha(x, sx, nx)");
 
     /// <summary>β = 1 − (y + sy)/ny.</summary>
-    public static double Beta(int y, double sy, int ny) => throw ToWrite.Section("3", "Beta(y, sy, ny)");
+    public static double Beta(int y, double sy, int ny) => throw ToWrite.Section("3", "LabCamera.Beta(y, sy, ny)");
 #endif
 
     /// <summary>The window (u0, v0, u1, v1) for an image of nx × ny pixels.</summary>

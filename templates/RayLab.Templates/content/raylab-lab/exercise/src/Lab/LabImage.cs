@@ -27,7 +27,7 @@ public sealed class LabImage
         ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
         Bitmap = new Image<Rgb24>(width, height);
 #else
-        throw ToWrite.Section("2.2", "LabImage(width, height)");
+        throw ToWrite.Section("2.2", "new LabImage(width, height)");
 #endif
     }
 
@@ -58,9 +58,9 @@ public sealed class LabImage
         Bitmap[x, y] = new Rgb24(ToByte(pixel.R), ToByte(pixel.G), ToByte(pixel.B));
 #else
     /// <summary>i = int(256·I), 0 … 255.</summary>
-    public static byte ToByte(double intensity) => throw ToWrite.Section("2.2", "ToByte(I)");
+    public static byte ToByte(double intensity) => throw ToWrite.Section("2.2", "LabImage.ToByte(I)");
 
     /// <summary>(x, y), row 0 at the top.</summary>
-    public void SetPixel(int x, int y, LightIntensity pixel) => throw ToWrite.Section("2.2", "SetPixel(x, y, pixel)");
+    public void SetPixel(int x, int y, LightIntensity pixel) => throw ToWrite.Section("2.2", "LabImage.SetPixel(x, y, pixel)");
 #endif
 }
