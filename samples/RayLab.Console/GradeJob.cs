@@ -742,6 +742,25 @@ public static partial class GradeJob
     }
 
     /// <summary>
+    /// A section's result from its checks' outcomes: fail where the lab uses what it may not (<paramref name="refused"/>);
+    /// then timeout, crashed or not run where a check did; pass where every check passed; not written where the others
+    /// passed and at least one was skipped (the exercise lab's checks skip a section still throwing
+    /// NotImplementedException), which earns nothing, as a fail does; otherwise fail; "" when none of its checks ran.
+    /// </summary>
+    public static string SectionResult(IReadOnlyCollection<string> outcomes, bool refused)
+    {
+        ArgumentNullException.ThrowIfNull(outcomes);
+        return refused ? "fail"
+            : outcomes.Count == 0 ? ""
+            : outcomes.Contains("Timeout") ? "timeout"
+            : outcomes.Contains("Crashed") ? "crashed"
+            : outcomes.Contains("NotRun") ? "not run"
+            : outcomes.All(o => o is "Passed") ? "pass"
+            : outcomes.All(o => o is "Passed" or "Skipped") ? "not written"
+            : "fail";
+    }
+
+    /// <summary>
     /// A check's lab section: the display name's first word where it is a section number or <c>own</c>
     /// ("3.2 Kamera perspektywiczna: …" → 3.2), else its class ("MyLab.Tests.CameraTests.Frame" → CameraTests).
     /// </summary>
@@ -877,24 +896,16 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>A short status: "ok", or the problems joined.</summary>
     public string Status => Problems.Count == 0 ? "ok" : string.Join("; ", Problems.Distinct());
 
-    /// <summary>"checks N passed, N failed, N timed out", then ", N crashed" and ", N not run" where there are any, for the grader's lines.</summary>
+    /// <summary>"checks N passed, N failed, N timed out", then ", N not written", ", N crashed" and ", N not run" where there are any, for the grader's lines.</summary>
     public string CheckCounts => string.Create(CultureInfo.InvariantCulture,
-        $"checks {Count("Passed")} passed, {Count("Failed")} failed, {Count("Timeout")} timed out{(Count("Crashed") > 0 ? $", {Count("Crashed")} crashed" : "")}{(Count("NotRun") > 0 ? $", {Count("NotRun")} not run" : "")}");
+        $"checks {Count("Passed")} passed, {Count("Failed")} failed, {Count("Timeout")} timed out{(Count("Skipped") > 0 ? $", {Count("Skipped")} not written" : "")}{(Count("Crashed") > 0 ? $", {Count("Crashed")} crashed" : "")}{(Count("NotRun") > 0 ? $", {Count("NotRun")} not run" : "")}");
 
     /// <summary>How many checks ended with <paramref name="outcome"/>.</summary>
     public int Count(string outcome) => Checks.Values.Count(v => v == outcome);
 
-    /// <summary>A section's result (fail where the lab uses what it may not, <see cref="Refused"/>): pass, fail, timeout, crashed, not run, or "" when none of its checks ran.</summary>
-    public string Section(string section)
-    {
-        string[] outcomes = [.. Checks.Where(c => GradeJob.SectionOf(c.Key) == section).Select(c => c.Value)];
-        return Refused.ContainsKey(section) ? "fail"
-            : outcomes.Length == 0 ? ""
-            : outcomes.Contains("Timeout") ? "timeout"
-            : outcomes.Contains("Crashed") ? "crashed"
-            : outcomes.Contains("NotRun") ? "not run"
-            : outcomes.All(o => o is "Passed" or "Skipped") ? "pass" : "fail";
-    }
+    /// <summary>A section's result (<see cref="GradeJob.SectionResult"/>), from its checks' outcomes.</summary>
+    public string Section(string section) =>
+        GradeJob.SectionResult([.. Checks.Where(c => GradeJob.SectionOf(c.Key) == section).Select(c => c.Value)], Refused.ContainsKey(section));
 }
 
 /// <summary>A picture against the exact image: RMSE in 8-bit levels and mean FLIP, or why it has none.</summary>

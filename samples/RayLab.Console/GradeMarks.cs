@@ -97,6 +97,12 @@ internal static class GradeMarks
                 continue;
             }
 
+            if (result == "not written")
+            {
+                failed.Add(new FailedSection(section, "jeszcze do napisania"));
+                continue;
+            }
+
             (string display, string outcome) = row.Checks.First(c => GradeJob.SectionOf(c.Key) == section && c.Value is not "Passed" and not "Skipped");
             failed.Add(new FailedSection(section, row.Messages.GetValueOrDefault(display) ?? outcome switch
             {

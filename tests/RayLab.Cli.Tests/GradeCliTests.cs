@@ -24,6 +24,20 @@ public sealed class GradeCliTests : IDisposable
         Assert.Equal(section, GradeJob.SectionOf(display));
 
     [Theory]
+    [InlineData("Passed,Passed", false, "pass")]
+    [InlineData("Passed,Skipped", false, "not written")]          // a check of a section still to write is skipped
+    [InlineData("Skipped,Skipped", false, "not written")]
+    [InlineData("Passed,Skipped,Failed", false, "fail")]          // wrong beats not written
+    [InlineData("Passed,Passed", true, "fail")]                   // a use the lab does not allow
+    [InlineData("Skipped,Timeout", false, "timeout")]
+    [InlineData("", false, "")]
+    public void ASectionWithASkippedCheckIsNotWrittenAndEarnsNothing(string outcomes, bool refused, string result)
+    {
+        Assert.Equal(result, GradeJob.SectionResult(outcomes.Length == 0 ? [] : outcomes.Split(','), refused));
+        Assert.Equal(0, RayLab.Grading.GradingScheme.Default.Grade(new Dictionary<string, string> { ["2.1"] = "not written" }, []));
+    }
+
+    [Theory]
     [InlineData(true, 12, 0, false, 1, false, null, false)]                  // every check ended: ok
     [InlineData(false, 0, 0, false, 1, false, "checks did not run", true)]   // no TRX: the run's first errors say why
     [InlineData(true, 0, 0, true, 1, false, "checks did not run", false)]    // stopped before the first check ended

@@ -373,8 +373,9 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
         }
 
         // The project that edits the checks: the checks it runs are the instructor's, built where it cannot write, so
-        // the skeleton's sections all fail as they are.
-        Assert.All(sections, s => Assert.Equal("fail", Section(rows["editor"], s)));
+        // the skeleton's sections are all still to write, as they are: not written, which earns nothing.
+        Assert.All(sections, s => Assert.Equal("not written", Section(rows["editor"], s)));
+        Assert.Equal(0, rows["editor"].GetProperty("grade").GetDouble());
     }
 
     [Fact]
