@@ -54,6 +54,11 @@ public readonly struct LightIntensity
 
     public static LightIntensity operator /(LightIntensity a, double s) => new(a.R / s, a.G / s, a.B / s);
 
+#if (en)
+    /// <summary>The lab's printing (operator &lt;&lt;): any format that shows R, G and B passes, e.g. (0.25, 0.5, 0.75); the check looks for the numbers with a point or a comma.</summary>
+#else
+    /// <summary>Wypisanie z instrukcji (operator &lt;&lt;): przejdzie dowolny format, który pokazuje R, G i B, np. (0.25, 0.5, 0.75); test szuka tych liczb z kropką albo przecinkiem.</summary>
+#endif
     public override string ToString() => string.Create(CultureInfo.InvariantCulture, $"({R:G6}, {G:G6}, {B:G6})");
 #else
     public static LightIntensity operator +(LightIntensity a, LightIntensity b) => throw ToWrite.Section("2.1", "LightIntensity.operator +");
@@ -66,6 +71,11 @@ public readonly struct LightIntensity
 
     public static LightIntensity operator /(LightIntensity a, double s) => throw ToWrite.Section("2.1", "LightIntensity.operator /");
 
+#if (en)
+    /// <summary>The lab's printing (operator &lt;&lt;): any format that shows R, G and B passes, e.g. (0.25, 0.5, 0.75); the check looks for the numbers with a point or a comma.</summary>
+#else
+    /// <summary>Wypisanie z instrukcji (operator &lt;&lt;): przejdzie dowolny format, który pokazuje R, G i B, np. (0.25, 0.5, 0.75); test szuka tych liczb z kropką albo przecinkiem.</summary>
+#endif
     public override string ToString() => throw ToWrite.Section("2.1", "LightIntensity.ToString()");
 #endif
 }

@@ -1,4 +1,3 @@
-#if LAB_PROGRESS
 using static MyLab.Tests.Check;
 
 namespace MyLab.Tests;
@@ -37,4 +36,3 @@ public sealed class LabProgress(ITestOutputHelper output)
         }
     }
 }
-#endif
