@@ -745,22 +745,22 @@ public static partial class GradeJob
     }
 
     /// <summary>
-    /// A section's result from its checks' outcomes: pass only where every check passed; a skipped check (a section
-    /// still to write) is never earned, whatever skipped it.
+    /// A section's result from its checks' outcomes: fail where the lab uses what it may not (<paramref name="refused"/>);
+    /// then timeout, crashed or not run where a check did; pass where every check passed; not written where the others
+    /// passed and at least one was skipped (the exercise lab's checks skip a section still throwing
+    /// NotImplementedException), which earns nothing, as a fail does; otherwise fail; "" when none of its checks ran.
     /// </summary>
-    /// <param name="outcomes">Its checks' outcomes: Passed, Failed, Skipped, Timeout, Crashed, NotRun.</param>
-    /// <param name="refused">Whether the section uses what the lab may not.</param>
-    /// <returns>pass, fail, timeout, crashed, not run, not written, or "" when none of its checks ran.</returns>
-    public static string SectionResult(IEnumerable<string> outcomes, bool refused)
+    public static string SectionResult(IReadOnlyCollection<string> outcomes, bool refused)
     {
-        string[] all = [.. outcomes];
+        ArgumentNullException.ThrowIfNull(outcomes);
         return refused ? "fail"
-            : all.Length == 0 ? ""
-            : all.Contains("Timeout") ? "timeout"
-            : all.Contains("Crashed") ? "crashed"
-            : all.Contains("NotRun") ? "not run"
-            : all.All(o => o is "Passed") ? "pass"
-            : all.All(o => o is "Passed" or "Skipped") ? "not written" : "fail";
+            : outcomes.Count == 0 ? ""
+            : outcomes.Contains("Timeout") ? "timeout"
+            : outcomes.Contains("Crashed") ? "crashed"
+            : outcomes.Contains("NotRun") ? "not run"
+            : outcomes.All(o => o is "Passed") ? "pass"
+            : outcomes.All(o => o is "Passed" or "Skipped") ? "not written"
+            : "fail";
     }
 
     /// <summary>
@@ -899,16 +899,16 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>A short status: "ok", or the problems joined.</summary>
     public string Status => Problems.Count == 0 ? "ok" : string.Join("; ", Problems.Distinct());
 
-    /// <summary>"checks N passed, N failed, N timed out", then ", N crashed" and ", N not run" where there are any, for the grader's lines.</summary>
+    /// <summary>"checks N passed, N failed, N timed out", then ", N not written", ", N crashed" and ", N not run" where there are any, for the grader's lines.</summary>
     public string CheckCounts => string.Create(CultureInfo.InvariantCulture,
-        $"checks {Count("Passed")} passed, {Count("Failed")} failed, {Count("Timeout")} timed out{(Count("Crashed") > 0 ? $", {Count("Crashed")} crashed" : "")}{(Count("NotRun") > 0 ? $", {Count("NotRun")} not run" : "")}");
+        $"checks {Count("Passed")} passed, {Count("Failed")} failed, {Count("Timeout")} timed out{(Count("Skipped") > 0 ? $", {Count("Skipped")} not written" : "")}{(Count("Crashed") > 0 ? $", {Count("Crashed")} crashed" : "")}{(Count("NotRun") > 0 ? $", {Count("NotRun")} not run" : "")}");
 
     /// <summary>How many checks ended with <paramref name="outcome"/>.</summary>
     public int Count(string outcome) => Checks.Values.Count(v => v == outcome);
 
-    /// <summary>A section's result (<see cref="GradeJob.SectionResult"/>); fail where the lab uses what it may not (<see cref="Refused"/>).</summary>
+    /// <summary>A section's result (<see cref="GradeJob.SectionResult"/>), from its checks' outcomes.</summary>
     public string Section(string section) =>
-        GradeJob.SectionResult(Checks.Where(c => GradeJob.SectionOf(c.Key) == section).Select(c => c.Value), Refused.ContainsKey(section));
+        GradeJob.SectionResult([.. Checks.Where(c => GradeJob.SectionOf(c.Key) == section).Select(c => c.Value)], Refused.ContainsKey(section));
 }
 
 /// <summary>A picture against the exact image: RMSE in 8-bit levels and mean FLIP, or why it has none.</summary>

@@ -97,11 +97,16 @@ internal static class GradeMarks
                 continue;
             }
 
+            if (result == "not written")
+            {
+                failed.Add(new FailedSection(section, "jeszcze do napisania"));
+                continue;
+            }
+
             // A section refused for what it uses may have every check passed: its message is the use, in the row.
-            (string display, string outcome) = row.Checks.FirstOrDefault(c => GradeJob.SectionOf(c.Key) == section && c.Value is not "Passed");
+            (string display, string outcome) = row.Checks.FirstOrDefault(c => GradeJob.SectionOf(c.Key) == section && c.Value is not "Passed" and not "Skipped");
             failed.Add(new FailedSection(section, display is null ? null : row.Messages.GetValueOrDefault(display) ?? outcome switch
             {
-                "Skipped" => "do napisania",
                 "Timeout" => "test przekroczył limit czasu",
                 "Crashed" => "test przerwał proces testów",
                 "NotRun" => "test nie został uruchomiony",

@@ -75,7 +75,7 @@ internal static class GradeReport
     private static readonly CultureInfo Inv = CultureInfo.InvariantCulture;
 
     /// <summary>The outcomes the CSV counts, in the order of its columns "checks passed" … "checks not run".</summary>
-    private static readonly string[] CountedOutcomes = ["Passed", "Failed", "Timeout", "Crashed", "NotRun"];
+    private static readonly string[] CountedOutcomes = ["Passed", "Failed", "Timeout", "Crashed", "NotRun", "Skipped"];
 
     public static void Write(string staging, GradeSetup setup, GradeReference reference, IReadOnlyList<StudentRow> rows, bool sandboxed)
     {
@@ -96,7 +96,7 @@ internal static class GradeReport
         var csv = new StringBuilder();
         var header = new List<string> { "student", "status", "grade" };
         header.AddRange(sections);
-        header.AddRange(["checks passed", "checks failed", "checks timed out", "checks crashed", "checks not run"]);
+        header.AddRange(["checks passed", "checks failed", "checks timed out", "checks crashed", "checks not run", "checks not written"]);
         foreach (string c in cameras)
         {
             header.AddRange([$"{c} rmse", $"{c} flip", $"{c} rays per pixel (the program's own line)", $"{c} lab adaptive rays per pixel"]);

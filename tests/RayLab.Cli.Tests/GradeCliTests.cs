@@ -24,16 +24,18 @@ public sealed class GradeCliTests : IDisposable
         Assert.Equal(section, GradeJob.SectionOf(display));
 
     [Theory]
-    [InlineData("pass", false, "Passed", "Passed")]
-    [InlineData("fail", false, "Passed", "Failed")]
-    [InlineData("fail", true, "Passed", "Passed")]                 // a refused use
-    [InlineData("not written", false, "Passed", "Skipped")]        // a skip is never earned, whatever skipped it
-    [InlineData("not written", false, "Skipped")]
-    [InlineData("fail", false, "Skipped", "Failed")]
-    [InlineData("timeout", false, "Passed", "Timeout", "Failed")]
-    [InlineData("", false)]
-    public void ASectionPassesOnlyWhereEveryCheckPassed(string result, bool refused, params string[] outcomes) =>
-        Assert.Equal(result, GradeJob.SectionResult(outcomes, refused));
+    [InlineData("Passed,Passed", false, "pass")]
+    [InlineData("Passed,Skipped", false, "not written")]          // a check of a section still to write is skipped
+    [InlineData("Skipped,Skipped", false, "not written")]
+    [InlineData("Passed,Skipped,Failed", false, "fail")]          // wrong beats not written
+    [InlineData("Passed,Passed", true, "fail")]                   // a use the lab does not allow
+    [InlineData("Skipped,Timeout", false, "timeout")]
+    [InlineData("", false, "")]
+    public void ASectionWithASkippedCheckIsNotWrittenAndEarnsNothing(string outcomes, bool refused, string result)
+    {
+        Assert.Equal(result, GradeJob.SectionResult(outcomes.Length == 0 ? [] : outcomes.Split(','), refused));
+        Assert.Equal(0, RayLab.Grading.GradingScheme.Default.Grade(new Dictionary<string, string> { ["2.1"] = "not written" }, []));
+    }
 
     [Theory]
     [InlineData(true, 12, 0, false, 1, false, null, false)]                  // every check ended: ok

@@ -380,12 +380,15 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
         }
 
         // The project that edits the checks: the checks it runs are the instructor's, built where it cannot write, so
-        // the skeleton's sections all fail as they are.
-        Assert.All(sections, s => Assert.Equal("fail", Section(rows["editor"], s)));
+        // the skeleton's sections are all still to write, as they are: not written, which earns nothing.
+        Assert.All(sections, s => Assert.Equal("not written", Section(rows["editor"], s)));
+        Assert.Equal(0, rows["editor"].GetProperty("grade").GetDouble());
 
-        // The lab that forges the results: where the checks run its code sees them read-only, so its sections all fail
-        // as the skeleton's do, and no check the forgery names is in its row.
-        Assert.All(sections, s => Assert.Equal("fail", Section(rows["forger"], s)));
+        // The lab that forges the results: where the checks run its code sees them read-only, so no section passes
+        // (each is not written, or fails where its checks meet the intensity's failing static constructor), it earns
+        // nothing, and no check the forgery names is in its row.
+        Assert.All(sections, s => Assert.Contains(Section(rows["forger"], s), (string[])["not written", "fail"]));
+        Assert.Equal(0, rows["forger"].GetProperty("grade").GetDouble());
         Assert.DoesNotContain(rows["forger"].GetProperty("checks").EnumerateArray(), c => c.GetProperty("name").GetString()!.EndsWith(" forged", StringComparison.Ordinal));
     }
 

@@ -19,6 +19,10 @@ public interface ILabSampler
     /// <summary>n.</summary>
     int SamplesPerPixel { get; }
 
+#if (en)
     /// <summary>The n points of one pixel.</summary>
+#else
+    /// <summary>n punktów jednego piksela.</summary>
+#endif
     (double X, double Y)[] GetSamples(Random random);
 }

@@ -32,18 +32,34 @@ public sealed class LabAdaptiveSampler
         Contrast = contrast;
     }
 
+#if (en)
     /// <summary>The deepest square: 0 is the pixel, 3 squares of ⅛ pixel.</summary>
+#else
+    /// <summary>Najgłębszy kwadrat: 0 to cały piksel, 3 to kwadraty o boku ⅛ piksela.</summary>
+#endif
     public int MaxDepth { get; }
 
+#if (en)
     /// <summary>The spatial contrast: two values differ when some channel differs by more than this.</summary>
+#else
+    /// <summary>Kontrast przestrzenny: dwie wartości się różnią, gdy któraś składowa różni się o więcej niż on.</summary>
+#endif
     public double Contrast { get; }
 
 #if (solution)
+#if (en)
     /// <summary>True when some channel of a and b differs by more than the contrast.</summary>
+#else
+    /// <summary>Prawda, gdy któraś składowa a i b różni się o więcej niż kontrast.</summary>
+#endif
     public bool Differ(LightIntensity a, LightIntensity b) =>
         Math.Abs(a.R - b.R) > Contrast || Math.Abs(a.G - b.G) > Contrast || Math.Abs(a.B - b.B) > Contrast;
 
+#if (en)
     /// <summary>The pixel's value; trace(x, y) shoots the ray through (x, y) in the pixel, x right and y down, 0 … 1.</summary>
+#else
+    /// <summary>Wartość piksela; trace(x, y) wysyła promień przez punkt (x, y) piksela, x w prawo, y w dół, od 0 do 1.</summary>
+#endif
     public LightIntensity Pixel(Func<double, double, LightIntensity> trace)
     {
         var traced = new Dictionary<(double, double), LightIntensity>(); // każdy punkt tylko raz
@@ -95,10 +111,18 @@ public sealed class LabAdaptiveSampler
         return (vTl + vTr + vBl + vBr) / 4;
     }
 #else
+#if (en)
     /// <summary>True when some channel of a and b differs by more than the contrast.</summary>
+#else
+    /// <summary>Prawda, gdy któraś składowa a i b różni się o więcej niż kontrast.</summary>
+#endif
     public bool Differ(LightIntensity a, LightIntensity b) => throw ToWrite.Section("4.1.4", "LabAdaptiveSampler.Differ(a, b)");
 
+#if (en)
     /// <summary>The pixel's value; trace(x, y) shoots the ray through (x, y) in the pixel, x right and y down, 0 … 1.</summary>
+#else
+    /// <summary>Wartość piksela; trace(x, y) wysyła promień przez punkt (x, y) piksela, x w prawo, y w dół, od 0 do 1.</summary>
+#endif
     public LightIntensity Pixel(Func<double, double, LightIntensity> trace) => throw ToWrite.Section("4.1.4", "LabAdaptiveSampler.Pixel(trace)");
 #endif
 }

@@ -24,7 +24,11 @@ public abstract class LabCamera
     /// <summary>e.</summary>
     public Double3 Position { get; set; } = new(0, 0, 0);
 
+#if (en)
     /// <summary>A point.</summary>
+#else
+    /// <summary>Punkt.</summary>
+#endif
     public Double3 Target { get; set; } = new(0, 0, 1);
 
     /// <summary>up.</summary>
@@ -36,10 +40,18 @@ public abstract class LabCamera
     /// <summary>t ≤ FarPlane.</summary>
     public double FarPlane { get; set; } = 1000;
 
+#if (en)
     /// <summary>The vertical field of view, degrees: tan(Fov/2) = (v1 − v0)/(2 s).</summary>
+#else
+    /// <summary>Pionowy kąt widzenia w stopniach: tg(Fov/2) = (v1 − v0)/(2 s).</summary>
+#endif
     public double Fov { get; set; } = 60;
 
+#if (en)
     /// <summary>u0, v0, u1, v1; null: from Fov (3.2) or ViewHeight (3.1) and the image's nx/ny.</summary>
+#else
+    /// <summary>u0, v0, u1, v1; null: z Fov (3.2) albo ViewHeight (3.1) i nx/ny obrazu.</summary>
+#endif
     public Window? Window { get; set; }
 
 #if (solution)
@@ -60,18 +72,26 @@ public abstract class LabCamera
     public static double Beta(int y, double sy, int ny) => 1 - ((y + sy) / ny);
 #else
     /// <summary>u, v, w.</summary>
-    public (Double3 U, Double3 V, Double3 W) Frame() => throw ToWrite.Section("3", "Frame()");
+    public (Double3 U, Double3 V, Double3 W) Frame() => throw ToWrite.Section("3", "LabCamera.Frame()");
 
     /// <summary>α = (x + sx)/nx.</summary>
-    public static double Alpha(int x, double sx, int nx) => throw ToWrite.Section("3", "Alpha(x, sx, nx)");
+    public static double Alpha(int x, double sx, int nx) => throw ToWrite.Section("3", "LabCamera.Alpha(x, sx, nx)");
 
     /// <summary>β = 1 − (y + sy)/ny.</summary>
-    public static double Beta(int y, double sy, int ny) => throw ToWrite.Section("3", "Beta(y, sy, ny)");
+    public static double Beta(int y, double sy, int ny) => throw ToWrite.Section("3", "LabCamera.Beta(y, sy, ny)");
 #endif
 
-    /// <summary>The window (u0, v0, u1, v1) for an image of nx × ny pixels.</summary>
+#if (en)
+    /// <summary>The window (u0, v0, u1, v1) for an image of nx × ny pixels; a Window that is set, as it is. The checks compare it with RayLab's within 1e-9, so the order of the operations (a double's rounding) does not matter.</summary>
+#else
+    /// <summary>Okno (u0, v0, u1, v1) dla obrazu nx × ny pikseli; ustawione Window bez zmian. Testy porównują je z RayLab z dokładnością 1e-9, więc kolejność działań (zaokrąglenia double) nie ma znaczenia.</summary>
+#endif
     public abstract Window GetWindow(int nx, int ny);
 
+#if (en)
     /// <summary>The ray through the point (sx, sy) of pixel (x, y) of an nx × ny image.</summary>
+#else
+    /// <summary>Promień przez punkt (sx, sy) piksela (x, y) obrazu nx × ny.</summary>
+#endif
     public abstract Ray GetRay(int x, int y, int nx, int ny, double sx = 0.5, double sy = 0.5);
 }

@@ -46,6 +46,6 @@ public sealed class LabJitteredSampler : ILabSampler
     }
 #else
     /// <inheritdoc/>
-    public (double X, double Y)[] GetSamples(Random random) => throw ToWrite.Section("4.1.3", "LabJitteredSampler.GetSamples");
+    public (double X, double Y)[] GetSamples(Random random) => throw ToWrite.Section("4.1.3", "LabJitteredSampler.GetSamples(random)");
 #endif
 }

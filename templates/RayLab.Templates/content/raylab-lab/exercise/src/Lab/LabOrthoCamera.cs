@@ -20,7 +20,11 @@ namespace MyLab;
 #endif
 public sealed class LabOrthoCamera : LabCamera
 {
+#if (en)
     /// <summary>The window's height.</summary>
+#else
+    /// <summary>Wysokość okna.</summary>
+#endif
     public double ViewHeight { get; set; } = 2;
 
 #if (solution)

@@ -21,7 +21,11 @@ namespace MyLab;
 #endif
 public sealed class LabPerspectiveCamera : LabCamera
 {
+#if (en)
     /// <summary>The plane's distance from e, s &gt; 0.</summary>
+#else
+    /// <summary>Odległość płaszczyzny od e, s &gt; 0.</summary>
+#endif
     public double S { get; set; } = 1;
 
 #if (solution)

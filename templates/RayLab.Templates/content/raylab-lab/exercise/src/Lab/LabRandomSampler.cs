@@ -30,6 +30,6 @@ public sealed class LabRandomSampler : ILabSampler
     }
 #else
     /// <inheritdoc/>
-    public (double X, double Y)[] GetSamples(Random random) => throw ToWrite.Section("4.1.2", "LabRandomSampler.GetSamples");
+    public (double X, double Y)[] GetSamples(Random random) => throw ToWrite.Section("4.1.2", "LabRandomSampler.GetSamples(random)");
 #endif
 }

@@ -46,6 +46,6 @@ public sealed class LabRegularSampler : ILabSampler
     }
 #else
     /// <inheritdoc/>
-    public (double X, double Y)[] GetSamples(Random random) => throw ToWrite.Section("4.1.1", "LabRegularSampler.GetSamples");
+    public (double X, double Y)[] GetSamples(Random random) => throw ToWrite.Section("4.1.1", "LabRegularSampler.GetSamples(random)");
 #endif
 }

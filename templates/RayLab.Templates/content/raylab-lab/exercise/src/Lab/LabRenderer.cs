@@ -17,7 +17,11 @@ namespace MyLab;
 #endif
 public static class LabRenderer
 {
+#if (en)
     /// <summary>The colour the ray sees (Lab I: the nearest sphere's colour × I_a, or the background).</summary>
+#else
+    /// <summary>Kolor, który widzi promień (Lab I: kolor najbliższej kuli × I_a albo tło).</summary>
+#endif
     public static LightIntensity Trace(Scene scene, LabCamera camera, Ray ray)
     {
         Intensity colour = scene.Trace(ray, camera.NearPlane, camera.FarPlane);
@@ -25,7 +29,11 @@ public static class LabRenderer
     }
 
 #if (solution)
+#if (en)
     /// <summary>Renders with a sampling method (4.1.1–4.1.3); the same seed gives the same picture.</summary>
+#else
+    /// <summary>Renderuje z metodą próbkowania (4.1.1–4.1.3); to samo ziarno daje ten sam obraz.</summary>
+#endif
     public static long Render(Scene scene, LabCamera camera, ILabSampler sampler, LabImage image, int seed = 1)
     {
         int nx = image.Width, ny = image.Height;
@@ -52,7 +60,11 @@ public static class LabRenderer
         return rays;
     }
 
+#if (en)
     /// <summary>Renders with adaptive sampling (4.1.4).</summary>
+#else
+    /// <summary>Renderuje z próbkowaniem adaptacyjnym (4.1.4).</summary>
+#endif
     public static long Render(Scene scene, LabCamera camera, LabAdaptiveSampler sampler, LabImage image)
     {
         int nx = image.Width, ny = image.Height;
@@ -74,11 +86,19 @@ public static class LabRenderer
         return rays;
     }
 #else
+#if (en)
     /// <summary>Renders with a sampling method (4.1.1–4.1.3); the same seed gives the same picture.</summary>
+#else
+    /// <summary>Renderuje z metodą próbkowania (4.1.1–4.1.3); to samo ziarno daje ten sam obraz.</summary>
+#endif
     public static long Render(Scene scene, LabCamera camera, ILabSampler sampler, LabImage image, int seed = 1) =>
         throw ToWrite.Section("5", "LabRenderer.Render(scene, camera, sampler, image)");
 
+#if (en)
     /// <summary>Renders with adaptive sampling (4.1.4).</summary>
+#else
+    /// <summary>Renderuje z próbkowaniem adaptacyjnym (4.1.4).</summary>
+#endif
     public static long Render(Scene scene, LabCamera camera, LabAdaptiveSampler sampler, LabImage image) =>
         throw ToWrite.Section("5", "LabRenderer.Render(scene, camera, adaptive, image)");
 #endif

@@ -27,7 +27,7 @@ public readonly struct LightIntensity
         G = g > 0 ? g : 0;
         B = b > 0 ? b : 0;
 #else
-        throw ToWrite.Section("2.1", "LightIntensity(r, g, b)");
+        throw ToWrite.Section("2.1", "new LightIntensity(r, g, b)");
 #endif
     }
 
@@ -54,18 +54,28 @@ public readonly struct LightIntensity
 
     public static LightIntensity operator /(LightIntensity a, double s) => new(a.R / s, a.G / s, a.B / s);
 
+#if (en)
+    /// <summary>The lab's printing (operator &lt;&lt;): any format that shows R, G and B passes, e.g. (0.25, 0.5, 0.75); the check looks for the numbers with a point or a comma.</summary>
+#else
+    /// <summary>Wypisanie z instrukcji (operator &lt;&lt;): przejdzie dowolny format, który pokazuje R, G i B, np. (0.25, 0.5, 0.75); test szuka tych liczb z kropką albo przecinkiem.</summary>
+#endif
     public override string ToString() => string.Create(CultureInfo.InvariantCulture, $"({R:G6}, {G:G6}, {B:G6})");
 #else
-    public static LightIntensity operator +(LightIntensity a, LightIntensity b) => throw ToWrite.Section("2.1", "operator +");
+    public static LightIntensity operator +(LightIntensity a, LightIntensity b) => throw ToWrite.Section("2.1", "LightIntensity.operator +");
 
-    public static LightIntensity operator -(LightIntensity a, LightIntensity b) => throw ToWrite.Section("2.1", "operator −");
+    public static LightIntensity operator -(LightIntensity a, LightIntensity b) => throw ToWrite.Section("2.1", "LightIntensity.operator −");
 
-    public static LightIntensity operator *(LightIntensity a, double s) => throw ToWrite.Section("2.1", "operator * (I × s)");
+    public static LightIntensity operator *(LightIntensity a, double s) => throw ToWrite.Section("2.1", "LightIntensity.operator * (I × s)");
 
-    public static LightIntensity operator *(double s, LightIntensity a) => throw ToWrite.Section("2.1", "operator * (s × I)");
+    public static LightIntensity operator *(double s, LightIntensity a) => throw ToWrite.Section("2.1", "LightIntensity.operator * (s × I)");
 
-    public static LightIntensity operator /(LightIntensity a, double s) => throw ToWrite.Section("2.1", "operator /");
+    public static LightIntensity operator /(LightIntensity a, double s) => throw ToWrite.Section("2.1", "LightIntensity.operator /");
 
-    public override string ToString() => throw ToWrite.Section("2.1", "ToString()");
+#if (en)
+    /// <summary>The lab's printing (operator &lt;&lt;): any format that shows R, G and B passes, e.g. (0.25, 0.5, 0.75); the check looks for the numbers with a point or a comma.</summary>
+#else
+    /// <summary>Wypisanie z instrukcji (operator &lt;&lt;): przejdzie dowolny format, który pokazuje R, G i B, np. (0.25, 0.5, 0.75); test szuka tych liczb z kropką albo przecinkiem.</summary>
+#endif
+    public override string ToString() => throw ToWrite.Section("2.1", "LightIntensity.ToString()");
 #endif
 }

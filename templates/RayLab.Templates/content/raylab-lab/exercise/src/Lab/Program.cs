@@ -28,23 +28,27 @@ internal static class Program
 #else
         Console.WriteLine("Laboratorium II: kamera, próbkowanie, obraz, natężenie");
 #endif
-        (int missing, List<string> throwing) = Progress.Report(Console.Out);
+        var states = Progress.Report(Console.Out);
+        string[] toWrite = [.. states.Where(p => p.State == Progress.State.ToWrite).Select(p => $"{p.Id} {p.Title}")];
+        string[] throwing = [.. states.Where(p => p.State == Progress.State.Throws).Select(p => p.Id)];
+        int missing = toWrite.Length;
         int refused = OwnCode.Report(Console.Out);
-        if (missing > 0 || throwing.Count > 0 || refused > 0 || args.Contains("check"))
+        int warnings = BuildWarnings.Report(Console.Out);
+        if (missing > 0 || throwing.Length > 0 || refused > 0 || args.Contains("check"))
         {
 #if (en)
             Console.WriteLine(missing > 0 ? $"{missing} of {Sections.All.Length} parts still to write; the checks: dotnet test"
-                : throwing.Count > 0 ? "Every part is written; the checks: dotnet test"
+                : throwing.Length > 0 ? "Every part is written; the checks: dotnet test"
                 : "Every part is written; the checks: dotnet test; the pictures: dotnet run --project src/Lab");
-            if (throwing.Count > 0)
+            if (throwing.Length > 0)
             {
                 Console.WriteLine($"Sections that throw an exception: {string.Join(", ", throwing)} (where: above)");
             }
 #else
             Console.WriteLine(missing > 0 ? $"Do napisania zostało {missing} z {Sections.All.Length} części; sprawdzenie: dotnet test"
-                : throwing.Count > 0 ? "Wszystkie części są napisane; sprawdzenie: dotnet test"
+                : throwing.Length > 0 ? "Wszystkie części są napisane; sprawdzenie: dotnet test"
                 : "Wszystkie części są napisane; sprawdzenie: dotnet test; obrazy: dotnet run --project src/Lab");
-            if (throwing.Count > 0)
+            if (throwing.Length > 0)
             {
                 Console.WriteLine($"Sekcje, które rzucają wyjątek: {string.Join(", ", throwing)} (gdzie: wyżej)");
             }
@@ -58,7 +62,30 @@ internal static class Program
 #endif
             }
 
-            return missing > 0 || throwing.Count > 0 || refused > 0 ? 1 : 0;
+            if (warnings > 0)
+            {
+#if (en)
+                Console.WriteLine($"Compiler warnings (above): {warnings}; they stop nothing, but each points at a likely mistake");
+#else
+                Console.WriteLine($"Ostrzeżenia kompilatora (wyżej): {warnings}; niczego nie blokują, ale każde wskazuje prawdopodobny błąd");
+#endif
+            }
+
+            if (!args.Contains("check"))
+            {
+                // The pictures need every part, written and allowed: say that none was made, and what stands in the way.
+#if (en)
+                string[] why = [.. new[] { missing > 0 ? $"missing: {string.Join(", ", toWrite)}" : "", throwing.Length > 0 ? $"throwing an exception: {string.Join(", ", throwing)}" : "",
+                    refused > 0 ? "uses of what the lab does not allow (above)" : "" }.Where(p => p.Length > 0)];
+                Console.WriteLine($"No picture was made: the pictures need every part; {string.Join("; ", why)}");
+#else
+                string[] why = [.. new[] { missing > 0 ? $"brakuje: {string.Join(", ", toWrite)}" : "", throwing.Length > 0 ? $"rzucają wyjątek: {string.Join(", ", throwing)}" : "",
+                    refused > 0 ? "użycia tego, na co laboratorium nie pozwala (wyżej)" : "" }.Where(p => p.Length > 0)];
+                Console.WriteLine($"Nie powstał żaden obraz: do obrazów potrzebne są wszystkie części; {string.Join("; ", why)}");
+#endif
+            }
+
+            return missing > 0 || throwing.Length > 0 || refused > 0 ? 1 : 0;
         }
 
         try

@@ -10,8 +10,20 @@ namespace MyLab;
 #endif
 internal static class Progress
 {
-    /// <summary>Prints one line per section; returns how many are still to write, and the sections that throw another exception.</summary>
-    public static (int ToWrite, List<string> Throwing) Report(TextWriter output)
+    /// <summary>Where a section stands: written, still to write, or written and throwing another exception.</summary>
+    public enum State
+    {
+        Written,
+        ToWrite,
+        Throws,
+    }
+
+    /// <summary>
+    /// Tries each section's classes on a tiny input, in the lab's order. <c>Detail</c>: for a section still to write,
+    /// the method to write (or the other section it waits for); for one that throws, the exception and where in your
+    /// code; null for a written one.
+    /// </summary>
+    public static List<(string Id, string Title, string Classes, State State, string? Detail)> Probe()
     {
         var scene = new Scene([new Sphere(new Double3(0, 0, 0), 1, new Intensity(1, 0, 0))], new Intensity(0, 0, 1), Intensity.White);
         var probes = new (string Id, Action Try)[]
@@ -28,61 +40,75 @@ internal static class Progress
             ("5", () => _ = LabRenderer.Render(scene, new ProbeCamera(), new ProbeSampler(), new LabImage(4, 3))),
         };
 
-        int missing = 0;
-        var throwing = new List<string>();
+        var states = new List<(string, string, string, State, string?)>();
         foreach ((string id, Action probe) in probes)
         {
             (string _, string title, string classes) = Sections.All.First(s => s.Id == id);
-            string? problem = null;
-            bool written = false;
             try
             {
                 probe();
+                states.Add((id, title, classes, State.Written, null));
             }
             catch (Exception e) when (e is not OutOfMemoryException)
             {
                 Exception thrown = YourCode.Unwrapped(e);
-                written = thrown is not NotImplementedException;
-                problem = written ? YourCode.Describe(thrown) : thrown.Message;
-            }
+                if (thrown is not NotImplementedException)
+                {
+                    states.Add((id, title, classes, State.Throws, YourCode.Describe(thrown)));
+                    continue;
+                }
 
-            if (problem is null)
-            {
-#if (en)
-                output.WriteLine($"  written        {id,-6} {title} ({classes})");
-#else
-                output.WriteLine($"  napisane             {id,-6} {title} ({classes})");
-#endif
-            }
-            else if (written)
-            {
-                throwing.Add(id);
-#if (en)
-                output.WriteLine($"  throws         {id,-6} {title} ({classes}): {problem}");
-#else
-                output.WriteLine($"  rzuca wyjątek        {id,-6} {title} ({classes}): {problem}");
-#endif
-            }
-            else
-            {
-                missing++;
-                string own = ToWrite.Section(id, "").Message;
                 // Another section's NotImplementedException (section 5's probe needs LabImage and LightIntensity): this
-                // section waits for that one, which the line says, rather than look unwritten itself.
+                // section waits for that one, which the detail says, rather than look unwritten itself.
+                string own = ToWrite.Section(id, "").Message;
+                string other = thrown.Message.Split(' ')[0];
 #if (en)
-                string detail = problem.StartsWith(own, StringComparison.Ordinal) ? problem[own.Length..] : $"needs first: {problem}";
+                string detail = thrown.Message.StartsWith(own, StringComparison.Ordinal) ? thrown.Message[own.Length..]
+                    : $"needs section {other} {Sections.Title(other)} first";
 #else
-                string detail = problem.StartsWith(own, StringComparison.Ordinal) ? problem[own.Length..] : $"wymaga najpierw: {problem}";
+                string detail = thrown.Message.StartsWith(own, StringComparison.Ordinal) ? thrown.Message[own.Length..]
+                    : $"wymaga najpierw sekcji {other} {Sections.Title(other)}";
 #endif
-#if (en)
-                output.WriteLine($"  still to write {id,-6} {title} ({classes}): {detail}");
-#else
-                output.WriteLine($"  jeszcze do napisania {id,-6} {title} ({classes}): {detail}");
-#endif
+                states.Add((id, title, classes, State.ToWrite, detail));
             }
         }
 
-        return (missing, throwing);
+        return states;
+    }
+
+    /// <summary>Prints one line per section; returns each section's state (<see cref="Probe"/>).</summary>
+    public static List<(string Id, string Title, string Classes, State State, string? Detail)> Report(TextWriter output)
+    {
+        var states = Probe();
+        foreach ((string id, string title, string classes, State state, string? detail) in states)
+        {
+            switch (state)
+            {
+                case State.Written:
+#if (en)
+                    output.WriteLine($"  written        {id,-6} {title} ({classes})");
+#else
+                    output.WriteLine($"  napisane             {id,-6} {title} ({classes})");
+#endif
+                    break;
+                case State.Throws:
+#if (en)
+                    output.WriteLine($"  throws         {id,-6} {title} ({classes}): {detail}");
+#else
+                    output.WriteLine($"  rzuca wyjątek        {id,-6} {title} ({classes}): {detail}");
+#endif
+                    break;
+                default:
+#if (en)
+                    output.WriteLine($"  still to write {id,-6} {title} ({classes}): {detail}");
+#else
+                    output.WriteLine($"  jeszcze do napisania {id,-6} {title} ({classes}): {detail}");
+#endif
+                    break;
+            }
+        }
+
+        return states;
     }
 
     /// <summary>

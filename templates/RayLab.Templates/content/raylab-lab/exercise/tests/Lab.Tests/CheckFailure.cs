@@ -13,3 +13,9 @@ internal sealed class CheckFailure(string message, Exception? cause) : XunitExce
         new[] { cause?.StackTrace, base.StackTrace }.SelectMany(trace => (trace ?? "").Split('\n'))
             .Select(frame => frame.TrimEnd('\r')).Where(frame => frame.Contains(":line ", StringComparison.Ordinal)));
 }
+
+/// <summary>A report of what is left to write (<c>LabProgress</c>): a failure with its message only, no stack.</summary>
+internal sealed class ProgressReport(string message) : XunitException(message)
+{
+    public override string? StackTrace => null;
+}

@@ -7,7 +7,7 @@ namespace MyLab.Tests;
 /// <summary>2.2: the 8-bit rule i = int(256·I) at its edges, against RayLab's, and the image's pixels.</summary>
 public sealed class ImageChecks(ITestOutputHelper output)
 {
-    public static TheoryData<double> Edges => new()
+    public static TheoryData<Level> Edges => new()
     {
         0.0, 1.0 / 256 - 1e-12, 1.0 / 256, 0.1, 0.5, 127.5 / 256, 0.999 / 256 * 255, 255.0 / 256 - 1e-9, 255.0 / 256, 0.999999, 1.0, 1.5, -0.1, double.NaN,
     };
@@ -15,8 +15,9 @@ public sealed class ImageChecks(ITestOutputHelper output)
     [Trait("Section", "2.2")]
     [Theory(DisplayName = English ? "2.2 Image: the 8-bit rule i = int(256·I), cut not rounded, 0 … 255" : "2.2 Obraz: reguła 8-bitowa i = int(256·I), obcięcie, a nie zaokrąglenie, 0 … 255")]
     [MemberData(nameof(Edges))]
-    public void EightBitRule(double intensity) => Run(output, () =>
+    public void EightBitRule(Level I) => Run(output, () =>
     {
+        double intensity = I.Value;
         byte expected = Intensity.ToLevel(intensity);
         byte actual = LabImage.ToByte(intensity);
         output.WriteLine(F($"I = {intensity:R}: 256·I = {256 * intensity:R}, {T("poziom", "level")} {actual} ({T("oczekiwany", "expected")} {expected})"));
@@ -40,4 +41,27 @@ public sealed class ImageChecks(ITestOutputHelper output)
             $"2.2 Image: after SetPixel(2, 0, (0.9, 0.2, 2)) the bitmap's pixel (2, 0) should hold {expected} (int(256·I), at most 255), it holds {set}."));
         Assert.True(untouched == new Rgb24(0, 0, 0), T($"2.2 Obraz: nowy obraz jest czarny, a piksel (0, 1) ma {untouched}.", $"2.2 Image: a new image is black, pixel (0, 1) holds {untouched}."));
     });
+}
+
+/// <summary>
+/// An intensity as a theory's argument, named the same on every machine: 0.1, not 0,1 under a Polish culture, and in
+/// its shortest exact form (0.996093749, not 0.99609374900000003).
+/// </summary>
+public sealed class Level : Xunit.Sdk.IXunitSerializable
+{
+    public Level()
+    {
+    }
+
+    public Level(double value) => Value = value;
+
+    public double Value { get; private set; }
+
+    public static implicit operator Level(double value) => new(value);
+
+    public void Deserialize(Xunit.Sdk.IXunitSerializationInfo info) => Value = (double)info.GetValue("I")!;
+
+    public void Serialize(Xunit.Sdk.IXunitSerializationInfo info) => info.AddValue("I", Value, typeof(double));
+
+    public override string ToString() => Value.ToString("R", System.Globalization.CultureInfo.InvariantCulture);
 }
