@@ -1,4 +1,5 @@
 using System.CommandLine;
+using RayLab.Grading;
 
 namespace RayLab.Cli;
 

@@ -39,7 +39,7 @@ public static partial class GradeJob
         {
             return RunChecked(request, stdout, cancellation);
         }
-        catch (UsageException e)
+        catch (Exception e) when (e is UsageException or SandboxUnavailableException)
         {
             stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
             return 1;

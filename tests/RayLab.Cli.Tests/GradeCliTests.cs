@@ -1,4 +1,5 @@
 using System.Globalization;
+using RayLab.Grading;
 
 namespace RayLab.Cli.Tests;
 
@@ -203,7 +204,7 @@ public sealed class GradeCliTests : IDisposable
         {
             sandbox = GradeSandbox.Create(unsafeNoSandbox: !sandboxed, [], packages, new GradeLimits { MemoryMegabytes = 256 });
         }
-        catch (UsageException e) when (sandboxed)
+        catch (SandboxUnavailableException e) when (sandboxed)
         {
             Assert.Skip($"no sandbox here: {e.Message}");
             return;

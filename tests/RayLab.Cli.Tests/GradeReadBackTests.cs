@@ -1,3 +1,5 @@
+using RayLab.Grading;
+
 namespace RayLab.Cli.Tests;
 
 /// <summary>

@@ -3,9 +3,8 @@ using System.Globalization;
 using System.Runtime.InteropServices;
 using System.Text;
 using System.Text.RegularExpressions;
-using RayLab.Scenes;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>A limit of the sandbox that stopped a child (<see cref="ChildRun.Limit"/>).</summary>
 public enum SandboxLimit
@@ -186,7 +185,7 @@ public sealed partial class GradeSandbox : IDisposable
 
     /// <summary>
     /// The sandbox for this machine: bubblewrap where it runs, with every limit in <paramref name="limits"/> held by a
-    /// mechanism of this machine; else a <see cref="UsageException"/> that says what is missing and the option that
+    /// mechanism of this machine; else a <see cref="SandboxUnavailableException"/> that says what is missing and the option that
     /// goes without it (<c>--unsafe-no-sandbox</c>, <c>--unsafe-no-limit LIMIT</c>).
     /// </summary>
     /// <param name="unsafeNoSandbox">Run unsandboxed (then only the wall time and the GC heap are limited).</param>
@@ -194,6 +193,7 @@ public sealed partial class GradeSandbox : IDisposable
     /// <param name="packages">The NuGet package folder, bound read-only.</param>
     /// <param name="limits">The limits; null for none (the instructor's own, trusted restore).</param>
     /// <returns>The sandbox; dispose it to unmount the copies' file systems.</returns>
+    // Long: one check per mechanism (bubblewrap, setpriv, each limit), each refusal with its own message and option, in the order raylab grade prints them.
     public static GradeSandbox Create(bool unsafeNoSandbox, IReadOnlyList<string> hidden, string packages, GradeLimits? limits = null)
     {
         ArgumentNullException.ThrowIfNull(hidden);
@@ -214,7 +214,7 @@ public sealed partial class GradeSandbox : IDisposable
 
         if (!OperatingSystem.IsLinux())
         {
-            throw new UsageException(
+            throw new SandboxUnavailableException(
                 $"grade: no sandbox on {RuntimeInformation.OSDescription}: raylab grade sandboxes with Linux's bubblewrap. Grade in a Linux machine "
                 + "(WSL 2 on Windows, a Linux VM on macOS) with bubblewrap installed, or pass --unsafe-no-sandbox to run the submissions' code as yourself, with network (only for labs you trust)");
         }
@@ -222,7 +222,7 @@ public sealed partial class GradeSandbox : IDisposable
         string? bwrap = FindOnPath("bwrap");
         if (bwrap is null)
         {
-            throw new UsageException(
+            throw new SandboxUnavailableException(
                 "grade: bubblewrap (bwrap) is not installed, and it is the sandbox that keeps a submission off the network and out of your files: "
                 + "install it (Debian/Ubuntu: sudo apt-get install bubblewrap), or pass --unsafe-no-sandbox (only for labs you trust)");
         }
@@ -232,7 +232,7 @@ public sealed partial class GradeSandbox : IDisposable
         {
             if (Environment.IsPrivilegedProcess && sandbox._setpriv is null)
             {
-                throw new UsageException("grade: run as root, the sandbox drops to an unprivileged uid with setpriv (util-linux), which is not on PATH: install util-linux, or grade as an ordinary user");
+                throw new SandboxUnavailableException("grade: run as root, the sandbox drops to an unprivileged uid with setpriv (util-linux), which is not on PATH: install util-linux, or grade as an ordinary user");
             }
 
             foreach ((string name, int? value, string? mechanism, string hint) in new[]
@@ -245,15 +245,15 @@ public sealed partial class GradeSandbox : IDisposable
             {
                 if (value is not null && mechanism is null)
                 {
-                    throw new UsageException($"grade: no {(name == "processes" ? "process" : name == "cpu" ? "CPU time" : name)} limit can hold on this machine: {hint}, or pass --unsafe-no-limit {name} to grade without it");
+                    throw new SandboxUnavailableException($"grade: no {(name == "processes" ? "process" : name == "cpu" ? "CPU time" : name)} limit can hold on this machine: {hint}, or pass --unsafe-no-limit {name} to grade without it");
                 }
             }
 
             ChildRun probe = sandbox.Run(sandbox._etc!, null, TimeSpan.FromSeconds(30), "true", [], CancellationToken.None);
             if (probe.ExitCode != 0)
             {
-                throw new UsageException(
-                    $"grade: bubblewrap does not run here ({SceneFileException.OneLine(probe.Output.Trim())}): it needs unprivileged user namespaces; "
+                throw new SandboxUnavailableException(
+                    $"grade: bubblewrap does not run here ({OneLine(probe.Output.Trim())}): it needs unprivileged user namespaces; "
                     + "or pass --unsafe-no-sandbox (only for labs you trust)");
             }
         }
@@ -293,102 +293,7 @@ public sealed partial class GradeSandbox : IDisposable
             copyFull = !PrepareCopy(lab);
         }
 
-        var start = new ProcessStartInfo
-        {
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            RedirectStandardInput = true,
-            UseShellExecute = false,
-            WorkingDirectory = lab,
-        };
-        string home = Path.Combine(lab, ".home");
-        if (lab != _etc)
-        {
-            Directory.CreateDirectory(home);
-        }
-
-        if (_setpriv is not null && lab != _etc)
-        {
-            Own(lab);
-        }
-
-        // The same environment with and without the sandbox: a home inside the lab, the prepared package folder,
-        // no MSBuild or compiler server outliving the step, no telemetry, no first-run work.
-        var environment = new Dictionary<string, string>
-        {
-            ["HOME"] = home,
-            ["DOTNET_CLI_HOME"] = home,
-            ["NUGET_PACKAGES"] = _packages,
-            ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1",
-            ["DOTNET_NOLOGO"] = "1",
-            ["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1",
-            ["DOTNET_GENERATE_ASPNET_CERTIFICATE"] = "false",
-            ["MSBUILDDISABLENODEREUSE"] = "1",
-            ["DOTNET_CLI_USE_MSBUILD_SERVER"] = "0",
-            ["UseSharedCompilation"] = "false",
-            ["TMPDIR"] = "/tmp", // the sandbox's own, empty /tmp
-        };
-        if (_limits.MemoryMegabytes is { } megabytes)
-        {
-            // The runtime reads it as hexadecimal bytes, in every .NET process of the command: MSBuild, the compiler,
-            // the test host, the lab's program.
-            environment["DOTNET_GCHeapHardLimit"] = ((long)megabytes << 20).ToString("x", CultureInfo.InvariantCulture);
-        }
-
-        if (_bwrap is null)
-        {
-            start.FileName = command;
-            foreach (string a in args)
-            {
-                start.ArgumentList.Add(a);
-            }
-
-            // MSBuild's variables of a build this grader may run under (dotnet test) would steer the children's builds.
-            foreach (string key in start.Environment.Keys.Where(k => k.StartsWith("MSBuild", StringComparison.OrdinalIgnoreCase)).ToList())
-            {
-                start.Environment.Remove(key);
-            }
-
-            foreach ((string key, string value) in environment)
-            {
-                start.Environment[key] = value;
-            }
-        }
-        else
-        {
-            List<string> a = [.. Outside(), _bwrap, .. View(lab)];
-            foreach (string folder in (readOnly ?? []).Select(Path.GetFullPath))
-            {
-                Reachable(folder);
-                a.AddRange(["--ro-bind", folder, folder]);
-            }
-
-            // A step whose test host has a sandbox of its own (TestHostLauncher) may make that one user namespace; the
-            // inner sandbox forbids any more.
-            a.AddRange(nested ? ["--unshare-all", "--unshare-user"] : ["--unshare-all", "--unshare-user", "--disable-userns"]);
-            a.AddRange(["--die-with-parent", "--new-session", "--clearenv"]);
-            a.AddRange(["--setenv", "PATH", $"{_dotnetRoot}:/usr/local/bin:/usr/bin:/bin", "--setenv", "DOTNET_ROOT", _dotnetRoot]);
-            if (Environment.GetEnvironmentVariable("LANG") is { Length: > 0 } language)
-            {
-                a.AddRange(["--setenv", "LANG", language]);
-            }
-
-            foreach ((string key, string value) in environment)
-            {
-                a.AddRange(["--setenv", key, value]);
-            }
-
-            a.Add("--");
-            a.AddRange(Inside());
-            a.Add(command);
-            a.AddRange(args);
-            start.FileName = a[0];
-            foreach (string arg in a.Skip(1))
-            {
-                start.ArgumentList.Add(arg);
-            }
-        }
-
+        ProcessStartInfo start = StartInfo(lab, command, args, readOnly, nested);
         var output = new StringBuilder();
         var clock = Stopwatch.StartNew();
         using var process = new Process { StartInfo = start };
@@ -430,6 +335,123 @@ public sealed partial class GradeSandbox : IDisposable
         }
 
         return run;
+    }
+
+    /// <summary>
+    /// The same environment with and without the sandbox: a home inside the lab, the prepared package folder, no
+    /// MSBuild or compiler server outliving the step, no telemetry, no first-run work, the GC heap's limit.
+    /// </summary>
+    private Dictionary<string, string> ChildEnvironment(string home)
+    {
+        var environment = new Dictionary<string, string>
+        {
+            ["HOME"] = home,
+            ["DOTNET_CLI_HOME"] = home,
+            ["NUGET_PACKAGES"] = _packages,
+            ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1",
+            ["DOTNET_NOLOGO"] = "1",
+            ["DOTNET_SKIP_FIRST_TIME_EXPERIENCE"] = "1",
+            ["DOTNET_GENERATE_ASPNET_CERTIFICATE"] = "false",
+            ["MSBUILDDISABLENODEREUSE"] = "1",
+            ["DOTNET_CLI_USE_MSBUILD_SERVER"] = "0",
+            ["UseSharedCompilation"] = "false",
+            ["TMPDIR"] = "/tmp", // the sandbox's own, empty /tmp
+        };
+        if (_limits.MemoryMegabytes is { } megabytes)
+        {
+            // The runtime reads it as hexadecimal bytes, in every .NET process of the command: MSBuild, the compiler,
+            // the test host, the lab's program.
+            environment["DOTNET_GCHeapHardLimit"] = ((long)megabytes << 20).ToString("x", CultureInfo.InvariantCulture);
+        }
+
+        return environment;
+    }
+
+    /// <summary>The whole command line of a sandboxed step: the limits outside, bubblewrap and its view, the limits inside, the command.</summary>
+    private List<string> BubblewrapCommand(string lab, string command, IReadOnlyList<string> args, IReadOnlyList<string>? readOnly, bool nested, Dictionary<string, string> environment)
+    {
+        List<string> a = [.. Outside(), _bwrap!, .. View(lab)];
+        foreach (string folder in (readOnly ?? []).Select(Path.GetFullPath))
+        {
+            Reachable(folder);
+            a.AddRange(["--ro-bind", folder, folder]);
+        }
+
+        // A step whose test host has a sandbox of its own (TestHostLauncher) may make that one user namespace; the
+        // inner sandbox forbids any more.
+        a.AddRange(nested ? ["--unshare-all", "--unshare-user"] : ["--unshare-all", "--unshare-user", "--disable-userns"]);
+        a.AddRange(["--die-with-parent", "--new-session", "--clearenv"]);
+        a.AddRange(["--setenv", "PATH", $"{_dotnetRoot}:/usr/local/bin:/usr/bin:/bin", "--setenv", "DOTNET_ROOT", _dotnetRoot]);
+        if (Environment.GetEnvironmentVariable("LANG") is { Length: > 0 } language)
+        {
+            a.AddRange(["--setenv", "LANG", language]);
+        }
+
+        foreach ((string key, string value) in environment)
+        {
+            a.AddRange(["--setenv", key, value]);
+        }
+
+        a.Add("--");
+        a.AddRange(Inside());
+        a.Add(command);
+        a.AddRange(args);
+        return a;
+    }
+
+    /// <summary>How <see cref="Run"/> starts its command: plain, or inside bubblewrap with the limits and the view.</summary>
+    private ProcessStartInfo StartInfo(string lab, string command, IReadOnlyList<string> args, IReadOnlyList<string>? readOnly, bool nested)
+    {
+        var start = new ProcessStartInfo
+        {
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            RedirectStandardInput = true,
+            UseShellExecute = false,
+            WorkingDirectory = lab,
+        };
+        string home = Path.Combine(lab, ".home");
+        if (lab != _etc)
+        {
+            Directory.CreateDirectory(home);
+        }
+
+        if (_setpriv is not null && lab != _etc)
+        {
+            Own(lab);
+        }
+
+        Dictionary<string, string> environment = ChildEnvironment(home);
+        if (_bwrap is null)
+        {
+            start.FileName = command;
+            foreach (string a in args)
+            {
+                start.ArgumentList.Add(a);
+            }
+
+            // MSBuild's variables of a build this grader may run under (dotnet test) would steer the children's builds.
+            foreach (string key in start.Environment.Keys.Where(k => k.StartsWith("MSBuild", StringComparison.OrdinalIgnoreCase)).ToList())
+            {
+                start.Environment.Remove(key);
+            }
+
+            foreach ((string key, string value) in environment)
+            {
+                start.Environment[key] = value;
+            }
+        }
+        else
+        {
+            List<string> a = BubblewrapCommand(lab, command, args, readOnly, nested, environment);
+            start.FileName = a[0];
+            foreach (string arg in a.Skip(1))
+            {
+                start.ArgumentList.Add(arg);
+            }
+        }
+
+        return start;
     }
 
     /// <summary>
@@ -692,7 +714,7 @@ public sealed partial class GradeSandbox : IDisposable
         {
             Directory.Delete(lab);
             Directory.Move(held, lab);
-            throw new UsageException($"grade: cannot mount the lab copy's tmpfs of --disk-limit {megabytes} MB ({SceneFileException.OneLine(mount.Output.Trim())}); or pass --unsafe-no-limit disk");
+            throw new SandboxUnavailableException($"grade: cannot mount the lab copy's tmpfs of --disk-limit {megabytes} MB ({OneLine(mount.Output.Trim())}); or pass --unsafe-no-limit disk");
         }
 
         lock (_gate)
@@ -808,7 +830,7 @@ public sealed partial class GradeSandbox : IDisposable
         ChildRun chown = Plain("chown", ["-R", "-P", "-h", owner, lab]);
         if (chown.ExitCode != 0)
         {
-            throw new IOException($"cannot give the lab's copy to the sandbox's uid: {SceneFileException.OneLine(chown.Output.Trim())}");
+            throw new IOException($"cannot give the lab's copy to the sandbox's uid: {OneLine(chown.Output.Trim())}");
         }
     }
 
@@ -1029,6 +1051,10 @@ public sealed partial class GradeSandbox : IDisposable
             // it has already exited
         }
     }
+
+    /// <summary>A child's output on one line, for a message: its lines joined with "; ".</summary>
+    private static string OneLine(string text) =>
+        string.Join("; ", text.Split('\n', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries));
 
     private static string? FindOnPath(string name)
     {

@@ -1,4 +1,6 @@
-namespace RayLab.Cli.Tests;
+using RayLab.Tests.Shared;
+
+namespace RayLab.Grading.Tests;
 
 /// <summary>
 /// <c>raylab grade</c>'s sandbox for real (bubblewrap, the limits of this machine), with small shell commands as the
@@ -129,7 +131,7 @@ public sealed class GradeSandboxTests : IDisposable
         {
             return GradeSandbox.Create(unsafeNoSandbox: false, [_dir.File("kit"), _dir.File("submissions")], packages, limits);
         }
-        catch (UsageException e)
+        catch (SandboxUnavailableException e)
         {
             Assert.Skip($"the sandbox or a limit cannot run here: {e.Message}");
             throw;
