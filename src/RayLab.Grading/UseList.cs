@@ -293,6 +293,7 @@ public sealed record UseFinding(IReadOnlyList<string> Sections, ForeignUse Use, 
         "unsafe memory access" => "niebezpiecznego dostępu do pamięci",
         "the network" => "sieci",
         "the exact renderer" => "dokładnego renderera",
+        "the grader's own code" => "kodu oceniającego",
         "code that runs when the lab loads" => "kodu uruchamianego przy ładowaniu laboratorium",
         _ => reason,
     };

@@ -35,6 +35,22 @@ public sealed class UseListTests
     }
 
     [Theory]
+    // the exercise lab's own list: the skeleton's scan of itself, and nothing else of RayLab.Grading
+    [InlineData("RayLab.Grading.UseList", "Load", UseRefusal.None)]
+    [InlineData("RayLab.Grading.AssemblyUses", "Read", UseRefusal.None)]
+    [InlineData("RayLab.Grading.UseFinding", "Message", UseRefusal.None)]
+    [InlineData("RayLab.Grading.GradeSandbox", "Run", UseRefusal.Forbidden)]
+    [InlineData("RayLab.Grading.SafeZip", "Extract", UseRefusal.Forbidden)]
+    [InlineData("RayLab.OrthoCamera", "GetImagePlane", UseRefusal.ToWrite)]
+    [InlineData("System.Diagnostics.Process", "Start", UseRefusal.Forbidden)]
+    public void TheExerciseLabsListAllowsItsScanAndNothingElseOfTheGrader(string type, string member, UseRefusal expected)
+    {
+        string list = Path.Combine(AppContext.BaseDirectory, "exercise-uses.json");
+        string assembly = type.StartsWith("RayLab.Grading", StringComparison.Ordinal) ? "RayLab.Grading" : type.StartsWith("RayLab", StringComparison.Ordinal) ? "RayLab.Core" : "System.Runtime";
+        Assert.Equal(expected, Judge(File.ReadAllText(list), type, member, assembly).Refusal);
+    }
+
+    [Theory]
     [InlineData("[]", "t.json: expected a JSON object")]
     [InlineData("""{ "allowed": "System.*" }""", "t.json: allowed: expected an array of strings")]
     [InlineData("""{ "allowed": ["System.*.Linq"] }""", "t.json: allowed: 'System.*.Linq' is not a rule: expected Namespace.*, Namespace.Type or Namespace.Type::Member")]
