@@ -2,7 +2,6 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Text;
 using System.Text.RegularExpressions;
-using System.Xml.Linq;
 using RayLab.Grading;
 using RayLab.Reports.Imaging;
 using RayLab.Metrics;
@@ -461,15 +460,15 @@ public static partial class GradeJob
             string trx = Path.Combine(results, "checks.trx");
             if (File.Exists(trx))
             {
-                foreach ((string display, string outcome) in TrxResults(trx))
+                foreach (CheckResult result in CheckRunFiles.Results(trx))
                 {
-                    row.Checks[display] = outcome == "Passed" ? "Passed" : outcome == "NotExecuted" ? "Skipped" : "Failed";
+                    row.Checks[result.Display] = result.Outcome == "Passed" ? "Passed" : result.Outcome == "NotExecuted" ? "Skipped" : "Failed";
                 }
             }
 
             bool hang = test.Output.Contains("inactivity time", StringComparison.Ordinal);
             var stopped = Directory.Exists(results)
-                ? Directory.EnumerateFiles(results, "Sequence_*.xml", SearchOption.AllDirectories).SelectMany(UnfinishedTests).ToList()
+                ? Directory.EnumerateFiles(results, "Sequence_*.xml", SearchOption.AllDirectories).SelectMany(CheckRunFiles.Unfinished).ToList()
                 : [];
             foreach ((string fullName, string display) in stopped)
             {
@@ -699,50 +698,6 @@ public static partial class GradeJob
           </packageSources>
         </configuration>
         """;
-
-    /// <summary>Each result of a TRX file: the check's display name and its outcome.</summary>
-    internal static IEnumerable<(string Display, string Outcome)> TrxResults(string trx)
-    {
-        XDocument document;
-        try
-        {
-            document = XDocument.Load(trx);
-        }
-        catch (System.Xml.XmlException)
-        {
-            yield break;
-        }
-
-        foreach (XElement result in document.Descendants().Where(e => e.Name.LocalName == "UnitTestResult"))
-        {
-            if (result.Attribute("testName")?.Value is { } display)
-            {
-                yield return (display, result.Attribute("outcome")?.Value ?? "Failed");
-            }
-        }
-    }
-
-    /// <summary>The checks a blame sequence file lists as started and not finished: full name (for a filter) and display name.</summary>
-    private static IEnumerable<(string FullName, string Display)> UnfinishedTests(string sequence)
-    {
-        XDocument document;
-        try
-        {
-            document = XDocument.Load(sequence);
-        }
-        catch (System.Xml.XmlException)
-        {
-            yield break;
-        }
-
-        foreach (XElement test in document.Descendants("Test"))
-        {
-            if (test.Attribute("Completed")?.Value == "False" && test.Attribute("Name")?.Value is { } name)
-            {
-                yield return (name, test.Attribute("DisplayName")?.Value ?? name);
-            }
-        }
-    }
 
     /// <summary>
     /// A section's result from its checks' outcomes: fail where the lab uses what it may not (<paramref name="refused"/>);

@@ -1,5 +1,4 @@
 using System.Globalization;
-using System.Xml.Linq;
 using RayLab.Grading;
 
 namespace RayLab.Cli;
@@ -36,24 +35,9 @@ internal static class GradeMarks
 
         foreach (string trx in Directory.EnumerateFiles(results, "*.trx", SearchOption.AllDirectories).Order(StringComparer.Ordinal))
         {
-            XDocument document;
-            try
+            foreach (CheckResult result in CheckRunFiles.Results(trx).Where(r => r.Message is not null))
             {
-                document = XDocument.Load(trx);
-            }
-            catch (Exception e) when (e is System.Xml.XmlException or IOException)
-            {
-                continue;
-            }
-
-            foreach (XElement result in document.Descendants().Where(e => e.Name.LocalName == "UnitTestResult"))
-            {
-                string? message = result.Descendants().FirstOrDefault(e => e.Name.LocalName == "Message")?.Value;
-                string? first = message?.Split('\n').Select(l => l.Trim()).FirstOrDefault(l => l.Length > 0);
-                if (result.Attribute("testName")?.Value is { } display && first is not null)
-                {
-                    lab.Row.Messages.TryAdd(display, first);
-                }
+                lab.Row.Messages.TryAdd(result.Display, result.Message!);
             }
         }
 
