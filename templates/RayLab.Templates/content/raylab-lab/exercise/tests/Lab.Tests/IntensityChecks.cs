@@ -57,8 +57,8 @@ public sealed class IntensityChecks(ITestOutputHelper output)
         {
             string local = part.Replace(".", ",", StringComparison.Ordinal);
             Assert.True(text.Contains(part, StringComparison.Ordinal) || text.Contains(local, StringComparison.Ordinal),
-                T($"Instrukcja: natężenie da się wypisać (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() dało \"{text}\", bez {part}.",
-                  $"The lab: an intensity can be printed (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() gave \"{text}\", without {part}."));
+                T($"Instrukcja: natężenie da się wypisać (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() dało \"{text}\", bez {part} ({Source(typeof(LightIntensity), nameof(LightIntensity.ToString))}).",
+                  $"The lab: an intensity can be printed (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() gave \"{text}\", without {part} ({Source(typeof(LightIntensity), nameof(LightIntensity.ToString))})."));
         }
 
         output.WriteLine($"ToString(): {text}");

@@ -84,6 +84,7 @@ internal sealed class OracleCamera : LabCamera
 
     public override Ray GetRay(int x, int y, int nx, int ny, double sx = 0.5, double sy = 0.5)
     {
+        StopIfPastLimit();
         Interlocked.Exchange(ref _last, ((long)y * _plane.Width) + x);
         Ray ray = _plane.GetPixelRay(x, y, sx, sy);
         return new Ray(ray.Origin, ray.Direction * _scale);

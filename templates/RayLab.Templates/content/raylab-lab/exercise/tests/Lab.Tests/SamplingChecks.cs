@@ -137,6 +137,7 @@ public sealed class SamplingChecks(ITestOutputHelper output)
                 int calls = 0;
                 LightIntensity value = sampler.Pixel((sx, sy) =>
                 {
+                    StopIfPastLimit();
                     // A recursion that does not stop: an exception that says so at its first point past depth 3, before
                     // the check's thread runs out of stack (within some 50 levels the squares are too small for a double
                     // to hold a new point, and such a recursion goes on without tracing one).

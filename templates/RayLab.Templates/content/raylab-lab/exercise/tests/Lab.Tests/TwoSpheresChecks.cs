@@ -99,7 +99,11 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
     {
         public int SamplesPerPixel => 1;
 
-        public (double X, double Y)[] GetSamples(Random random) => [(0.5, 0.5)];
+        public (double X, double Y)[] GetSamples(Random random)
+        {
+            StopIfPastLimit();
+            return [(0.5, 0.5)];
+        }
     }
 
     /// <summary>n points drawn from the loop's generator.</summary>
@@ -107,7 +111,11 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
     {
         public int SamplesPerPixel => n;
 
-        public (double X, double Y)[] GetSamples(Random random) => [.. Enumerable.Range(0, n).Select(_ => (random.NextDouble(), random.NextDouble()))];
+        public (double X, double Y)[] GetSamples(Random random)
+        {
+            StopIfPastLimit();
+            return [.. Enumerable.Range(0, n).Select(_ => (random.NextDouble(), random.NextDouble()))];
+        }
     }
 
     /// <summary>Your camera, remembering the last pixel asked for (a time limit names it).</summary>
@@ -136,6 +144,7 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
 
         public override Ray GetRay(int x, int y, int nx, int ny, double sx = 0.5, double sy = 0.5)
         {
+            StopIfPastLimit();
             _width = nx;
             Interlocked.Exchange(ref _last, ((long)y * nx) + x);
             return _camera.GetRay(x, y, nx, ny, sx, sy);
