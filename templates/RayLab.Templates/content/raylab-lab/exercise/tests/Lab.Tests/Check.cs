@@ -217,9 +217,9 @@ internal static class Check
                 }
             }
         }
-        catch (Exception e) when (e is IOException or BadImageFormatException or InvalidOperationException)
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or BadImageFormatException or InvalidOperationException or NotSupportedException)
         {
-            // no symbols to read: the method's name alone
+            // no symbols to read (none beside the lab, or a sandbox that hides them): the method's name alone
         }
 
         return method;
