@@ -309,11 +309,11 @@ public sealed partial class LabTemplateTests
 
     /// <summary>
     /// The English sentences in what the student writes in and reads in a lab: the comments and string literals of
-    /// src/Lab's sources, the comments of the project and configuration files, and the README's prose (outside code).
-    /// A sentence is English when it holds two of a few common English words ("the", "is", "of", …), none of them
-    /// Polish; code identifiers, <c>&lt;c&gt;</c> and <c>&lt;see/&gt;</c> elements, interpolation holes and backticks are
-    /// left out first. The checks' sources (tests/Lab.Tests/*.cs) are not searched: they hold each message in both
-    /// languages (<c>T(pl, en)</c>), and their comments are in English; what they print is searched in the lab's
+    /// src/Lab's sources, the comments of the checks' sources, the comments of the project and configuration files,
+    /// and the README's prose (outside code). A sentence is English when it holds two of a few common English words
+    /// ("the", "is", "of", …), none of them Polish; code identifiers, <c>&lt;c&gt;</c> and <c>&lt;see/&gt;</c>
+    /// elements, interpolation holes and backticks are left out first. The checks' string literals are not searched:
+    /// they hold each message in both languages (<c>T(pl, en)</c>); what the checks print is searched in the lab's
     /// output instead (<see cref="EnglishLines"/>).
     /// </summary>
     private static IEnumerable<string> EnglishSentences(string lab)
@@ -322,16 +322,17 @@ public sealed partial class LabTemplateTests
         {
             string relative = Path.GetRelativePath(lab, file).Replace('\\', '/');
             string name = Path.GetFileName(file);
-            if (name.EndsWith(".json", StringComparison.Ordinal) || (relative.StartsWith("tests/", StringComparison.Ordinal) && name.EndsWith(".cs", StringComparison.Ordinal)))
+            if (name.EndsWith(".json", StringComparison.Ordinal))
             {
                 continue;
             }
 
+            bool check = relative.StartsWith("tests/", StringComparison.Ordinal) && name.EndsWith(".cs", StringComparison.Ordinal);
             string text = File.ReadAllText(file);
             IEnumerable<string> parts = name.EndsWith(".md", StringComparison.Ordinal)
                 ? Regex.Split(Regex.Replace(text, "(?s)```.*?```", ""), @"\n\s*\n").Select(p => Regex.Replace(p, "`[^`]*`", ""))
                 : Regex.Matches(text, @"(?s)//[^\n]*|/\*.*?\*/|<!--.*?-->|""(?:[^""\\\n]|\\.)*""").Select(m => m.Value);
-            foreach (string part in parts)
+            foreach (string part in parts.Where(p => !check || !p.StartsWith('"')))
             {
                 if (IsEnglish(Regex.Replace(part, @"(?s)<c>.*?</c>|<see [^>]*/>|\{[^{}]*\}", "")))
                 {

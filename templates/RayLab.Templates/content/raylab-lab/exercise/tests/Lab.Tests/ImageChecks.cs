@@ -4,7 +4,11 @@ using static MyLab.Tests.Check;
 
 namespace MyLab.Tests;
 
+#if (en)
 /// <summary>2.2: the 8-bit rule i = int(256·I) at its edges, against RayLab's, and the image's pixels.</summary>
+#else
+/// <summary>2.2: reguła 8-bitowa i = int(256·I) na jej krańcach, wobec reguły RayLab, i piksele obrazu.</summary>
+#endif
 public sealed class ImageChecks(ITestOutputHelper output)
 {
     public static TheoryData<Level> Edges => new()
@@ -43,10 +47,17 @@ public sealed class ImageChecks(ITestOutputHelper output)
     });
 }
 
+#if (en)
 /// <summary>
 /// An intensity as a theory's argument, named the same on every machine: 0.1, not 0,1 under a Polish culture, and in
 /// its shortest exact form (0.996093749, not 0.99609374900000003).
 /// </summary>
+#else
+/// <summary>
+/// Natężenie jako argument testu z danymi, nazwane tak samo na każdym komputerze: 0.1, a nie 0,1 przy polskich
+/// ustawieniach regionalnych, i w najkrótszej dokładnej postaci (0.996093749, a nie 0.99609374900000003).
+/// </summary>
+#endif
 public sealed class Level : Xunit.Sdk.IXunitSerializable
 {
     public Level()

@@ -3,7 +3,11 @@ using static MyLab.Tests.Check;
 
 namespace MyLab.Tests;
 
+#if (en)
 /// <summary>2.1: LightIntensity against RayLab's Intensity on the same numbers.</summary>
+#else
+/// <summary>2.1: LightIntensity wobec Intensity z RayLab na tych samych liczbach.</summary>
+#endif
 public sealed class IntensityChecks(ITestOutputHelper output)
 {
     private static readonly double[][] Inputs = [[0.5, 0.25, 0.125], [-0.5, 0.3, 2], [0, 0, 0], [1, 1, 1], [0.9, 0.2, 0.2]];
