@@ -115,7 +115,30 @@ public sealed partial class LabTemplateTests
             Assert.DoesNotContain("Stack Trace:", test, StringComparison.Ordinal);
             Assert.DoesNotMatch(@"(?m)^\s+(Passed|Failed|Skipped) .*\d,\d", test);
             Assert.Contains("(I: 0.1)", test, StringComparison.Ordinal);
+            if (lang == "pl")
+            {
+                string[] english = [.. EnglishLines(test + "\n" + run + "\n" + check)];
+                Assert.True(english.Length == 0, $"the Polish lab's output holds English:\n{string.Join("\n", english)}");
+            }
         }
+    }
+
+    [Fact]
+    public async Task ThePolishExerciseLabHasNoEnglishSentenceInWhatTheStudentWritesInOrReadsAndDotnetNewListsItInPolish()
+    {
+        string list = await feed.RunAsync(feed.Root, "dotnet", "new", "list", "raylab-lab");
+        Assert.Contains("Laboratorium RayLab (kamera, próbkowanie, obraz, natężenie)", list, StringComparison.Ordinal);
+        Assert.DoesNotContain("RayLab lab (camera", list, StringComparison.Ordinal);
+
+        string root = TrappedFolder("polish");
+        string pl = Path.Combine(root, "pl"), en = Path.Combine(root, "en");
+        await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "-o", pl, "--feed", feed.Feed, "--skipRestore");
+        await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "-o", en, "--lang", "en", "--feed", feed.Feed, "--skipRestore");
+        string[] english = [.. EnglishSentences(pl)];
+        Assert.True(english.Length == 0, $"the Polish exercise lab holds {english.Length} English sentences:\n{string.Join("\n", english)}");
+
+        // The heuristic finds English where it is: the English lab's files are full of it.
+        Assert.True(EnglishSentences(en).Count() > 20, "the heuristic finds no English in the English lab");
     }
 
     [Fact]
@@ -172,9 +195,27 @@ public sealed partial class LabTemplateTests
             Assert.True(failing.Contains(section), $"the sabotage of {section} ({sabotage}) failed sections {string.Join(", ", failing)}, not {section}:\n{result}");
             Assert.DoesNotContain("2.1", failing); // the intensity is not sabotaged: its checks still pass
             Assert.Contains("2.1", PassedSections(result));
+            if (section == "2.2")
+            {
+                // A wrong value names the method that gave it, at its first line of code in the student's file.
+                int first = Array.FindIndex(source.Split('\n'), l => l.Contains("double scaled = 256 * intensity;", StringComparison.Ordinal)) + 1;
+                Assert.Contains($"a ToByte dało 26 (src/Lab/LabImage.cs:{first}, LabImage.ToByte).", result, StringComparison.Ordinal);
+            }
         }
 
         TestContext.Current.TestOutputHelper?.WriteLine($"five sabotages: {clock.Elapsed.TotalSeconds:F0} s");
+
+        // A loop that never ends: past the lab's limit (45 s, below the grader's 60 s) the check fails with its own
+        // message, and the loop is stopped at its next call into the checks' camera or sampler.
+        string renderer = Path.Combine(lab, "src", "Lab", "LabRenderer.cs");
+        string rendererSource = File.ReadAllText(renderer);
+        const string row = "for (int x = 0; x < nx; x++)\n            {\n                (double X, double Y)[] points";
+        Assert.Contains(row, rendererSource, StringComparison.Ordinal);
+        File.WriteAllText(renderer, rendererSource.Replace(row, row.Replace("x++", "x = x * 1", StringComparison.Ordinal), StringComparison.Ordinal));
+        (int hangExit, string hang) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-restore", "--filter", "FullyQualifiedName~SameSeedSamePicture");
+        File.WriteAllText(renderer, rendererSource);
+        Assert.True(hangExit != 0, $"5 passed with a render loop that never ends:\n{hang}");
+        Assert.Matches(@"Przekroczony limit czasu 45 s: metoda się nie skończyła \(zapętlenie\?\)\. Ostatnio: piksel \(0, \d+\)\. Twoja metoda została zatrzymana\.", hang);
 
         // Code that throws: the checks and check name the exception and where in the student's code it came from.
         string image = Path.Combine(lab, "src", "Lab", "LabImage.cs");
@@ -265,6 +306,56 @@ public sealed partial class LabTemplateTests
 
     [GeneratedRegex(@"(?m)^\s+(?<result>Passed|Failed|Skipped) (?<section>\d+(\.\d+)*) ")]
     private static partial Regex SectionLine();
+
+    /// <summary>
+    /// The English sentences in what the student writes in and reads in a lab: the comments and string literals of
+    /// src/Lab's sources, the comments of the checks' sources, the comments of the project and configuration files,
+    /// and the README's prose (outside code). A sentence is English when it holds two of a few common English words
+    /// ("the", "is", "of", …), none of them Polish; code identifiers, <c>&lt;c&gt;</c> and <c>&lt;see/&gt;</c>
+    /// elements, interpolation holes and backticks are left out first. The checks' string literals are not searched:
+    /// they hold each message in both languages (<c>T(pl, en)</c>); what the checks print is searched in the lab's
+    /// output instead (<see cref="EnglishLines"/>).
+    /// </summary>
+    private static IEnumerable<string> EnglishSentences(string lab)
+    {
+        foreach (string file in Directory.GetFiles(lab, "*", SearchOption.AllDirectories).Where(f => !IsBuildOutput(lab, f)))
+        {
+            string relative = Path.GetRelativePath(lab, file).Replace('\\', '/');
+            string name = Path.GetFileName(file);
+            if (name.EndsWith(".json", StringComparison.Ordinal))
+            {
+                continue;
+            }
+
+            bool check = relative.StartsWith("tests/", StringComparison.Ordinal) && name.EndsWith(".cs", StringComparison.Ordinal);
+            string text = File.ReadAllText(file);
+            IEnumerable<string> parts = name.EndsWith(".md", StringComparison.Ordinal)
+                ? Regex.Split(Regex.Replace(text, "(?s)```.*?```", ""), @"\n\s*\n").Select(p => Regex.Replace(p, "`[^`]*`", ""))
+                : Regex.Matches(text, @"(?s)//[^\n]*|/\*.*?\*/|<!--.*?-->|""(?:[^""\\\n]|\\.)*""").Select(m => m.Value);
+            foreach (string part in parts.Where(p => !check || !p.StartsWith('"')))
+            {
+                if (IsEnglish(Regex.Replace(part, @"(?s)<c>.*?</c>|<see [^>]*/>|\{[^{}]*\}", "")))
+                {
+                    yield return $"{relative}: {Regex.Replace(part.Trim(), @"\s+", " ")}";
+                }
+            }
+        }
+    }
+
+    /// <summary>The lines of a lab's output, other than the test platform's and the build's own, that read as English.</summary>
+    private static IEnumerable<string> EnglishLines(string output) =>
+        output.Split('\n').Where(l => !RunnerLine().IsMatch(l)).Where(l => IsEnglish(Regex.Replace(l, @"^\s*(Passed|Failed|Skipped) ", ""))).Select(l => l.Trim());
+
+    private static bool IsEnglish(string text) =>
+        EnglishWord().Matches(text).Select(m => m.Value.ToLowerInvariant()).Distinct().Count() >= 2;
+
+    /// <summary>Common English words that are not Polish words ("to", "do", "one" are).</summary>
+    [GeneratedRegex(@"\b(the|is|of|and|with|your|this|that|are|for|from|its|which|when|what|each|every|not|was|has)\b", RegexOptions.IgnoreCase)]
+    private static partial Regex EnglishWord();
+
+    /// <summary>The test platform's and the build's own lines (in English whatever the lab's language).</summary>
+    [GeneratedRegex(@"^\s*(Total tests|Total time|Test Run|A total of|Starting test execution|Results File|Error Message|Stack Trace|Standard Output Messages|Test run for|VSTest version|Microsoft \(R\)|Copyright|Determining projects|Restored |Build succeeded|Time Elapsed|\d+ Warning|\d+ Error|.* -> /)")]
+    private static partial Regex RunnerLine();
 
     /// <summary>A new folder under the feed's root whose Directory.Build.props and Directory.Packages.props break any project that inherits them.</summary>
     private string TrappedFolder(string name)

@@ -19,7 +19,11 @@ namespace MyLab;
 #endif
 internal static class BuildWarnings
 {
+#if (en)
     /// <summary>Prints one line per warning; returns how many there are (0 where the build left no list).</summary>
+#else
+    /// <summary>Wypisuje po wierszu na ostrzeżenie; zwraca ich liczbę (0, gdy budowanie nie zostawiło listy).</summary>
+#endif
     public static int Report(TextWriter output)
     {
         string path = Path.Combine(AppContext.BaseDirectory, "build-warnings.sarif");
@@ -50,7 +54,12 @@ internal static class BuildWarnings
         }
         catch (Exception e) when (e is JsonException or KeyNotFoundException or InvalidOperationException or IOException)
         {
-            return 0; // a list half written by a build still running: nothing to say
+#if (en)
+            // a list half written by a build still running: nothing to say
+#else
+            // lista w połowie zapisana przez trwające budowanie: nie ma czego wypisać
+#endif
+            return 0;
         }
 
         foreach (string line in lines)
@@ -61,7 +70,11 @@ internal static class BuildWarnings
         return lines.Count;
     }
 
+#if (en)
     /// <summary>A warning the lab explains, as one line; null for any other.</summary>
+#else
+    /// <summary>Ostrzeżenie, które laboratorium objaśnia, jako jeden wiersz; null dla każdego innego.</summary>
+#endif
     private static string? Line(JsonElement result)
     {
         string rule = result.TryGetProperty("ruleId", out JsonElement id) ? id.GetString() ?? "" : "";
@@ -107,7 +120,11 @@ internal static class BuildWarnings
 #endif
     }
 
+#if (en)
     /// <summary>The first name in quotes in the compiler's message ('licznik'), with its quotes; null without one.</summary>
+#else
+    /// <summary>Pierwsza nazwa w apostrofach w komunikacie kompilatora ('licznik'), z apostrofami; null, gdy jej nie ma.</summary>
+#endif
     private static string? Quoted(string message)
     {
         int open = message.IndexOf('\'', StringComparison.Ordinal);

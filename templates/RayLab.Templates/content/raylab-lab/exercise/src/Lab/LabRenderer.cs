@@ -20,7 +20,7 @@ public static class LabRenderer
 #if (en)
     /// <summary>The colour the ray sees (Lab I: the nearest sphere's colour × I_a, or the background).</summary>
 #else
-    /// <summary>Kolor, który widzi promień (Lab I: kolor najbliższej kuli × I_a albo tło).</summary>
+    /// <summary>Kolor, który widzi promień (laboratorium I: kolor najbliższej kuli × I_a albo tło).</summary>
 #endif
     public static LightIntensity Trace(Scene scene, LabCamera camera, Ray ray)
     {

@@ -73,7 +73,11 @@ internal static class Program
 
             if (!args.Contains("check"))
             {
+#if (en)
                 // The pictures need every part, written and allowed: say that none was made, and what stands in the way.
+#else
+                // Do obrazów potrzebne są wszystkie części, napisane i dozwolone: powiedz, że żaden nie powstał, i co przeszkadza.
+#endif
 #if (en)
                 string[] why = [.. new[] { missing > 0 ? $"missing: {string.Join(", ", toWrite)}" : "", throwing.Length > 0 ? $"throwing an exception: {string.Join(", ", throwing)}" : "",
                     refused > 0 ? "uses of what the lab does not allow (above)" : "" }.Where(p => p.Length > 0)];
@@ -117,7 +121,11 @@ internal static class Program
         var adaptive = new LabAdaptiveSampler(maxDepth: 3, contrast: 0.05);
         Directory.CreateDirectory("out");
 
+#if (en)
         // The first render of a run pays for the JIT: a small one first, timed apart and named.
+#else
+        // Pierwsze renderowanie płaci za kompilację JIT: najpierw małe, mierzone osobno i nazwane.
+#endif
         var warmUp = Stopwatch.StartNew();
         Watched("80×60", "orthographic", () => LabRenderer.Render(scene, TwoSpheres.Orthographic(), adaptive, new LabImage(80, 60)));
         Watched("80×60", "perspective", () => LabRenderer.Render(scene, TwoSpheres.Perspective(), adaptive, new LabImage(80, 60)));
@@ -135,7 +143,11 @@ internal static class Program
             double ms = clock.Elapsed.TotalMilliseconds;
             string path = Path.Combine("out", $"two-spheres-{name}.png");
             image.Bitmap.SaveAsPng(path);
+#if (en)
             // One line per render, which raylab grade reads (the camera and method names are the grader's keys).
+#else
+            // Jeden wiersz na renderowanie, który czyta raylab grade (nazwy kamery i metody są kluczami oceniającego).
+#endif
 #if (en)
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{name,-12} adaptive {rays,10:N0} rays ({(double)rays / (nx * ny),5:F2} per pixel) {ms,8:F1} ms   {path}"));
 #else
@@ -143,7 +155,12 @@ internal static class Program
 #endif
             if (name == "perspective")
             {
-                image.Bitmap.SaveAsJpeg(Path.Combine("out", "obrazkoncowy.jpg")); // 2.2: the lab's own file name
+#if (en)
+                // 2.2: the lab's own file name
+#else
+                // 2.2: nazwa pliku z instrukcji
+#endif
+                image.Bitmap.SaveAsJpeg(Path.Combine("out", "obrazkoncowy.jpg"));
             }
         }
 
@@ -154,11 +171,19 @@ internal static class Program
 #endif
     }
 
+#if (en)
     /// <summary>
     /// Runs one render (<paramref name="size"/>, with the <paramref name="camera"/> camera) with the time limit (60 s,
     /// or LAB_TIME_LIMIT_S seconds): past it the run stops with exit code 1 and says which render did not finish,
     /// instead of going silent.
     /// </summary>
+#else
+    /// <summary>
+    /// Wykonuje jedno renderowanie (<paramref name="size"/>, kamerą <paramref name="camera"/>) z limitem czasu (60 s
+    /// albo LAB_TIME_LIMIT_S sekund): po nim program kończy się kodem 1 i mówi, które renderowanie się nie skończyło,
+    /// zamiast milczeć.
+    /// </summary>
+#endif
     private static long Watched(string size, string camera, Func<long> render)
     {
         TimeSpan limit = double.TryParse(Environment.GetEnvironmentVariable("LAB_TIME_LIMIT_S"), NumberStyles.Float, CultureInfo.InvariantCulture, out double seconds) && seconds > 0

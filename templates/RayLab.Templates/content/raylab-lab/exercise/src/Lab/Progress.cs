@@ -10,7 +10,11 @@ namespace MyLab;
 #endif
 internal static class Progress
 {
+#if (en)
     /// <summary>Where a section stands: written, still to write, or written and throwing another exception.</summary>
+#else
+    /// <summary>Stan sekcji: napisana, jeszcze do napisania albo napisana, ale rzuca inny wyjątek.</summary>
+#endif
     public enum State
     {
         Written,
@@ -18,11 +22,19 @@ internal static class Progress
         Throws,
     }
 
+#if (en)
     /// <summary>
     /// Tries each section's classes on a tiny input, in the lab's order. <c>Detail</c>: for a section still to write,
     /// the method to write (or the other section it waits for); for one that throws, the exception and where in your
     /// code; null for a written one.
     /// </summary>
+#else
+    /// <summary>
+    /// Wywołuje klasy każdej sekcji na małym przykładzie, w kolejności instrukcji. <c>Detail</c>: dla sekcji jeszcze do
+    /// napisania metoda do napisania (albo inna sekcja, na którą czeka); dla rzucającej wyjątek wyjątek i miejsce w
+    /// Twoim kodzie; null dla napisanej.
+    /// </summary>
+#endif
     public static List<(string Id, string Title, string Classes, State State, string? Detail)> Probe()
     {
         var scene = new Scene([new Sphere(new Double3(0, 0, 0), 1, new Intensity(1, 0, 0))], new Intensity(0, 0, 1), Intensity.White);
@@ -58,8 +70,13 @@ internal static class Progress
                     continue;
                 }
 
+#if (en)
                 // Another section's NotImplementedException (section 5's probe needs LabImage and LightIntensity): this
                 // section waits for that one, which the detail says, rather than look unwritten itself.
+#else
+                // NotImplementedException innej sekcji (sonda sekcji 5 potrzebuje LabImage i LightIntensity): ta sekcja
+                // czeka na tamtą, co mówi opis, zamiast wyglądać na nienapisaną.
+#endif
                 string own = ToWrite.Section(id, "").Message;
                 string other = thrown.Message.Split(' ')[0];
 #if (en)
@@ -76,7 +93,11 @@ internal static class Progress
         return states;
     }
 
+#if (en)
     /// <summary>Prints one line per section; returns each section's state (<see cref="Probe"/>).</summary>
+#else
+    /// <summary>Wypisuje po wierszu na sekcję; zwraca stan każdej sekcji (<see cref="Probe"/>).</summary>
+#endif
     public static List<(string Id, string Title, string Classes, State State, string? Detail)> Report(TextWriter output)
     {
         var states = Probe();
@@ -111,6 +132,7 @@ internal static class Progress
         return states;
     }
 
+#if (en)
     /// <summary>
     /// 4.1.4's pixel: cut by a hard edge, which a recursion without its depth limit splits for ever. It throws an
     /// exception that says so at the first point off the 1/16-pixel grid (a square deeper than the default MaxDepth
@@ -118,6 +140,15 @@ internal static class Progress
     /// stack: before the squares are too small for a double to hold a new point, and such a recursion goes on
     /// without tracing one until the stack overflows.
     /// </summary>
+#else
+    /// <summary>
+    /// Piksel sekcji 4.1.4: przecięty ostrą krawędzią, którą rekurencja bez limitu głębokości dzieli bez końca. Rzuca
+    /// wyjątek, który to mówi, przy pierwszym punkcie poza siatką co 1/16 piksela (kwadrat głębszy niż domyślne
+    /// MaxDepth 3, którego kwadraty mają boki 1/8 lub więcej), po 1024 promieniach (głębokość 3 potrzebuje najwyżej 81)
+    /// albo blisko końca stosu: zanim kwadraty staną się za małe, by double pomieścił nowy punkt, bo wtedy taka
+    /// rekurencja trwa bez śledzenia promieni, aż stos się przepełni.
+    /// </summary>
+#endif
     private static Func<double, double, LightIntensity> Edge()
     {
         static bool OnGrid(double v) => Math.Abs((v * 16) - Math.Round(v * 16)) < 1e-9;
@@ -146,7 +177,11 @@ internal static class Progress
         };
     }
 
+#if (en)
     // Section 5 on its own: a camera and a sampler that need none of the other sections.
+#else
+    // Sekcja 5 osobno: kamera i próbkowanie, które nie potrzebują żadnej innej sekcji.
+#endif
     private sealed class ProbeCamera : LabCamera
     {
         public override Window GetWindow(int nx, int ny) => new(-1, -1, 1, 1);
@@ -178,7 +213,11 @@ internal static class Progress
 #endif
 internal static class OwnCode
 {
+#if (en)
     /// <summary>Prints one line per refused use; returns how many there are (0 where the list is missing).</summary>
+#else
+    /// <summary>Wypisuje po wierszu na niedozwolone użycie; zwraca ich liczbę (0, gdy brak listy).</summary>
+#endif
     public static int Report(TextWriter output)
     {
         string list = Path.Combine(AppContext.BaseDirectory, "uses.json");

@@ -17,7 +17,11 @@ namespace MyLab;
 #endif
 internal static class YourCode
 {
+#if (en)
     /// <summary>The exception your code threw, out of the wrappers a loop puts around it (Parallel.For's AggregateException).</summary>
+#else
+    /// <summary>Wyjątek rzucony przez Twój kod, wyjęty z opakowań, w które wkłada go pętla (AggregateException z Parallel.For).</summary>
+#endif
     public static Exception Unwrapped(Exception e)
     {
         while (true)
@@ -36,14 +40,22 @@ internal static class YourCode
         }
     }
 
+#if (en)
     /// <summary>"Type: message (src/Lab/File.cs:line, Class.Method)" for an exception your code threw.</summary>
+#else
+    /// <summary>„Typ: komunikat (src/Lab/Plik.cs:wiersz, Klasa.Metoda)” dla wyjątku rzuconego przez Twój kod.</summary>
+#endif
     public static string Describe(Exception e)
     {
         Exception thrown = Unwrapped(e);
         return $"{thrown.GetType().Name}: {thrown.Message} ({Where(thrown)})";
     }
 
+#if (en)
     /// <summary>The first frame of the exception's stack in this project, as "src/Lab/File.cs:line, Class.Method".</summary>
+#else
+    /// <summary>Pierwsza ramka stosu wyjątku w tym projekcie, jako „src/Lab/Plik.cs:wiersz, Klasa.Metoda”.</summary>
+#endif
     public static string Where(Exception e)
     {
         Assembly yours = typeof(YourCode).Assembly;
@@ -57,12 +69,22 @@ internal static class YourCode
 
             while (type.Name.StartsWith('<') && type.DeclaringType is { } outer)
             {
-                type = outer; // a lambda's or a local function's class: the class it is written in
+#if (en)
+                // a lambda's or a local function's class: the class it is written in
+#else
+                // klasa lambdy albo funkcji lokalnej: klasa, w której ją napisano
+#endif
+                type = outer;
             }
 
             if (type == typeof(Progress))
             {
-                continue; // a probe's own function, which your code called: the place is your code's frame below it
+#if (en)
+                // a probe's own function, which your code called: the place is your code's frame below it
+#else
+                // funkcja samej sondy, którą wywołał Twój kod: miejscem jest ramka Twojego kodu pod nią
+#endif
+                continue;
             }
 
             string name = method.Name.StartsWith('<') ? method.Name[1..method.Name.IndexOf('>', StringComparison.Ordinal)]

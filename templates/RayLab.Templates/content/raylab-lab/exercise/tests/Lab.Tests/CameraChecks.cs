@@ -4,7 +4,11 @@ using static MyLab.Tests.Check;
 
 namespace MyLab.Tests;
 
+#if (en)
 /// <summary>3, 3.1, 3.2: your cameras' frame, window and rays against RayLab's cameras with the same settings.</summary>
+#else
+/// <summary>3, 3.1, 3.2: baza, okno i promienie Twoich kamer wobec kamer RayLab o tych samych ustawieniach.</summary>
+#endif
 public sealed class CameraChecks(ITestOutputHelper output)
 {
     private const double Tolerance = 1e-9;
@@ -12,7 +16,11 @@ public sealed class CameraChecks(ITestOutputHelper output)
     private static readonly (int X, int Y, double Sx, double Sy)[] Points =
         [(0, 0, 0.5, 0.5), (799, 599, 0.5, 0.5), (400, 300, 0.5, 0.5), (123, 456, 0.5, 0.5), (0, 0, 0, 0), (799, 599, 1, 1), (250, 80, 0.25, 0.75)];
 
+#if (en)
     /// <summary>Cameras of each kind: the lab's, a non-default up and s, an off-axis window.</summary>
+#else
+    /// <summary>Kamery każdego rodzaju: z instrukcji, z innym up i s, z oknem niewyśrodkowanym.</summary>
+#endif
     private static IEnumerable<(string Name, LabCamera Camera)> Cameras(bool perspective)
     {
         if (perspective)
@@ -122,7 +130,12 @@ public sealed class CameraChecks(ITestOutputHelper output)
             {
                 Ray expected = plane.GetPixelRay(x, y, sx, sy), actual = camera.GetRay(x, y, 800, 600, sx, sy);
                 Double3 d = Double3.Normalize(expected.Direction), da = Double3.Normalize(actual.Direction);
-                Double3 o = expected.Origin, oa = actual.Origin; // perspective: e; orthographic: the point p on the window
+#if (en)
+                // perspective: e; orthographic: the point p on the window
+#else
+                // perspektywiczna: e; ortogonalna: punkt p na oknie
+#endif
+                Double3 o = expected.Origin, oa = actual.Origin;
                 string where = F($"{T("piksel", "pixel")} ({x}, {y}), {T("punkt", "point")} ({sx}, {sy})");
                 if ((o - oa).Length > Tolerance * Math.Max(1, o.Length) || (d - da).Length > Tolerance)
                 {

@@ -3,7 +3,11 @@ using static MyLab.Tests.Check;
 
 namespace MyLab.Tests;
 
+#if (en)
 /// <summary>2.1: LightIntensity against RayLab's Intensity on the same numbers.</summary>
+#else
+/// <summary>2.1: LightIntensity wobec Intensity z RayLab na tych samych liczbach.</summary>
+#endif
 public sealed class IntensityChecks(ITestOutputHelper output)
 {
     private static readonly double[][] Inputs = [[0.5, 0.25, 0.125], [-0.5, 0.3, 2], [0, 0, 0], [1, 1, 1], [0.9, 0.2, 0.2]];
@@ -57,8 +61,8 @@ public sealed class IntensityChecks(ITestOutputHelper output)
         {
             string local = part.Replace(".", ",", StringComparison.Ordinal);
             Assert.True(text.Contains(part, StringComparison.Ordinal) || text.Contains(local, StringComparison.Ordinal),
-                T($"Instrukcja: natężenie da się wypisać (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() dało \"{text}\", bez {part}.",
-                  $"The lab: an intensity can be printed (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() gave \"{text}\", without {part}."));
+                T($"Instrukcja: natężenie da się wypisać (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() dało \"{text}\", bez {part} ({Source(typeof(LightIntensity), nameof(LightIntensity.ToString))}).",
+                  $"The lab: an intensity can be printed (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() gave \"{text}\", without {part} ({Source(typeof(LightIntensity), nameof(LightIntensity.ToString))})."));
         }
 
         output.WriteLine($"ToString(): {text}");

@@ -6,7 +6,11 @@ using static MyLab.Tests.Check;
 
 namespace MyLab.Tests;
 
+#if (en)
 /// <summary>4.1.1–4.1.4: your sampling methods against RayLab's.</summary>
+#else
+/// <summary>4.1.1–4.1.4: Twoje metody próbkowania wobec metod RayLab.</summary>
+#endif
 public sealed class SamplingChecks(ITestOutputHelper output)
 {
     private const int Pixels = 2000;
@@ -119,7 +123,11 @@ public sealed class SamplingChecks(ITestOutputHelper output)
     [InlineData("orthographic")]
     public void AdaptivePixels(string cameraName) => Run(output, () => _where, () =>
     {
+#if (en)
         // A small picture of the two spheres, so that many of its pixels lie on an edge; every pixel compared.
+#else
+        // Mały obraz dwóch kul, żeby wiele jego pikseli leżało na krawędzi; porównany każdy piksel.
+#endif
         const int width = 48, height = 36;
         LabCamera settings = cameraName == "perspective" ? Perspective() : Orthographic();
         Camera camera = Oracle(settings);
@@ -137,9 +145,16 @@ public sealed class SamplingChecks(ITestOutputHelper output)
                 int calls = 0;
                 LightIntensity value = sampler.Pixel((sx, sy) =>
                 {
+                    StopIfPastLimit();
+#if (en)
                     // A recursion that does not stop: an exception that says so at its first point past depth 3, before
                     // the check's thread runs out of stack (within some 50 levels the squares are too small for a double
                     // to hold a new point, and such a recursion goes on without tracing one).
+#else
+                    // Rekurencja, która się nie zatrzymuje: wyjątek, który to mówi, przy jej pierwszym punkcie poniżej
+                    // głębokości 3, zanim wątkowi sprawdzenia skończy się stos (po jakichś 50 poziomach kwadraty są za małe,
+                    // by double pomieścił nowy punkt, a taka rekurencja trwa dalej bez śledzenia promieni).
+#endif
                     if (!OnDepth3Grid(sx) || !OnDepth3Grid(sy))
                     {
                         throw new InvalidOperationException(T(
@@ -180,11 +195,19 @@ public sealed class SamplingChecks(ITestOutputHelper output)
 
     private string _where = T("przed pierwszym pikselem", "before the first pixel");
 
+#if (en)
     /// <summary>
     /// Whether a point's coordinate can belong to a square of depth 0–3: those have sides of 1/8 pixel or more, so
     /// their corners and centres lie on the 1/16-pixel grid. check's probe (src/Lab/Progress.cs) keeps its own copy of
     /// this guard, for the reason <see cref="Check.WhereInYourCode"/> gives.
     /// </summary>
+#else
+    /// <summary>
+    /// Czy współrzędna punktu może należeć do kwadratu głębokości 0–3: te mają boki 1/8 piksela lub więcej, więc ich
+    /// rogi i środki leżą na siatce co 1/16 piksela. Sonda polecenia check (src/Lab/Progress.cs) ma własną kopię tego
+    /// warunku, z powodu, który podaje <see cref="Check.WhereInYourCode"/>.
+    /// </summary>
+#endif
     private static bool OnDepth3Grid(double v) => Math.Abs((v * 16) - Math.Round(v * 16)) < 1e-9;
 
     private static void InPixel(string section, int pixel, double x, double y)

@@ -4,13 +4,24 @@ using static MyLab.Tests.Check;
 
 namespace MyLab.Tests;
 
+#if (en)
 /// <summary>5: the render loop, and the two-sphere pictures against RayLab's renders and the exact image.</summary>
+#else
+/// <summary>5: pętla renderowania i obrazy dwóch kul wobec renderowań RayLab i dokładnego obrazu.</summary>
+#endif
 public sealed class TwoSpheresChecks(ITestOutputHelper output)
 {
+#if (en)
     /// <summary>
     /// How far your adaptive picture may be from the exact image: RayLab's own adaptive at the same settings
     /// (depth 0–3, contrast 0.05, quincunx) plus this margin, in RMSE levels and in FLIP.
     /// </summary>
+#else
+    /// <summary>
+    /// Jak daleko Twój obraz adaptacyjny może być od dokładnego: tyle co adaptacyjne RayLab przy tych samych
+    /// ustawieniach (głębokość 0–3, kontrast 0.05, quincunx) plus ten margines, w poziomach RMSE i we FLIP.
+    /// </summary>
+#endif
     private const double RmseMargin = 0.25, FlipMargin = 0.002;
 
     public static TheoryData<string> CameraNames => ["orthographic", "perspective"];
@@ -94,23 +105,43 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
             F($"5 Task ({cameraName}): the two-sphere picture is too far from the exact one: {yours}; RayLab's adaptive at the same settings: {theirs}; allowed RMSE ≤ {oracleRmse + RmseMargin:F3}, FLIP ≤ {oracleFlip + FlipMargin:F4}. See the checks of 3.x and 4.1.4 first.")));
     }
 
+#if (en)
     /// <summary>One point, the pixel's centre.</summary>
+#else
+    /// <summary>Jeden punkt, środek piksela.</summary>
+#endif
     private sealed class CentreSampler : ILabSampler
     {
         public int SamplesPerPixel => 1;
 
-        public (double X, double Y)[] GetSamples(Random random) => [(0.5, 0.5)];
+        public (double X, double Y)[] GetSamples(Random random)
+        {
+            StopIfPastLimit();
+            return [(0.5, 0.5)];
+        }
     }
 
+#if (en)
     /// <summary>n points drawn from the loop's generator.</summary>
+#else
+    /// <summary>n punktów losowanych z generatora pętli.</summary>
+#endif
     private sealed class DrawingSampler(int n) : ILabSampler
     {
         public int SamplesPerPixel => n;
 
-        public (double X, double Y)[] GetSamples(Random random) => [.. Enumerable.Range(0, n).Select(_ => (random.NextDouble(), random.NextDouble()))];
+        public (double X, double Y)[] GetSamples(Random random)
+        {
+            StopIfPastLimit();
+            return [.. Enumerable.Range(0, n).Select(_ => (random.NextDouble(), random.NextDouble()))];
+        }
     }
 
+#if (en)
     /// <summary>Your camera, remembering the last pixel asked for (a time limit names it).</summary>
+#else
+    /// <summary>Twoja kamera, która pamięta ostatni żądany piksel (wskazuje go limit czasu).</summary>
+#endif
     private sealed class WatchedCamera : LabCamera
     {
         private readonly LabCamera _camera;
@@ -136,6 +167,7 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
 
         public override Ray GetRay(int x, int y, int nx, int ny, double sx = 0.5, double sy = 0.5)
         {
+            StopIfPastLimit();
             _width = nx;
             Interlocked.Exchange(ref _last, ((long)y * nx) + x);
             return _camera.GetRay(x, y, nx, ny, sx, sy);

@@ -25,7 +25,11 @@ public sealed class UsesChecks(ITestOutputHelper output)
     private static readonly Lazy<IReadOnlyList<UseFinding>> Findings =
         new(() => List.Check(AssemblyUses.Read(typeof(LightIntensity).Assembly.Location)));
 
+#if (en)
     /// <summary>One check per section of the list, named and marked with its section.</summary>
+#else
+    /// <summary>Jedno sprawdzenie na sekcję listy, nazwane i oznaczone swoją sekcją.</summary>
+#endif
     public static IEnumerable<TheoryDataRow<string>> Sections =>
         List.Sections.Values.Distinct(StringComparer.Ordinal).Select(id => new TheoryDataRow<string>(id)
         {
