@@ -98,7 +98,7 @@ public static partial class GradeJob
                 UploadedLab upload = UploadedLab.Unpack(setup.Students[i], Path.Combine(work, "uploads", folders[i]), ZipLimits.Upload);
                 GradedLab lab = upload.Folder is null
                     ? GradeMarks.Refused(upload, row, staging)
-                    : GradeMarks.ReadMessages(BuildAndCheck(setup, sandbox, upload.Folder, row, work, staging, stop));
+                    : BuildAndCheck(setup, sandbox, upload.Folder, row, work, staging, stop);
                 labs[i] = lab;
                 int k = Interlocked.Increment(ref done);
                 lock (stdout)
@@ -250,7 +250,6 @@ public static partial class GradeJob
             // and the next run leaves them out.
             string results = Path.Combine(work, "results-of", row.Folder);
             Directory.CreateDirectory(results);
-            lab.Results = results;
             var checks = Stopwatch.StartNew();
             RunChecks(setup, sandbox, new CheckFolders(checksFolder, results), lab.Log, row, () => lab.Left(setup), cancellation);
             row.Steps["checks"] = checks.Elapsed.TotalSeconds;
@@ -386,7 +385,7 @@ public static partial class GradeJob
 
         ChildRun list = sandbox.Run(folders.Results, log, Min(left(), TimeSpan.FromMinutes(1)), "dotnet",
             ["test", folders.Project, "--no-build", "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}")), .. folders.HostSettings], cancellation,
-            readOnly: [folders.Checks], nested: folders.Launcher is not null);
+            readOnly: [folders.Checks], nested: folders.Nested);
         cancellation.ThrowIfCancellationRequested();
         if (list.TimedOut || list.ExitCode != 0)
         {
@@ -443,7 +442,7 @@ public static partial class GradeJob
             }
 
             args.AddRange(folders.HostSettings);
-            ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation, readOnly: [folders.Checks], nested: folders.Launcher is not null);
+            ChildRun test = sandbox.Run(lab, log, left(), "dotnet", args, cancellation, readOnly: [folders.Checks], nested: folders.Nested);
             cancellation.ThrowIfCancellationRequested();
             if (test.Limit is not SandboxLimit.None and not SandboxLimit.Memory)
             {
@@ -462,7 +461,11 @@ public static partial class GradeJob
             {
                 foreach (CheckResult result in CheckRunFiles.Results(trx))
                 {
-                    row.Checks[result.Display] = result.Outcome == "Passed" ? "Passed" : result.Outcome == "NotExecuted" ? "Skipped" : "Failed";
+                    row.Checks[result.Display] = result.Result;
+                    if (result.Message is not null)
+                    {
+                        row.Messages.TryAdd(result.Display, result.Message);
+                    }
                 }
             }
 
@@ -791,9 +794,6 @@ internal sealed record GradedLab(StudentRow Row, string Path, string Log, string
     /// <summary>Whether it built (and its checks ran): its program runs.</summary>
     public bool Built { get; set; }
 
-    /// <summary>The folder the checks' runs wrote their results (TRX files) in, once they ran; null before.</summary>
-    public string? Results { get; set; }
-
     /// <summary>What is left of the submission's limit.</summary>
     public TimeSpan Left(GradeSetup setup) => setup.Request.SubmissionTimeout - Clock.Elapsed;
 }
@@ -885,6 +885,9 @@ internal sealed record CheckFolders(string Checks, string Results)
 
     /// <summary>The launcher of the test host in a sandbox of its own (<see cref="GradeSandbox.TestHostLauncher"/>), or null.</summary>
     public string? Launcher { get; set; }
+
+    /// <summary>Whether the run's sandbox lets the test host's launcher make its own (one user namespace inside it).</summary>
+    public bool Nested => Launcher is not null;
 
     /// <summary>The arguments that end a <c>dotnet test</c> command: the test platform's dotnet host, the launcher.</summary>
     public IEnumerable<string> HostSettings => Launcher is null ? [] : ["--", $"RunConfiguration.DotNetHostPath={Launcher}"];

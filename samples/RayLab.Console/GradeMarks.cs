@@ -24,26 +24,6 @@ internal static class GradeMarks
         return new GradedLab(row, "", log, folder);
     }
 
-    /// <summary>The first line of each failed check's message, from the TRX files of the checks' runs.</summary>
-    public static GradedLab ReadMessages(GradedLab lab)
-    {
-        string? results = lab.Results;
-        if (results is null || !Directory.Exists(results))
-        {
-            return lab;
-        }
-
-        foreach (string trx in Directory.EnumerateFiles(results, "*.trx", SearchOption.AllDirectories).Order(StringComparer.Ordinal))
-        {
-            foreach (CheckResult result in CheckRunFiles.Results(trx).Where(r => r.Message is not null))
-            {
-                lab.Row.Messages.TryAdd(result.Display, result.Message!);
-            }
-        }
-
-        return lab;
-    }
-
     /// <summary>The row's grade: the points of its sections that pass and of its pictures within the thresholds.</summary>
     public static double Grade(GradeSetup setup, StudentRow row, IEnumerable<string> sections, IEnumerable<string> cameras) =>
         setup.Scheme.Grade(

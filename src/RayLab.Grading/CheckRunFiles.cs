@@ -7,7 +7,19 @@ namespace RayLab.Grading;
 /// <param name="Display">The check's display name (the TRX's <c>testName</c>).</param>
 /// <param name="Outcome">The TRX's outcome: <c>Passed</c>, <c>Failed</c>, <c>NotExecuted</c> (a skipped check), …; <c>Failed</c> where none is given.</param>
 /// <param name="Message">The first non-empty line of its error message, or null for none.</param>
-public sealed record CheckResult(string Display, string Outcome, string? Message);
+public sealed record CheckResult(string Display, string Outcome, string? Message)
+{
+    /// <summary>
+    /// What the outcome counts as: <c>Passed</c>; <c>Skipped</c> for the TRX's <c>NotExecuted</c> (a check skipped, as
+    /// the exercise lab's checks skip a section still to write); <c>Failed</c> for any other outcome.
+    /// </summary>
+    public string Result => Outcome switch
+    {
+        "Passed" => "Passed",
+        "NotExecuted" => "Skipped",
+        _ => "Failed",
+    };
+}
 
 /// <summary>A check the test platform's blame data collector saw start and not finish: the test host hung or crashed in it.</summary>
 /// <param name="FullName">Its fully qualified name, for a <c>--filter</c> that leaves it out of the next run.</param>

@@ -36,6 +36,7 @@ public sealed class CheckRunFilesTests : IDisposable
                 new CheckResult("5 Zadanie", "Failed", null),
             ],
             CheckRunFiles.Results(trx));
+        Assert.Equal(["Passed", "Failed", "Skipped", "Failed"], CheckRunFiles.Results(trx).Select(r => r.Result));
     }
 
     [Fact]
