@@ -8,7 +8,7 @@ namespace RayLab.Cli;
 /// assembly (a reference to the file, not the lab's project: nothing of the lab's MSBuild runs) and run with their
 /// folder read-only, a folder of results the only one the run writes.
 /// </summary>
-internal static class GradeChecks
+public static class GradeChecks
 {
     /// <summary>The folder, inside the checks' folder, the lab's assembly and its data files are copied to.</summary>
     private const string LabFolder = "lab";
@@ -29,6 +29,49 @@ internal static class GradeChecks
 
         string path = Path.Combine(lab, "src", "Lab", "bin", "Debug", "net10.0", Path.GetFileNameWithoutExtension(project) + ".dll");
         return File.Exists(path) && new FileInfo(path).LinkTarget is null ? path : null;
+    }
+
+    /// <summary>Where the checks' build leaves their test assembly, relative to the checks' folder.</summary>
+    public const string TestsOutput = "tests/Lab.Tests/bin/Debug/net10.0/Lab.Tests.dll";
+
+    /// <summary>The checks' built test assembly (<see cref="TestsOutput"/>), or null when their build left none there.</summary>
+    /// <param name="folder">The checks' folder, built.</param>
+    /// <returns>The assembly's path, or null.</returns>
+    public static string? BuiltTests(string folder)
+    {
+        string path = Path.Combine(folder, TestsOutput);
+        return File.Exists(path) ? path : null;
+    }
+
+    /// <summary>
+    /// The options the checks' project gives <c>dotnet test</c> when it is run on the project (the instructor's
+    /// <c>RunSettingsFilePath</c> and <c>VSTestLogger</c>), as options for a run on the built assembly, which reads no
+    /// project: <c>--settings FILE</c> and one <c>--logger</c> for each logger.
+    /// </summary>
+    /// <param name="folder">The checks' folder.</param>
+    /// <returns>The options, none where the project sets neither.</returns>
+    public static IReadOnlyList<string> ProjectTestSettings(string folder)
+    {
+        string directory = Path.Combine(folder, "tests", "Lab.Tests");
+        XElement project = XDocument.Load(Path.Combine(directory, "Lab.Tests.csproj")).Root!;
+        var options = new List<string>();
+        string? settings = project.Descendants("RunSettingsFilePath").LastOrDefault()?.Value.Trim();
+        if (!string.IsNullOrEmpty(settings))
+        {
+            string path = settings.Replace("$(MSBuildThisFileDirectory)", directory + Path.DirectorySeparatorChar, StringComparison.Ordinal);
+            if (File.Exists(path))
+            {
+                options.AddRange(["--settings", path]);
+            }
+        }
+
+        string? loggers = project.Descendants("VSTestLogger").LastOrDefault()?.Value.Trim();
+        foreach (string logger in (loggers ?? "").Split(';', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+        {
+            options.AddRange(["--logger", Uri.UnescapeDataString(logger)]);
+        }
+
+        return options;
     }
 
     /// <summary>

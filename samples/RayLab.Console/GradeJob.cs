@@ -238,10 +238,13 @@ public static partial class GradeJob
                 ["build", Path.Combine("tests", "Lab.Tests"), "-nodeReuse:false", "-p:UseSharedCompilation=false"], cancellation);
             row.Steps["build"] += checksBuild.Elapsed.TotalSeconds;
             cancellation.ThrowIfCancellationRequested();
-            if (checksBuild.TimedOut || checksBuild.ExitCode != 0)
+            string? tests = GradeChecks.BuiltTests(checksFolder);
+            if (checksBuild.TimedOut || checksBuild.ExitCode != 0 || tests is null)
             {
                 row.Problems.Add(checksBuild.TimedOut ? "build time limit" : checksBuild.Limit != SandboxLimit.None ? $"build {GradeSandbox.LimitName(checksBuild.Limit)}" : "checks do not build");
-                row.Detail = checksBuild.TimedOut ? "the build ran past the submission's limit" : FirstErrors(checksBuild.Output, checksFolder);
+                row.Detail = checksBuild.TimedOut ? "the build ran past the submission's limit"
+                    : checksBuild.ExitCode != 0 ? FirstErrors(checksBuild.Output, checksFolder)
+                    : $"the checks' build left no {GradeChecks.TestsOutput}";
                 return lab;
             }
 
@@ -251,7 +254,7 @@ public static partial class GradeJob
             string results = Path.Combine(work, "results-of", row.Folder);
             Directory.CreateDirectory(results);
             var checks = Stopwatch.StartNew();
-            RunChecks(setup, sandbox, new CheckFolders(checksFolder, results), lab.Log, row, () => lab.Left(setup), cancellation);
+            RunChecks(setup, sandbox, new CheckFolders(checksFolder, results, tests), lab.Log, row, () => lab.Left(setup), cancellation);
             row.Steps["checks"] = checks.Elapsed.TotalSeconds;
             lab.Built = true;
             return lab;
@@ -384,7 +387,7 @@ public static partial class GradeJob
         }
 
         ChildRun list = sandbox.Run(folders.Results, log, Min(left(), TimeSpan.FromMinutes(1)), "dotnet",
-            ["test", folders.Project, "--no-build", "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}")), .. folders.HostSettings], cancellation,
+            ["test", .. folders.TestAssemblyArgs, "--list-tests", "--filter", string.Join('|', excluded.Select(n => $"FullyQualifiedName={n}")), .. folders.HostSettings], cancellation,
             readOnly: [folders.Checks], nested: folders.Nested);
         cancellation.ThrowIfCancellationRequested();
         if (list.TimedOut || list.ExitCode != 0)
@@ -434,7 +437,7 @@ public static partial class GradeJob
 
             string lab = folders.Results;
             string results = Path.Combine(lab, $"results-{attempt}");
-            List<string> args = ["test", folders.Project, "--no-build", "--logger", "trx;LogFileName=checks.trx", "--results-directory", results,
+            List<string> args = ["test", .. folders.TestAssemblyArgs, "--logger", "trx;LogFileName=checks.trx", "--results-directory", results,
                 "--blame-hang-timeout", string.Create(CultureInfo.InvariantCulture, $"{(int)Math.Ceiling(setup.Request.CheckTimeout.TotalSeconds)}s"), "--blame-hang-dump-type", "none"];
             if (excluded.Count > 0)
             {
@@ -878,10 +881,15 @@ public readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, st
 /// <summary>Where a submission's checks run: their built folder (read-only to the run) and the folder the run writes, its results.</summary>
 /// <param name="Checks">The checks' folder (<see cref="GradeChecks.Prepare"/>), built.</param>
 /// <param name="Results">The run's writable folder: its home, its TRX files and the test platform's blame data.</param>
-internal sealed record CheckFolders(string Checks, string Results)
+/// <param name="Tests">The checks' built test assembly (<see cref="GradeChecks.BuiltTests"/>).</param>
+internal sealed record CheckFolders(string Checks, string Results, string Tests)
 {
-    /// <summary>The checks' test project.</summary>
-    public string Project => System.IO.Path.Combine(Checks, "tests", "Lab.Tests");
+    /// <summary>
+    /// What names the checks in a <c>dotnet test</c> command: their built assembly (the test platform alone, no MSBuild
+    /// run to find it), with the settings the project gives <c>dotnet test</c> itself: its run settings file and the
+    /// console logger at its verbosity (<see cref="GradeChecks.ProjectTestSettings"/>).
+    /// </summary>
+    public IEnumerable<string> TestAssemblyArgs => [Tests, .. GradeChecks.ProjectTestSettings(Checks)];
 
     /// <summary>The launcher of the test host in a sandbox of its own (<see cref="GradeSandbox.TestHostLauncher"/>), or null.</summary>
     public string? Launcher { get; set; }

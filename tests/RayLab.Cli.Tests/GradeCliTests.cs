@@ -85,6 +85,24 @@ public sealed class GradeCliTests : IDisposable
         Assert.Empty(GradeJob.ListedTests("No test matches the given testcase filter"));
     }
 
+    [Theory]
+    [InlineData("exercise/tests/Lab.Tests", "checks.runsettings")]
+    [InlineData("tests/Lab.Tests", "tests.runsettings")]
+    public void TheChecksRunOnTheirAssemblyWithTheSettingsAndLoggerTheirProjectGivesDotnetTest(string template, string settings)
+    {
+        string tests = Path.Combine(_dir.Path, "tests", "Lab.Tests");
+        Directory.CreateDirectory(tests);
+        string from = Path.Combine(RepoPaths.Root(), "templates", "RayLab.Templates", "content", "raylab-lab", template);
+        File.Copy(Path.Combine(from, "Lab.Tests.csproj"), Path.Combine(tests, "Lab.Tests.csproj"));
+        Assert.Equal(["--logger", "console;verbosity=detailed"], GradeChecks.ProjectTestSettings(_dir.Path));
+        File.Copy(Path.Combine(from, settings), Path.Combine(tests, settings));
+        Assert.Equal(["--settings", Path.Combine(tests, settings), "--logger", "console;verbosity=detailed"], GradeChecks.ProjectTestSettings(_dir.Path));
+        Assert.Null(GradeChecks.BuiltTests(_dir.Path));
+        Directory.CreateDirectory(Path.GetDirectoryName(Path.Combine(_dir.Path, GradeChecks.TestsOutput))!);
+        File.WriteAllText(Path.Combine(_dir.Path, GradeChecks.TestsOutput), "");
+        Assert.Equal(Path.Combine(_dir.Path, GradeChecks.TestsOutput), GradeChecks.BuiltTests(_dir.Path));
+    }
+
     [Fact]
     public void MissingSubmissionsNameTheArgument()
     {
