@@ -89,6 +89,8 @@ public sealed partial class GradeSandbox : IDisposable
     private readonly bool _userScope;
     private readonly bool _tmpfsCopies;
     private readonly string? _etc;
+    private readonly string? _perl;
+    private readonly int _landlock;
     private readonly string _dotnetRoot = "";
     private readonly HashSet<string> _mounted = new(StringComparer.Ordinal);
     private readonly Lock _gate = new();
@@ -110,6 +112,13 @@ public sealed partial class GradeSandbox : IDisposable
         {
             _setpriv = FindOnPath("setpriv");
             _tmpfsCopies = FindOnPath("mount") is not null;
+        }
+
+        // Landlock, which the test host's launcher enters through perl's syscall (perl-base is part of every Debian).
+        if (FindOnPath("perl") is { } perl && perl.StartsWith("/usr/", StringComparison.Ordinal))
+        {
+            _perl = perl;
+            _landlock = LandlockAbi(perl);
         }
 
         // cgroup v2 with a systemd that makes scopes: the memory and process limits hold for a step's processes together.
@@ -167,6 +176,9 @@ public sealed partial class GradeSandbox : IDisposable
                 ProcessMechanism() is { } processes ? $"process limit: {processes}" : "process limit: none",
                 DiskMechanism() is { } disk ? $"disk limit: {disk}" : "disk limit: none",
                 CpuMechanism() is { } cpu ? $"CPU time limit: {cpu}" : "CPU time limit: none",
+                "test host (where a lab's code runs during the checks): a sandbox of its own inside the step's, the checks and results read-only, no user namespaces, the tasks already running hidden from /proc; "
+                    + (_landlock > 0 ? string.Create(CultureInfo.InvariantCulture, $"Landlock (ABI {_landlock}): no ptrace of, and no signal to, any process outside it")
+                        : "no Landlock on this machine: a thread the test platform starts after the test host is reachable through /proc"),
             ];
         }
     }
@@ -465,7 +477,11 @@ public sealed partial class GradeSandbox : IDisposable
     /// <param name="folder">A folder the step sees and the lab's code never writes (the checks').</param>
     /// <param name="readOnly">The folders the test host sees read-only: the checks and the run's results.</param>
     /// <returns>The launcher's path, or null where the commands run without a sandbox.</returns>
-    public string? TestHostLauncher(string folder, IReadOnlyList<string> readOnly)
+    public string? TestHostLauncher(string folder, IReadOnlyList<string> readOnly) =>
+        LauncherOf(folder, readOnly, _bwrap is null ? "" : Path.Combine(_dotnetRoot, "dotnet"));
+
+    /// <summary>The launcher of <see cref="TestHostLauncher"/>, starting <paramref name="host"/> in place of dotnet.</summary>
+    internal string? LauncherOf(string folder, IReadOnlyList<string> readOnly, string host)
     {
         ArgumentException.ThrowIfNullOrEmpty(folder);
         ArgumentNullException.ThrowIfNull(readOnly);
@@ -473,6 +489,15 @@ public sealed partial class GradeSandbox : IDisposable
         {
             return null;
         }
+
+        // Where the kernel has Landlock, the test host enters a domain of its own before it starts: from there no
+        // process outside it can be traced (/proc/ID/mem, environ) or signalled, whenever that process started.
+        string landlock = _landlock > 0 ? $"{Quoted(_perl!)} -e {Quoted(LandlockExec)} -- " : "";
+
+        // A /dev of its own (device nodes bound from outside cannot be opened in a nested user namespace), and a /tmp
+        // and /dev/shm of its own, each no larger than the disk limit, as in the step's view.
+        string size = _limits.DiskMegabytes is { } d ? string.Create(CultureInfo.InvariantCulture, $" --size {(long)d << 20}") : "";
+        string scratch = $" --dev /dev --remount-ro /dev{size} --tmpfs /dev/shm{size} --tmpfs /tmp";
 
         var binds = new StringBuilder();
         foreach (string path in readOnly.Append(_packages).Select(Path.GetFullPath).Distinct())
@@ -489,13 +514,41 @@ public sealed partial class GradeSandbox : IDisposable
             done
             # Not exec: the sandbox dies with this shell, which the test platform stops when a check hangs.
             # shellcheck disable=SC2086
-            {{Quoted(_bwrap)}} --bind / / --tmpfs /tmp{{binds}} $hide --unshare-user --disable-userns --die-with-parent               --setenv HOME /tmp --setenv DOTNET_CLI_HOME /tmp --setenv TMPDIR /tmp -- {{Quoted(Path.Combine(_dotnetRoot, "dotnet"))}} "$@"
+            {{Quoted(_bwrap)}} --bind / /{{scratch}}{{binds}} $hide --unshare-user --disable-userns --die-with-parent               --setenv HOME /tmp --setenv DOTNET_CLI_HOME /tmp --setenv TMPDIR /tmp -- {{landlock}}{{Quoted(host)}} "$@"
             """;
         string launcher = Path.Combine(Directory.CreateDirectory(folder).FullName, "testhost.sh");
         File.WriteAllText(launcher, script.ReplaceLineEndings("\n") + "\n");
         File.SetUnixFileMode(launcher, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute
             | UnixFileMode.GroupRead | UnixFileMode.GroupExecute | UnixFileMode.OtherRead | UnixFileMode.OtherExecute);
         return launcher;
+    }
+
+    /// <summary>
+    /// Perl that enters a Landlock domain and runs its arguments: a ruleset that handles only the making of block
+    /// devices (which nothing needs) and, from ABI 6, scopes signals and abstract Unix sockets to the domain. Any domain
+    /// keeps ptrace, and so /proc/ID/mem, inside it. Syscalls 444 and 446 (landlock_create_ruleset,
+    /// landlock_restrict_self) have these numbers on every architecture; bubblewrap has already set no_new_privs.
+    /// </summary>
+    private const string LandlockExec =
+        "my $v = syscall(444, 0, 0, 1); "
+        + "my $r = $v >= 6 ? pack(\"QQQ\", 2048, 0, 3) : pack(\"Q\", 2048); "
+        + "my $fd = syscall(444, $r, length($r), 0); "
+        + "die \"landlock_create_ruleset: $!\\n\" if $fd < 0; "
+        + "die \"landlock_restrict_self: $!\\n\" if syscall(446, $fd, 0) != 0; "
+        + "exec { $ARGV[0] } @ARGV or die \"exec $ARGV[0]: $!\\n\";";
+
+    /// <summary>The kernel's Landlock ABI version, asked through perl; 0 where it has none.</summary>
+    private static int LandlockAbi(string perl)
+    {
+        try
+        {
+            ChildRun run = Plain(perl, ["-e", "print syscall(444, 0, 0, 1)"]);
+            return run.ExitCode == 0 && int.TryParse(run.Output.Trim(), NumberStyles.Integer, CultureInfo.InvariantCulture, out int abi) && abi > 0 ? abi : 0;
+        }
+        catch (System.ComponentModel.Win32Exception)
+        {
+            return 0;
+        }
     }
 
     private static string Quoted(string text) => "'" + text.Replace("'", "'\\''", StringComparison.Ordinal) + "'";

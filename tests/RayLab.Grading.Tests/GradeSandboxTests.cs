@@ -104,6 +104,33 @@ public sealed class GradeSandboxTests : IDisposable
     }
 
     [Fact]
+    public void ATestHostCannotTraceOrSignalAProcessOfTheTestPlatformStartedAfterIt()
+    {
+        // The step's sandbox runs a test host through the launcher (sh in place of dotnet), then starts a process of its
+        // own, as the test platform may start a thread after its test host: the test host finds its number and tries
+        // to read its environment (what writing its memory through /proc/ID/mem needs too) and to signal it.
+        string checks = Directory.CreateDirectory(_dir.File("checks")).FullName;
+        string results = Directory.CreateDirectory(_dir.File("results")).FullName;
+        using GradeSandbox sandbox = Sandbox(new GradeLimits());
+        if (!sandbox.Mechanisms.Any(m => m.Contains("Landlock (ABI", StringComparison.Ordinal)))
+        {
+            Assert.Skip($"no Landlock here: {sandbox.Mechanisms[^1]}");
+        }
+
+        string launcher = sandbox.LauncherOf(Path.Combine(checks, ".testhost"), [checks, results], "/bin/sh")!;
+        string host = "while [ ! -s target.pid ]; do sleep 0.1; done; p=$(cat target.pid); "
+            + "if grep -aq PLATFORM_SECRET /proc/$p/environ; then echo READS; else echo NO-READ; fi; "
+            + "if kill -0 $p 2>/dev/null; then echo SIGNALS; else echo NO-SIGNAL; fi";
+        ChildRun run = sandbox.Run(results, null, TimeSpan.FromMinutes(1), "sh",
+            ["-c", $"{launcher} -c '{host}' & h=$!; sleep 1; PLATFORM_SECRET=1 sleep 30 & t=$!; echo $t > target.pid; wait $h; kill $t"],
+            TestContext.Current.CancellationToken, readOnly: [checks], nested: true);
+
+        Assert.True(run.ExitCode == 0, $"exit {run.ExitCode}: {run.Output}");
+        Assert.Contains("NO-READ", run.Output, StringComparison.Ordinal);
+        Assert.Contains("NO-SIGNAL", run.Output, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void EachLimitNamesItsMechanism()
     {
         using GradeSandbox sandbox = Sandbox(new GradeLimits { MemoryMegabytes = 512, Processes = 256, DiskMegabytes = 128, CpuSeconds = 60 });
