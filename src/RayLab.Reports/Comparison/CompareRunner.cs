@@ -136,8 +136,9 @@ public static class CompareRunner
         ImageError error = clock.Time(EightBitError, () => ImageError.Measure(image, exact));
         float[] perPixel = clock.Time(EightBitError, () => ImageError.PerPixel(image, exact));
         FlipResult flip = clock.Time(FlipStage, () => Flip.Compute(exact, image, flipOptions));
-        (double low1, double low2) = clock.Time(LowPass, () => (ErrorLocation.LowPassRmse(image, exact, 1), ErrorLocation.LowPassRmse(image, exact, 2)));
-        ErrorSpectrum spectrum = clock.Time(SpectrumStage, () => ErrorLocation.Spectrum(image, exact));
+        int threads = flipOptions.MaxDegreeOfParallelism;
+        (double low1, double low2) = clock.Time(LowPass, () => (ErrorLocation.LowPassRmse(image, exact, 1, threads), ErrorLocation.LowPassRmse(image, exact, 2, threads)));
+        ErrorSpectrum spectrum = clock.Time(SpectrumStage, () => ErrorLocation.Spectrum(image, exact, threads));
         Image heat = clock.Time(ErrorImages, () => HeatMap.Render(perPixel, image.Width, image.Height, "levels"));
         Image flipMap = clock.Time(ErrorImages, () => FlipMap.RenderWithLegend(flip));
         clock.Time(ImageFiles, () =>

@@ -132,6 +132,15 @@ public class ErrorLocationTests
     [InlineData(8)]
     [InlineData(12)]
     [InlineData(37)]
+    [InlineData(2)]
+    [InlineData(3)]
+    [InlineData(6)]
+    [InlineData(60)]
+    [InlineData(270)]
+    [InlineData(480)]
+    [InlineData(1080)]
+    [InlineData(1920)]
+    [InlineData(74)]
     public void TheFourierTransformIsTheSumItDefines(int n)
     {
         var random = new Random(n);
