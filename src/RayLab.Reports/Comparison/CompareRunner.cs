@@ -92,10 +92,12 @@ public static class CompareRunner
 
         var image = new Image(width, height);
         var results = new CompareResult[cases.Count];
+        var estimate = new CompareEstimate(cases, settings.Repeats);
         for (int i = 0; i < cases.Count; i++)
         {
             CompareCase c = cases[i] ?? throw new ArgumentException($"cases[{i}] is null", nameof(cases));
             (RenderStatistics stats, List<TimeSpan> times) = TimeRenders(c, renderer, scene, camera, image, settings.Repeats, progress, clock, cancellation);
+            long measuring = System.Diagnostics.Stopwatch.GetTimestamp();
             results[i] = MeasureImage(c, image, exact, clock, flipOptions, (images, errors, flipMaps)) with
             {
                 Rays = stats.PrimaryRays,
@@ -106,6 +108,8 @@ public static class CompareRunner
                 Retimed = times.Count > settings.Repeats,
                 TimedOnce = times.Count < settings.Repeats,
             };
+            estimate.Done(i, Median([.. times]), System.Diagnostics.Stopwatch.GetElapsedTime(measuring), (long)width * height);
+            progress.Setting(i + 1, cases.Count, clock.Elapsed, estimate.SecondsLeft(i, (long)width * height) is { } left ? TimeSpan.FromSeconds(left) : null);
         }
 
         return new CompareMeasurement(exactStats, results);
