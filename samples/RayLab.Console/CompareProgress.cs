@@ -54,6 +54,20 @@ public abstract class CompareProgress : ICompareProgress
     {
     }
 
+    /// <summary>Tells that a setting is finished, with the estimate of the time left (<see cref="ICompareProgress.Setting"/>).</summary>
+    /// <param name="done">Settings finished.</param>
+    /// <param name="settings">Settings in all.</param>
+    /// <param name="elapsed">The run's time so far.</param>
+    /// <param name="left">The time left at the pace measured so far; null where nothing has been measured yet.</param>
+    public virtual void Setting(int done, int settings, TimeSpan elapsed, TimeSpan? left)
+    {
+    }
+
+    /// <summary>", about 73 s left (at the pace measured so far)", or nothing without an estimate.</summary>
+    private static string LeftText(TimeSpan? left) => left is { } l
+        ? FormattableString.Invariant($", about {l.TotalSeconds:F0} s left (at the pace measured so far)")
+        : "";
+
     private sealed class Silent : CompareProgress
     {
         public override RenderStatistics Render(string label, Func<RenderStatistics> render) => render();
@@ -64,6 +78,9 @@ public abstract class CompareProgress : ICompareProgress
         private int _done;
 
         public override void Skipped(int renders) => _done += renders;
+
+        public override void Setting(int done, int settings, TimeSpan elapsed, TimeSpan? left) =>
+            writer.WriteLine(FormattableString.Invariant($"[{done}/{settings} settings] {elapsed.TotalSeconds:F1} s so far{LeftText(left)}"));
 
         public override RenderStatistics Render(string label, Func<RenderStatistics> render)
         {
@@ -96,5 +113,8 @@ public abstract class CompareProgress : ICompareProgress
         }
 
         public override void Skipped(int renders) => _all.Increment(renders);
+
+        public override void Setting(int done, int settings, TimeSpan elapsed, TimeSpan? left) =>
+            _all.Description = Markup.Escape(FormattableString.Invariant($"{done}/{settings} settings{LeftText(left)}"));
     }
 }

@@ -245,7 +245,7 @@ public static class RenderJob
         }
     }
 
-    private static void CheckOutputPath(string path, string option, bool requireImageFormat)
+    internal static void CheckOutputPath(string path, string option, bool requireImageFormat)
     {
         if (string.IsNullOrWhiteSpace(path))
         {

@@ -148,6 +148,36 @@ public sealed partial class CompareTests : IDisposable
     }
 
     [Fact]
+    public void StatsSaysWhereTheTimeWentAndThePageShowsIt()
+    {
+        string scene = WriteScene(Scene);
+        string report = _dir.File("report");
+        string stats = _dir.File("stats.json");
+
+        (int code, _, string stderr) = Run("compare", scene, "--out", report, "--budgets", "1,4", "--repeats", "1",
+            "--samplers", "jittered,adaptive", "--max-depths", "0,1", "--contrasts", "0.1", "--stats", stats);
+
+        Assert.Equal("", stderr);
+        Assert.Equal(0, code);
+        using var json = System.Text.Json.JsonDocument.Parse(File.ReadAllText(stats));
+        System.Text.Json.JsonElement root = json.RootElement;
+        Assert.Equal(5, root.GetProperty("settings").GetInt32()); // jittered 1, 4; adaptive depth 0, 1; guarded depth 0, 1 at the one contrast
+        Dictionary<string, (double Seconds, int Calls)> stages = root.GetProperty("stages").EnumerateArray()
+            .ToDictionary(s => s.GetProperty("name").GetString()!, s => (s.GetProperty("seconds").GetDouble(), s.GetProperty("calls").GetInt32()));
+        string[] expected = ["exact image", "renders", "8-bit error", "FLIP", "low-pass error", "error spectrum", "error images", "image files", "tables", "charts", "report into place"];
+        Assert.Equal(expected.Order(StringComparer.Ordinal), stages.Keys.Order(StringComparer.Ordinal));
+        Assert.Equal(5, stages["FLIP"].Calls);
+        Assert.Equal(5, stages["error spectrum"].Calls);
+        Assert.True(stages["renders"].Calls >= 5, "at least one render a setting");
+        Assert.True(stages.Values.Sum(s => s.Seconds) <= root.GetProperty("totalS").GetDouble() + 0.01, "the stages run one after another, inside the total");
+        string page = File.ReadAllText(Path.Combine(report, "index.html"));
+        Assert.Contains("<h2>Where the time went</h2>", page, StringComparison.Ordinal);
+        Assert.Contains("<td>error spectrum</td>", page, StringComparison.Ordinal);
+        AssertFailsCleanly($"raylab: error: --stats: the folder '{_dir.File("no")}' does not exist", "compare", scene, "--out", _dir.File("other"),
+            "--stats", Path.Combine(_dir.File("no"), "stats.json"));
+    }
+
+    [Fact]
     public void ABadSceneOrOutputFolderIsOneLineAndWritesNothing()
     {
         string scene = WriteScene(Scene);

@@ -39,12 +39,34 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
     /// <summary>The charts' file stems, RMSE's then FLIP's, each against time and against rays (each written as .png and .svg).</summary>
     public static IReadOnlyList<string> ChartStems { get; } = ["error-vs-time", "error-vs-rays", "flip-vs-time", "flip-vs-rays"];
 
+    /// <summary>
+    /// Where the run's time went, shown on <c>index.html</c> (<see cref="WriteTo"/> adds its charts and tables to it
+    /// before it writes the page); null for a report without it.
+    /// </summary>
+    public CompareClock? Clock { get; init; }
+
+    /// <summary>The stage that draws and writes the charts.</summary>
+    internal const string ChartsStage = "charts";
+
+    /// <summary>The stage that writes results.csv and results.md.</summary>
+    internal const string TablesStage = "tables";
+
     /// <summary>Writes results.csv, results.md, the <see cref="ChartStems"/> charts (each .png and .svg) and index.html into <paramref name="folder"/>.</summary>
     /// <param name="folder">An existing folder (the images are already in its <c>images/</c>, <c>errors/</c> and <c>flip/</c>).</param>
     public void WriteTo(string folder)
     {
-        File.WriteAllText(Path.Combine(folder, "results.csv"), Csv());
-        File.WriteAllText(Path.Combine(folder, "results.md"), Markdown());
+        CompareClock clock = Clock ?? new CompareClock();
+        clock.Time(TablesStage, () =>
+        {
+            File.WriteAllText(Path.Combine(folder, "results.csv"), Csv());
+            File.WriteAllText(Path.Combine(folder, "results.md"), Markdown());
+        });
+        clock.Time(ChartsStage, () => WriteCharts(folder));
+        File.WriteAllText(Path.Combine(folder, "index.html"), Html());
+    }
+
+    private void WriteCharts(string folder)
+    {
         Chart(Path.Combine(folder, ChartStems[0]), "RMSE against time", r => r.Time.TotalMilliseconds, "median render time (ms)", Rmse);
         Chart(Path.Combine(folder, ChartStems[1]), "RMSE against rays", r => r.RaysPerPixel, "primary rays per pixel", Rmse);
         Chart(Path.Combine(folder, ChartStems[2]), "FLIP against time", r => r.Time.TotalMilliseconds, "median render time (ms)", MeanFlip);
@@ -57,10 +79,30 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
                     .Select((p, ring) => (X: ErrorSpectrum.Frequency(ring), Y: p))
                     .Where(point => point.X > 0 && point.Y > 0 && !double.IsNaN(point.Y))]))]);
         }
-        File.WriteAllText(Path.Combine(folder, "index.html"), Html());
     }
 
-    /// <summary>A measure of error the report tabulates, fits and charts.</summary>
+    /// <summary>The page's table of where the time went: each stage's wall time, its share of the run so far and its calls.</summary>
+    private string TimeTable()
+    {
+        if (Clock is null)
+        {
+            return "";
+        }
+
+        IReadOnlyList<CompareStage> stages = Clock.Stages;
+        TimeSpan total = Clock.Elapsed;
+        TimeSpan rest = total - stages.Aggregate(TimeSpan.Zero, (sum, s) => sum + s.Time);
+        var html = new StringBuilder("<h2>Where the time went</h2>\n<p>Wall time of each stage of this run, measured as it ran (each stage on every core it uses, one after another); "
+            + "the share is of the run until this page was written.</p>\n<table>\n<tr><th>stage</th><th>time (s)</th><th>share</th><th>calls</th></tr>\n");
+        foreach (CompareStage stage in stages)
+        {
+            html.Append(Invariant($"<tr><td>{WebUtility.HtmlEncode(stage.Name)}</td><td>{stage.Time.TotalSeconds:F2}</td><td>{100 * stage.Time / total:F1}%</td><td>{stage.Calls}</td></tr>\n"));
+        }
+
+        return html.Append(Invariant($"<tr><td>the rest (scene, folders, progress display)</td><td>{rest.TotalSeconds:F2}</td><td>{100 * rest / total:F1}%</td><td></td></tr>\n"))
+            .Append(Invariant($"<tr><th>total</th><th>{total.TotalSeconds:F2}</th><th>100%</th><th></th></tr>\n</table>\n")).ToString();
+    }
+
     private sealed record Measure(string Name, string Axis, Func<double, string> Format, Func<CompareResult, double?> Of);
 
     private static readonly Measure Rmse = new("RMSE", "RMSE (8-bit levels)", e => e.ToString("F3", CultureInfo.InvariantCulture), r => r.Error.Rmse);
@@ -491,7 +533,7 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
                 .Append("</tr>\n");
         }
 
-        html.Append("</table>\n");
+        html.Append("</table>\n").Append(TimeTable());
         if (command.Length > 0)
         {
             html.Append($"<p>Made by <code>{E(command)}</code></p>\n");

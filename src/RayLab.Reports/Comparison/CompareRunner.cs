@@ -85,33 +85,77 @@ public static class CompareRunner
         string flipMaps = Directory.CreateDirectory(Path.Combine(folder, "flip")).FullName;
         var flipOptions = new FlipOptions { MaxDegreeOfParallelism = renderer.MaxDegreeOfParallelism };
 
+        CompareClock clock = settings.Clock ?? new CompareClock();
         var exact = new Image(width, height);
-        RenderStatistics exactStats = progress.Render("exact image", () => renderer.Render(scene, camera, RenderMethod.Exact, exact));
-        exact.Save(Path.Combine(images, "exact.png"));
+        RenderStatistics exactStats = clock.Time(CompareClock.ExactImage, () => progress.Render("exact image", () => renderer.Render(scene, camera, RenderMethod.Exact, exact)));
+        clock.Time(ImageFiles, () => exact.Save(Path.Combine(images, "exact.png")));
 
         var image = new Image(width, height);
         var results = new CompareResult[cases.Count];
+        var estimate = new CompareEstimate(cases, settings.Repeats);
         for (int i = 0; i < cases.Count; i++)
         {
             CompareCase c = cases[i] ?? throw new ArgumentException($"cases[{i}] is null", nameof(cases));
-            (RenderStatistics stats, List<TimeSpan> times) = TimeRenders(c, renderer, scene, camera, image, settings.Repeats, progress, cancellation);
-
-            ImageError error = ImageError.Measure(image, exact);
-            image.Save(Path.Combine(images, c.FileStem + ".png"));
-            HeatMap.Render(ImageError.PerPixel(image, exact), width, height, "levels").Save(Path.Combine(errors, c.FileStem + ".png"));
-            FlipResult flip = Flip.Compute(exact, image, flipOptions);
-            FlipMap.RenderWithLegend(flip).Save(Path.Combine(flipMaps, c.FileStem + ".png"));
-            results[i] = new CompareResult(c, stats.PrimaryRays, stats.PrimaryRays / ((double)width * height), Median([.. times]), error, stats.Kernel)
+            (RenderStatistics stats, List<TimeSpan> times) = TimeRenders(c, renderer, scene, camera, image, settings.Repeats, progress, clock, cancellation);
+            long measuring = System.Diagnostics.Stopwatch.GetTimestamp();
+            results[i] = MeasureImage(c, image, exact, clock, flipOptions, (images, errors, flipMaps)) with
             {
-                MeanFlip = flip.Mean,
-                Placement = ErrorPlacement.Measure(image, exact),
+                Rays = stats.PrimaryRays,
+                RaysPerPixel = stats.PrimaryRays / ((double)width * height),
+                Time = Median([.. times]),
+                Kernel = stats.Kernel,
                 Renders = times.Count,
                 Retimed = times.Count > settings.Repeats,
                 TimedOnce = times.Count < settings.Repeats,
             };
+            estimate.Done(i, Median([.. times]), System.Diagnostics.Stopwatch.GetElapsedTime(measuring), (long)width * height);
+            progress.Setting(i + 1, cases.Count, clock.Elapsed, estimate.SecondsLeft(i, (long)width * height) is { } left ? TimeSpan.FromSeconds(left) : null);
         }
 
         return new CompareMeasurement(exactStats, results);
+    }
+
+    /// <summary>The stage that computes the 8-bit error and its per-pixel image.</summary>
+    internal const string EightBitError = "8-bit error";
+
+    /// <summary>The stage that computes the FLIP maps.</summary>
+    internal const string FlipStage = "FLIP";
+
+    /// <summary>The stage that computes the low-pass errors.</summary>
+    internal const string LowPass = "low-pass error";
+
+    /// <summary>The stage that computes the error spectra.</summary>
+    internal const string SpectrumStage = "error spectrum";
+
+    /// <summary>The stage that draws the error images and FLIP maps with their colour bars.</summary>
+    internal const string ErrorImages = "error images";
+
+    /// <summary>The stage that writes the pictures, error images and FLIP maps.</summary>
+    internal const string ImageFiles = "image files";
+
+    /// <summary>Measures one rendered image against the exact image and saves it, its error image and its FLIP map; the render's fields are the caller's.</summary>
+    private static CompareResult MeasureImage(
+        CompareCase c, Image image, Image exact, CompareClock clock, FlipOptions flipOptions, (string Images, string Errors, string Flip) folders)
+    {
+        ImageError error = clock.Time(EightBitError, () => ImageError.Measure(image, exact));
+        float[] perPixel = clock.Time(EightBitError, () => ImageError.PerPixel(image, exact));
+        FlipResult flip = clock.Time(FlipStage, () => Flip.Compute(exact, image, flipOptions));
+        int threads = flipOptions.MaxDegreeOfParallelism;
+        (double low1, double low2) = clock.Time(LowPass, () => (ErrorLocation.LowPassRmse(image, exact, 1, threads), ErrorLocation.LowPassRmse(image, exact, 2, threads)));
+        ErrorSpectrum spectrum = clock.Time(SpectrumStage, () => ErrorLocation.Spectrum(image, exact, threads));
+        Image heat = clock.Time(ErrorImages, () => HeatMap.Render(perPixel, image.Width, image.Height, "levels"));
+        Image flipMap = clock.Time(ErrorImages, () => FlipMap.RenderWithLegend(flip));
+        clock.Time(ImageFiles, () =>
+        {
+            image.Save(Path.Combine(folders.Images, c.FileStem + ".png"));
+            heat.Save(Path.Combine(folders.Errors, c.FileStem + ".png"));
+            flipMap.Save(Path.Combine(folders.Flip, c.FileStem + ".png"));
+        });
+        return new CompareResult(c, 0, 0, TimeSpan.Zero, error, default)
+        {
+            MeanFlip = flip.Mean,
+            Placement = new ErrorPlacement(low1, low2, spectrum),
+        };
     }
 
     /// <summary>The arguments' checks for <see cref="Measure"/>.</summary>
@@ -145,14 +189,14 @@ public static class CompareRunner
     /// the progress count until the renders add up to a time worth measuring; returns the last render's statistics and every time.
     /// </summary>
     private static (RenderStatistics Stats, List<TimeSpan> Times) TimeRenders(
-        CompareCase c, Renderer renderer, Scene scene, Camera camera, Image image, int repeats, ICompareProgress progress, CancellationToken cancellation)
+        CompareCase c, Renderer renderer, Scene scene, Camera camera, Image image, int repeats, ICompareProgress progress, CompareClock clock, CancellationToken cancellation)
     {
         var times = new List<TimeSpan>(repeats);
         RenderStatistics stats = default;
         for (int k = 0; k < repeats; k++)
         {
             cancellation.ThrowIfCancellationRequested();
-            stats = progress.Render($"{c.Series}, {c.Setting} ({k + 1}/{repeats})", () => c.Render(renderer, scene, camera, image));
+            stats = clock.Time(CompareClock.Renders, () => progress.Render($"{c.Series}, {c.Setting} ({k + 1}/{repeats})", () => c.Render(renderer, scene, camera, image)));
             times.Add(stats.RenderTime);
             if (k == 0 && repeats > 1 && stats.RenderTime >= LongRender)
             {
@@ -167,7 +211,7 @@ public static class CompareRunner
         while (measured < MinimumMeasured && times.Count < MaximumRenders)
         {
             cancellation.ThrowIfCancellationRequested();
-            TimeSpan again = c.Render(renderer, scene, camera, image).RenderTime;
+            TimeSpan again = clock.Time(CompareClock.Renders, () => c.Render(renderer, scene, camera, image)).RenderTime;
             times.Add(again);
             measured += again;
         }

@@ -12,6 +12,14 @@ public sealed record ErrorPlacement(double LowPass1, double LowPass2, ErrorSpect
     /// <param name="image">The image.</param>
     /// <param name="exact">The exact image, of the same size.</param>
     /// <returns>The two low-pass errors and the spectrum.</returns>
-    public static ErrorPlacement Measure(Image image, Image exact) => new(
-        ErrorLocation.LowPassRmse(image, exact, 1), ErrorLocation.LowPassRmse(image, exact, 2), ErrorLocation.Spectrum(image, exact));
+    public static ErrorPlacement Measure(Image image, Image exact) => Measure(image, exact, -1);
+
+    /// <summary>Measures <paramref name="image"/> against <paramref name="exact"/> on up to <paramref name="maxDegreeOfParallelism"/> threads (the same result at any count).</summary>
+    /// <param name="image">The image.</param>
+    /// <param name="exact">The exact image, of the same size.</param>
+    /// <param name="maxDegreeOfParallelism">−1 for every core, or ≥ 1.</param>
+    /// <returns>The two low-pass errors and the spectrum.</returns>
+    public static ErrorPlacement Measure(Image image, Image exact, int maxDegreeOfParallelism) => new(
+        ErrorLocation.LowPassRmse(image, exact, 1, maxDegreeOfParallelism), ErrorLocation.LowPassRmse(image, exact, 2, maxDegreeOfParallelism),
+        ErrorLocation.Spectrum(image, exact, maxDegreeOfParallelism));
 }

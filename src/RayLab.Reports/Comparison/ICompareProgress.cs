@@ -18,4 +18,17 @@ public interface ICompareProgress
     void Skipped(int renders)
     {
     }
+
+    /// <summary>
+    /// Tells that <paramref name="done"/> of <paramref name="settings"/> settings are rendered, measured and saved,
+    /// <paramref name="elapsed"/> into the run, and the time the rest will take at the pace measured so far (each
+    /// setting's renders scaled by its samples from the render times so far, plus the measures' mean time per setting).
+    /// </summary>
+    /// <param name="done">Settings finished.</param>
+    /// <param name="settings">Settings in all.</param>
+    /// <param name="elapsed">The run's time so far.</param>
+    /// <param name="left">The estimate of the time left; null where nothing has been measured yet.</param>
+    void Setting(int done, int settings, TimeSpan elapsed, TimeSpan? left)
+    {
+    }
 }

@@ -35,17 +35,7 @@ public static class ErrorLocation
     /// <param name="exact">The exact image, of the same size.</param>
     /// <param name="sigma">The blur's standard deviation in pixels, &gt; 0.</param>
     /// <exception cref="ArgumentException">The sizes differ, or <paramref name="sigma"/> is not positive.</exception>
-    public static double LowPassRmse(Image image, Image exact, double sigma)
-    {
-        double[][] planes = Planes(image, exact);
-        double sum = 0;
-        foreach (double[] plane in planes)
-        {
-            sum += SquaredAfterBlur(plane, image.Width, image.Height, sigma);
-        }
-
-        return Math.Sqrt(sum / (3.0 * image.Width * image.Height));
-    }
+    public static double LowPassRmse(Image image, Image exact, double sigma) => Compute(image, exact, [sigma], spectrum: false, -1).LowPass[0];
 
     /// <summary>The RMSE of one error plane (<paramref name="width"/>·<paramref name="height"/> values, row 0 first) after a Gaussian blur of <paramref name="sigma"/> pixels.</summary>
     /// <param name="error">The signed error, row by row.</param>
@@ -56,14 +46,15 @@ public static class ErrorLocation
     public static double LowPassRmse(ReadOnlySpan<double> error, int width, int height, double sigma)
     {
         CheckPlane(error, width, height);
-        return Math.Sqrt(SquaredAfterBlur(error.ToArray(), width, height, sigma) / ((double)width * height));
+        CheckSigma(sigma);
+        return Math.Sqrt(SquaredAfterBlur(error.ToArray(), width, height, sigma, -1) / ((double)width * height));
     }
 
     /// <summary>The error spectrum of <paramref name="image"/> against <paramref name="exact"/>, the three channels' periodograms averaged.</summary>
     /// <param name="image">The image to judge.</param>
     /// <param name="exact">The exact image, of the same size.</param>
     /// <exception cref="ArgumentException">The sizes differ.</exception>
-    public static ErrorSpectrum Spectrum(Image image, Image exact) => SpectrumOf(Planes(image, exact), image.Width, image.Height);
+    public static ErrorSpectrum Spectrum(Image image, Image exact) => Compute(image, exact, [], spectrum: true, -1).Spectrum!;
 
     /// <summary>The error spectrum of one error plane.</summary>
     /// <param name="error">The signed error, row by row.</param>
@@ -73,7 +64,59 @@ public static class ErrorLocation
     public static ErrorSpectrum Spectrum(ReadOnlySpan<double> error, int width, int height)
     {
         CheckPlane(error, width, height);
-        return SpectrumOf([error.ToArray()], width, height);
+        return ErrorSpectrumTransform.Of([error.ToArray()], width, height, -1);
+    }
+
+    /// <summary>
+    /// <see cref="LowPassRmse(Image, Image, double)"/> on up to <paramref name="maxDegreeOfParallelism"/> threads: rows
+    /// shared out, every value computed by the same operations and the squares summed per row, then the rows in
+    /// order, so the result is the same at any thread count.
+    /// </summary>
+    /// <param name="image">The image to judge.</param>
+    /// <param name="exact">The exact image, of the same size.</param>
+    /// <param name="sigma">The blur's standard deviation in pixels, &gt; 0.</param>
+    /// <param name="maxDegreeOfParallelism">−1 for every core, or ≥ 1.</param>
+    /// <exception cref="ArgumentException">The sizes differ, <paramref name="sigma"/> is not positive, or the thread count is 0 or below −1.</exception>
+    public static double LowPassRmse(Image image, Image exact, double sigma, int maxDegreeOfParallelism) =>
+        Compute(image, exact, [sigma], spectrum: false, maxDegreeOfParallelism).LowPass[0];
+
+    /// <summary>
+    /// <see cref="Spectrum(Image, Image)"/> on up to <paramref name="maxDegreeOfParallelism"/> threads: rows, then
+    /// columns, shared out; each frequency's power computed by one task and the rings summed in one order, so the
+    /// spectrum is the same at any thread count.
+    /// </summary>
+    /// <param name="image">The image to judge.</param>
+    /// <param name="exact">The exact image, of the same size.</param>
+    /// <param name="maxDegreeOfParallelism">−1 for every core, or ≥ 1.</param>
+    /// <exception cref="ArgumentException">The sizes differ, or the thread count is 0 or below −1.</exception>
+    public static ErrorSpectrum Spectrum(Image image, Image exact, int maxDegreeOfParallelism) =>
+        Compute(image, exact, [], spectrum: true, maxDegreeOfParallelism).Spectrum!;
+
+    private static (double[] LowPass, ErrorSpectrum? Spectrum) Compute(Image image, Image exact, IReadOnlyList<double> sigmas, bool spectrum, int maxDegreeOfParallelism)
+    {
+        if (maxDegreeOfParallelism is 0 or < -1)
+        {
+            throw new ArgumentOutOfRangeException(nameof(maxDegreeOfParallelism), maxDegreeOfParallelism, "Must be -1 (every core) or at least 1.");
+        }
+
+        foreach (double sigma in sigmas)
+        {
+            CheckSigma(sigma);
+        }
+
+        double[][] planes = Planes(image, exact);
+        int width = image.Width, height = image.Height;
+        double[] lowPass = [.. sigmas.Select(sigma =>
+            Math.Sqrt(planes.Sum(plane => SquaredAfterBlur(plane, width, height, sigma, maxDegreeOfParallelism)) / (3.0 * width * height)))];
+        return (lowPass, spectrum ? ErrorSpectrumTransform.Of(planes, width, height, maxDegreeOfParallelism) : null);
+    }
+
+    private static void CheckSigma(double sigma)
+    {
+        if (!(sigma > 0) || double.IsInfinity(sigma))
+        {
+            throw new ArgumentOutOfRangeException(nameof(sigma), sigma, "The blur's σ must be a positive number of pixels.");
+        }
     }
 
     private static void CheckPlane(ReadOnlySpan<double> error, int width, int height)
@@ -111,14 +154,13 @@ public static class ErrorLocation
         return planes;
     }
 
-    /// <summary>The sum of squares of <paramref name="plane"/> after the blur (separable: rows, then columns).</summary>
-    private static double SquaredAfterBlur(double[] plane, int width, int height, double sigma)
+    /// <summary>
+    /// The sum of squares of <paramref name="plane"/> after the blur (separable: rows, then columns; each blurred value
+    /// the weights' products added in the order of the taps, in lanes across the row). The squares are summed per row,
+    /// then the rows in order, so the sum does not depend on the thread count.
+    /// </summary>
+    private static double SquaredAfterBlur(double[] plane, int width, int height, double sigma, int threads)
     {
-        if (!(sigma > 0) || double.IsInfinity(sigma))
-        {
-            throw new ArgumentOutOfRangeException(nameof(sigma), sigma, "The blur's σ must be a positive number of pixels.");
-        }
-
         int radius = (int)Math.Ceiling(3 * sigma);
         var weights = new double[(2 * radius) + 1];
         for (int d = -radius; d <= radius; d++)
@@ -127,102 +169,106 @@ public static class ErrorLocation
         }
 
         var rows = new double[plane.Length];
-        for (int y = 0; y < height; y++)
+        var options = new ParallelOptions { MaxDegreeOfParallelism = threads };
+        Parallel.For(0, height, options, y => BlurRow(plane.AsSpan(y * width, width), rows.AsSpan(y * width, width), weights, radius));
+        var rowSums = new double[height];
+        Parallel.For(0, height, options, () => new double[width], (y, _, line) =>
         {
-            Blur1D(plane.AsSpan(y * width, width), 1, rows.AsSpan(y * width, width), 1, weights, radius);
+            BlurColumns(rows, width, height, y, line, weights, radius);
+            double sum = 0;
+            foreach (double v in line)
+            {
+                sum += v * v;
+            }
+
+            rowSums[y] = sum;
+            return line;
+        }, _ => { });
+        double total = 0;
+        foreach (double rowSum in rowSums)
+        {
+            total += rowSum;
         }
 
-        var blurred = new double[plane.Length];
-        for (int x = 0; x < width; x++)
-        {
-            Blur1D(rows.AsSpan(x), width, blurred.AsSpan(x), width, weights, radius);
-        }
-
-        double sum = 0;
-        foreach (double v in blurred)
-        {
-            sum += v * v;
-        }
-
-        return sum;
+        return total;
     }
 
-    /// <summary>One line of the blur: every <paramref name="stride"/>-th value, the kernel renormalised at the ends.</summary>
-    private static void Blur1D(ReadOnlySpan<double> source, int stride, Span<double> target, int targetStride, double[] weights, int radius)
+    /// <summary>One row of the horizontal blur, the kernel renormalised at the row's ends; the middle in lanes.</summary>
+    private static void BlurRow(ReadOnlySpan<double> source, Span<double> target, double[] weights, int radius)
     {
-        int n = ((source.Length - 1) / stride) + 1;
+        int n = source.Length;
+        double full = 0;
+        foreach (double w in weights)
+        {
+            full += w;
+        }
+
+        int lanes = Vector<double>.Count;
+        int x = radius;
+        if (Vector.IsHardwareAccelerated)
+        {
+            var fullVector = new Vector<double>(full);
+            for (; x + lanes <= n - radius; x += lanes)
+            {
+                Vector<double> sum = Vector<double>.Zero;
+                for (int j = 0; j < weights.Length; j++)
+                {
+                    sum += new Vector<double>(weights[j]) * new Vector<double>(source.Slice(x - radius + j, lanes));
+                }
+
+                (sum / fullVector).CopyTo(target.Slice(x, lanes));
+            }
+        }
+
         for (int i = 0; i < n; i++)
         {
+            if (i >= radius && i < x)
+            {
+                continue; // done in lanes
+            }
+
             double sum = 0, total = 0;
             for (int j = Math.Max(0, i - radius); j <= Math.Min(n - 1, i + radius); j++)
             {
                 double w = weights[j - i + radius];
-                sum += w * source[j * stride];
+                sum += w * source[j];
                 total += w;
             }
 
-            target[i * targetStride] = sum / total;
+            target[i] = sum / total;
         }
     }
 
-    private static ErrorSpectrum SpectrumOf(double[][] planes, int width, int height)
+    /// <summary>Output row <paramref name="y"/> of the vertical blur, every column at once (in lanes), the kernel renormalised at the top and bottom.</summary>
+    private static void BlurColumns(double[] rows, int width, int height, int y, double[] line, double[] weights, int radius)
     {
-        var rowTransform = new Fourier(width);
-        var columnTransform = new Fourier(height);
-        var power = new double[width * height];
-        var data = new Complex[width * height];
-        var column = new Complex[height];
-        foreach (double[] plane in planes)
+        Array.Clear(line);
+        double total = 0;
+        int lanes = Vector<double>.Count;
+        for (int j = Math.Max(0, y - radius); j <= Math.Min(height - 1, y + radius); j++)
         {
-            for (int i = 0; i < data.Length; i++)
+            double w = weights[j - y + radius];
+            total += w;
+            ReadOnlySpan<double> row = rows.AsSpan(j * width, width);
+            int x = 0;
+            if (Vector.IsHardwareAccelerated)
             {
-                data[i] = plane[i];
+                var wv = new Vector<double>(w);
+                for (; x + lanes <= width; x += lanes)
+                {
+                    (new Vector<double>(line.AsSpan(x, lanes)) + (wv * new Vector<double>(row.Slice(x, lanes)))).CopyTo(line.AsSpan(x, lanes));
+                }
             }
 
-            for (int y = 0; y < height; y++)
+            for (; x < width; x++)
             {
-                rowTransform.Transform(data.AsSpan(y * width, width));
-            }
-
-            for (int x = 0; x < width; x++)
-            {
-                for (int y = 0; y < height; y++)
-                {
-                    column[y] = data[(y * width) + x];
-                }
-
-                columnTransform.Transform(column);
-                for (int y = 0; y < height; y++)
-                {
-                    // The periodogram |X|²/(W·H), averaged over the planes.
-                    double m = column[y].Magnitude;
-                    power[(y * width) + x] += m * m / ((double)width * height * planes.Length);
-                }
+                line[x] += w * row[x];
             }
         }
 
-        int rings = (int)Math.Ceiling(Math.Sqrt(0.5) / RingWidth) + 1;
-        var ringSum = new double[rings];
-        var ringCount = new int[rings];
-        double total = 0, low = 0;
-        for (int v = 0; v < height; v++)
+        for (int x = 0; x < width; x++)
         {
-            double fv = (v <= height / 2 ? v : v - height) / (double)height;
-            for (int u = 0; u < width; u++)
-            {
-                double fu = (u <= width / 2 ? u : u - width) / (double)width;
-                double f = Math.Sqrt((fu * fu) + (fv * fv));
-                double p = power[(v * width) + u];
-                int ring = (int)Math.Round(f / RingWidth);
-                ringSum[ring] += p;
-                ringCount[ring]++;
-                total += p;
-                low += f <= LowFrequencyLimit ? p : 0;
-            }
+            line[x] /= total;
         }
-
-        double[] mean = [.. ringSum.Select((s, r) => ringCount[r] > 0 ? s / ringCount[r] : double.NaN)];
-        int n = width * height;
-        return new ErrorSpectrum(mean, total / n, total > 0 ? low / total : 0);
     }
 }

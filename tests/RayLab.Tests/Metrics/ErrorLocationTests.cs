@@ -132,6 +132,15 @@ public class ErrorLocationTests
     [InlineData(8)]
     [InlineData(12)]
     [InlineData(37)]
+    [InlineData(2)]
+    [InlineData(3)]
+    [InlineData(6)]
+    [InlineData(60)]
+    [InlineData(270)]
+    [InlineData(480)]
+    [InlineData(1080)]
+    [InlineData(1920)]
+    [InlineData(74)]
     public void TheFourierTransformIsTheSumItDefines(int n)
     {
         var random = new Random(n);
@@ -148,5 +157,43 @@ public class ErrorLocationTests
 
             Assert.True((fast[k] - sum).Magnitude < 1e-9, $"n = {n}, k = {k}: {fast[k]} against {sum}");
         }
+    }
+
+    [Theory]
+    [InlineData(61, 37)]
+    [InlineData(480, 270)]
+    public void TheMeasuresAreTheSameAtAnyThreadCount(int width, int height)
+    {
+        // Noise-like error with a patch, so every row and column differs; the results must match to the last bit.
+        var random = new Random(width);
+        var image = new Image(width, height);
+        var exact = new Image(width, height);
+        for (int y = 0; y < height; y++)
+        {
+            for (int x = 0; x < width; x++)
+            {
+                byte level = (byte)random.Next(256);
+                exact.GetRowSpan(y)[x] = new Rgb24(level, (byte)(255 - level), 128);
+                image.GetRowSpan(y)[x] = x < width / 3 && y < height / 2 ? new Rgb24(level, level, level) : new Rgb24((byte)Math.Min(255, level + random.Next(3)), (byte)(255 - level), 127);
+            }
+        }
+
+        double[] Lows(int threads) => [ErrorLocation.LowPassRmse(image, exact, 1, threads), ErrorLocation.LowPassRmse(image, exact, 2, threads)];
+        double[] Spectrum(int threads)
+        {
+            ErrorSpectrum s = ErrorLocation.Spectrum(image, exact, threads);
+            return [s.MeanSquare, s.LowFrequencyShare, .. s.RadialMean];
+        }
+
+        Assert.True(Lows(1)[0] > 0);
+        foreach (int threads in new[] { 2, 3, 16, -1 })
+        {
+            Assert.Equal(Lows(1), Lows(threads));
+            Assert.Equal(Spectrum(1), Spectrum(threads));
+        }
+
+        // The one-call forms are these on every core.
+        Assert.Equal(Lows(1)[1], ErrorLocation.LowPassRmse(image, exact, 2));
+        Assert.Equal(Spectrum(1), Spectrum(-1));
     }
 }
