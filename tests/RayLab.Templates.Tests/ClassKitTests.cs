@@ -325,6 +325,11 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
                 }
             }
             """);
+        // The solution with a regular sampler whose loop never ends for n = 1 and calls nothing of the checks' code:
+        // its check fails at the lab's limit with its own message and ends the run; the grader runs the checks left
+        // without a result again.
+        string spinning = await kit.NewLabAsync(submissions, "spinning", restore: false, "exercise", "raylab-lab-solution");
+        Edit(spinning, "src/Lab/LabRegularSampler.cs", "for (int i = 0; i < K; i++)", "for (int i = 0; i < K; i += Math.Min(1, K - 1))");
         // The skeleton, nothing written, whose project edits the checks at build time so that every check returns at
         // once (ContinueOnError: where the checks are not in its copy, the build goes on).
         string editor = await kit.NewLabAsync(submissions, "editor", restore: false, "exercise");
@@ -378,6 +383,14 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
             Assert.Equal("fail", Section(row, "3.1"));
             Assert.All(sections.Where(s => s != "3.1"), s => Assert.Equal("pass", Section(row, s)));
         }
+
+        // The sampler that never returns: its check failed (the lab's own result, not the grader's timeout), and every
+        // other check has its result, as many as the solution's, all of them passed outside 4.1.1.
+        Assert.Equal("ok", rows["spinning"].GetProperty("status").GetString());
+        Assert.Equal("fail", Section(rows["spinning"], "4.1.1"));
+        Assert.All(sections.Where(s => s != "4.1.1"), s => Assert.Equal("pass", Section(rows["spinning"], s)));
+        Assert.Equal(Checks(rows["solution"]).Order(StringComparer.Ordinal), Checks(rows["spinning"]).Order(StringComparer.Ordinal));
+        Assert.DoesNotContain(rows["spinning"].GetProperty("checks").EnumerateArray(), c => c.GetProperty("outcome").GetString() is "Timeout" or "Crashed" or "NotRun");
 
         // The project that edits the checks: the checks it runs are the instructor's, built where it cannot write, so
         // the skeleton's sections are all still to write, as they are: not written, which earns nothing.
