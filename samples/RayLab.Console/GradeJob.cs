@@ -427,6 +427,8 @@ public static partial class GradeJob
 
     private static void RunCheckRuns(GradeSetup setup, GradeSandbox sandbox, CheckFolders folders, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
     {
+        // The checks a run left without a result because one of them ended it (LabStoppedRun): the next run runs them alone.
+        List<string>? missing = null, listed = null;
         for (int attempt = 1; ; attempt++)
         {
             if (left() <= TimeSpan.Zero)
@@ -439,7 +441,11 @@ public static partial class GradeJob
             string results = Path.Combine(lab, $"results-{attempt}");
             List<string> args = ["test", .. folders.TestAssemblyArgs, "--logger", "trx;LogFileName=checks.trx", "--results-directory", results,
                 "--blame-hang-timeout", string.Create(CultureInfo.InvariantCulture, $"{(int)Math.Ceiling(setup.Request.CheckTimeout.TotalSeconds)}s"), "--blame-hang-dump-type", "none"];
-            if (excluded.Count > 0)
+            if (missing is not null)
+            {
+                args.AddRange(["--filter", DisplayNameFilter(missing)]);
+            }
+            else if (excluded.Count > 0)
             {
                 args.AddRange(["--filter", string.Join('&', excluded.Select(n => $"FullyQualifiedName!={n}"))]);
             }
@@ -460,10 +466,12 @@ public static partial class GradeJob
             }
 
             string trx = Path.Combine(results, "checks.trx");
+            bool labStopped = false;
             if (File.Exists(trx))
             {
                 foreach (CheckResult result in CheckRunFiles.Results(trx))
                 {
+                    labStopped |= result.Message?.Contains(LabStoppedRun, StringComparison.Ordinal) == true;
                     row.Checks[result.Display] = result.Result;
                     if (result.Message is not null)
                     {
@@ -499,12 +507,57 @@ public static partial class GradeJob
             }
 
             row.Detail ??= verdict.Detail;
-
-            if (!verdict.RunAgain)
+            missing = null;
+            if (!verdict.RunAgain && labStopped && verdict.Problem is null && attempt < MaxCheckRuns)
+            {
+                // A check ended the run after its result, with the student's code that could not be stopped: the
+                // checks it left without a result run again, without it.
+                listed ??= ListChecks(sandbox, folders, log, left, cancellation);
+                missing = [.. listed.Where(display => !row.Checks.ContainsKey(display))];
+                if (missing.Count == 0)
+                {
+                    return;
+                }
+            }
+            else if (!verdict.RunAgain)
             {
                 return;
             }
         }
+    }
+
+    /// <summary>
+    /// The words of an exercise lab's check that ended its run (<c>Check.RunStopped</c> in the lab's checks): its
+    /// student's method ran past the lab's time limit and could not be stopped, so the check ended the test process
+    /// after its own result, and the checks not yet started have none.
+    /// </summary>
+    public const string LabStoppedRun = "Check.StopRun";
+
+    /// <summary>Every check's display name, as <c>dotnet test --list-tests</c> gives them; none where the listing fails.</summary>
+    private static List<string> ListChecks(GradeSandbox sandbox, CheckFolders folders, string log, Func<TimeSpan> left, CancellationToken cancellation)
+    {
+        if (left() <= TimeSpan.Zero)
+        {
+            return [];
+        }
+
+        ChildRun list = sandbox.Run(folders.Results, log, Min(left(), TimeSpan.FromMinutes(1)), "dotnet",
+            ["test", folders.Project, "--no-build", "--list-tests", .. folders.HostSettings], cancellation,
+            readOnly: [folders.Checks], nested: folders.Nested);
+        cancellation.ThrowIfCancellationRequested();
+        return list.TimedOut || list.ExitCode != 0 ? [] : [.. ListedTests(list.Output)];
+    }
+
+    /// <summary>
+    /// A <c>dotnet test --filter</c> that selects the checks with these display names, each escaped as the test
+    /// platform's filter syntax needs (a backslash before <c>\ ( ) &amp; | = ! ~</c>).
+    /// </summary>
+    /// <param name="displayNames">The checks' display names.</param>
+    /// <returns>The filter.</returns>
+    public static string DisplayNameFilter(IEnumerable<string> displayNames)
+    {
+        ArgumentNullException.ThrowIfNull(displayNames);
+        return string.Join('|', displayNames.Select(name => "DisplayName=" + string.Concat(name.Select(c => "\\()&|=!~".Contains(c, StringComparison.Ordinal) ? $"\\{c}" : c.ToString()))));
     }
 
     /// <summary>How many times the checks run at most, each without the checks that stopped the runs before it.</summary>

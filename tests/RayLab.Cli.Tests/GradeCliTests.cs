@@ -63,6 +63,16 @@ public sealed class GradeCliTests : IDisposable
     }
 
     [Fact]
+    public void TheChecksLeftWithoutAResultAreSelectedByTheirDisplayNamesEscapedForTheTestPlatformsFilter()
+    {
+        // A check that ended its run leaves the checks not yet started without a result: the next run selects them by
+        // name, and the filter's own characters in a name ((), =, |, !, ~, &, \) are escaped.
+        string filter = GradeJob.DisplayNameFilter(["3 Kamera: baza w = −g/|g|", "4.1.1 Próbkowanie regularne(n: 4)", "a!~&\\b"]);
+        Assert.Equal("DisplayName=3 Kamera: baza w \\= −g/\\|g\\||DisplayName=4.1.1 Próbkowanie regularne\\(n: 4\\)|DisplayName=a\\!\\~\\&\\\\b", filter);
+        Assert.Equal("", GradeJob.DisplayNameFilter([]));
+    }
+
+    [Fact]
     public void TheListedChecksAreTheIndentedLinesAfterTheHeadingWithoutTheAdaptersOwn()
     {
         // dotnet test --list-tests of a lab, as it prints (the adapter's lines fall among the names).

@@ -124,6 +124,13 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
     /// </summary>
     private const int SubmissionLimitSeconds = 180;
 
+    /// <summary>
+    /// The limit per submission of the exercise labs. The lab whose sampler never returns must build, run its checks
+    /// until its hung check ends the run (the lab's 45 s and 5 s more), list the checks and run those left without a
+    /// result: about twice what a lab that passes takes, and this limit leaves 1.7 times that on a slow machine.
+    /// </summary>
+    private const int ExerciseSubmissionLimitSeconds = 480;
+
     /// <summary>How long stopping a child and its process tree may take beyond a limit.</summary>
     private const int StopSlackSeconds = 30;
 
@@ -325,6 +332,11 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
                 }
             }
             """);
+        // The solution with a regular sampler whose loop never ends for n = 1 and calls nothing of the checks' code:
+        // its check fails at the lab's limit with its own message and ends the run; the grader runs the checks left
+        // without a result again.
+        string spinning = await kit.NewLabAsync(submissions, "spinning", restore: false, "exercise", "raylab-lab-solution");
+        Edit(spinning, "src/Lab/LabRegularSampler.cs", "for (int i = 0; i < K; i++)", "for (int i = 0; i < K; i += Math.Min(1, K - 1))");
         // The skeleton, nothing written, whose project edits the checks at build time so that every check returns at
         // once (ContinueOnError: where the checks are not in its copy, the build goes on).
         string editor = await kit.NewLabAsync(submissions, "editor", restore: false, "exercise");
@@ -342,7 +354,7 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
         Edit(forger, "src/Lab/LightIntensity.cs", "public readonly struct LightIntensity\n{", "public readonly struct LightIntensity\n{\n    static LightIntensity() => Forger.Forge();\n");
         File.WriteAllText(Path.Combine(forger, "src", "Lab", "Forger.cs"), ForgerSource);
 
-        using JsonDocument grades = Grade(submissions, "exercise", Path.Combine(kit.Root, "exercise-report"), checkTimeout: 60, runTimeout: 60, jobs: 2);
+        using JsonDocument grades = Grade(submissions, "exercise", Path.Combine(kit.Root, "exercise-report"), checkTimeout: 60, runTimeout: 60, jobs: 2, submissionLimit: ExerciseSubmissionLimitSeconds);
         Dictionary<string, JsonElement> rows = Rows(grades);
         string[] sections = [.. grades.RootElement.GetProperty("sections").EnumerateArray().Select(s => s.GetString()!)];
         // Every section of the lab, parsed from the checks' display names.
@@ -378,6 +390,14 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
             Assert.Equal("fail", Section(row, "3.1"));
             Assert.All(sections.Where(s => s != "3.1"), s => Assert.Equal("pass", Section(row, s)));
         }
+
+        // The sampler that never returns: its check failed (the lab's own result, not the grader's timeout), and every
+        // other check has its result, as many as the solution's, all of them passed outside 4.1.1.
+        Assert.Equal("ok", rows["spinning"].GetProperty("status").GetString());
+        Assert.Equal("fail", Section(rows["spinning"], "4.1.1"));
+        Assert.All(sections.Where(s => s != "4.1.1"), s => Assert.Equal("pass", Section(rows["spinning"], s)));
+        Assert.Equal(Checks(rows["solution"]).Order(StringComparer.Ordinal), Checks(rows["spinning"]).Order(StringComparer.Ordinal));
+        Assert.DoesNotContain(rows["spinning"].GetProperty("checks").EnumerateArray(), c => c.GetProperty("outcome").GetString() is "Timeout" or "Crashed" or "NotRun");
 
         // The project that edits the checks: the checks it runs are the instructor's, built where it cannot write, so
         // the skeleton's sections are all still to write, as they are: not written, which earns nothing.
@@ -574,14 +594,14 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
     /// <paramref name="kind"/>, with the class's limit per submission; fails with both outputs unless it exits 0.
     /// </summary>
     /// <returns>The report's grades.json.</returns>
-    private JsonDocument Grade(string submissions, string kind, string report, int checkTimeout, int runTimeout, int jobs)
+    private JsonDocument Grade(string submissions, string kind, string report, int checkTimeout, int runTimeout, int jobs, int submissionLimit = SubmissionLimitSeconds)
     {
         var stdout = new StringWriter();
         var stderr = new StringWriter();
         int exit = Program.Run(
             ["grade", submissions, "--checks", Path.Combine(kit.Kit, "checks", kind), "--out", report,
              "--check-timeout", checkTimeout.ToString(CultureInfo.InvariantCulture), "--run-timeout", runTimeout.ToString(CultureInfo.InvariantCulture),
-             "--submission-timeout", SubmissionLimitSeconds.ToString(CultureInfo.InvariantCulture), "--jobs", jobs.ToString(CultureInfo.InvariantCulture)],
+             "--submission-timeout", submissionLimit.ToString(CultureInfo.InvariantCulture), "--jobs", jobs.ToString(CultureInfo.InvariantCulture)],
             stdout, stderr, TestContext.Current.CancellationToken);
         Assert.True(exit == 0, $"raylab grade exited {exit}:\n{stdout}\n{stderr}");
         TestContext.Current.TestOutputHelper?.WriteLine($"raylab grade {kind}:\n{stdout}\n{stderr}");

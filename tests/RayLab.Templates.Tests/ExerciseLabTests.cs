@@ -217,6 +217,22 @@ public sealed partial class LabTemplateTests
         Assert.True(hangExit != 0, $"5 passed with a render loop that never ends:\n{hang}");
         Assert.Matches(@"Przekroczony limit czasu 45 s: metoda się nie skończyła \(zapętlenie\?\)\. Ostatnio: piksel \(0, \d+\)\. Twoja metoda została zatrzymana\.", hang);
 
+        // A loop that calls nothing of the checks' code (an endless for in the regular sampler, for every n): nothing
+        // inside the process can stop it, so its check fails at the limit with its own message and ends the run after
+        // its result. The grid's other cases, which would each hang as long, do not start, and when dotnet test
+        // returns no test process is left running the loop.
+        string regular = Path.Combine(lab, "src", "Lab", "LabRegularSampler.cs");
+        string regularSource = File.ReadAllText(regular);
+        const string step = "for (int i = 0; i < K; i++)";
+        Assert.Contains(step, regularSource, StringComparison.Ordinal);
+        File.WriteAllText(regular, regularSource.Replace(step, "for (int i = 0; i < K; i *= 1)", StringComparison.Ordinal));
+        (int spinExit, string spin) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-restore", "--filter", "Section=4.1.1");
+        File.WriteAllText(regular, regularSource);
+        Assert.True(spinExit != 0, $"4.1.1 passed with a sampler that never returns:\n{spin}");
+        Assert.Matches(@"Przekroczony limit czasu 45 s: metoda się nie skończyła \(zapętlenie\?\)\. Ostatnio: —\. Twojej metody nie dało się zatrzymać \(jej pętla nie woła niczego z kodu sprawdzeń\), więc dotnet test kończy się na tym sprawdzeniu razem z nią \(Check\.StopRun\)", spin);
+        Assert.True(Regex.Count(spin, @"(?m)^\s+Failed 4\.1\.1 ") == 1, $"not one 4.1.1 check failed, and the run ended:\n{spin}");
+        Assert.Empty(TestProcesses(lab));
+
         // Code that throws: the checks and check name the exception and where in the student's code it came from.
         string image = Path.Combine(lab, "src", "Lab", "LabImage.cs");
         string imageSource = File.ReadAllText(image);
@@ -263,6 +279,20 @@ public sealed partial class LabTemplateTests
         Assert.Contains("Sekcje, które rzucają wyjątek: 4.1.4", endlessRun, StringComparison.Ordinal);
         Assert.DoesNotContain("rozgrzewka", endlessRun, StringComparison.Ordinal); // no render began
     }
+
+    /// <summary>The running processes whose command line names the lab's folder and its checks (Linux's /proc; none elsewhere).</summary>
+    private static string[] TestProcesses(string lab) => !OperatingSystem.IsLinux() ? [] :
+        [.. Directory.GetDirectories("/proc").Select(p =>
+        {
+            try
+            {
+                return File.ReadAllText(Path.Combine(p, "cmdline")).Replace('\0', ' ');
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                return "";
+            }
+        }).Where(c => c.Contains(lab, StringComparison.Ordinal) && c.Contains("Lab.Tests", StringComparison.Ordinal))];
 
     /// <summary>
     /// The passed and failed counts of dotnet test's summary at the exercise lab's detailed verbosity ("Total tests: 37",

@@ -211,7 +211,10 @@ public sealed partial class LabTemplateTests(TemplateFeed feed)
     [Fact]
     public async Task HelpDescribesEveryOption()
     {
-        string help = Collapse(await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "--help"));
+        // The descriptions are the template's own, in Polish, whatever the machine's language: an English one too.
+        (int exit, string shown) = await feed.RunUncheckedAsync(feed.Root, new Dictionary<string, string?> { ["DOTNET_CLI_UI_LANGUAGE"] = "en" }, "dotnet", "new", "raylab-lab", "--help");
+        Assert.True(exit == 0, $"dotnet new raylab-lab --help failed:\n{shown}");
+        string help = Collapse(shown);
         using JsonDocument template = JsonDocument.Parse(File.ReadAllText(Path.Combine(RepoPaths.Root(),
             "templates", "RayLab.Templates", "content", "raylab-lab", ".template.config", "template.json")));
         int options = 0;
@@ -227,11 +230,14 @@ public sealed partial class LabTemplateTests(TemplateFeed feed)
             string description = symbol.Value.TryGetProperty("description", out JsonElement d) ? d.GetString() ?? "" : "";
             Assert.False(string.IsNullOrWhiteSpace(description), $"--{symbol.Name} has no description in template.json");
             Assert.Contains(Collapse(description), help, StringComparison.Ordinal);
+            Assert.False(IsEnglish(description), $"--{symbol.Name}'s description is English: {description}");
             if (symbol.Value.TryGetProperty("choices", out JsonElement choices))
             {
                 foreach (JsonElement choice in choices.EnumerateArray())
                 {
-                    Assert.Contains(Collapse($"{choice.GetProperty("choice").GetString()} {choice.GetProperty("description").GetString()}"), help, StringComparison.Ordinal);
+                    string said = choice.GetProperty("description").GetString()!;
+                    Assert.Contains(Collapse($"{choice.GetProperty("choice").GetString()} {said}"), help, StringComparison.Ordinal);
+                    Assert.False(IsEnglish(said), $"--{symbol.Name} {choice.GetProperty("choice").GetString()}'s description is English: {said}");
                 }
             }
         }

@@ -88,14 +88,15 @@ internal static class Check
     /// Runs <paramref name="work"/> with the time limit; <paramref name="where"/> says where it was when the limit
     /// passed (e.g. the pixel). Returns the elapsed time. Past the limit the work is told to stop
     /// (<see cref="StopIfPastLimit"/>) and given <see cref="Grace"/> to do so; the check fails either way, and says
-    /// whether your method stopped.
+    /// whether your method stopped. A method that did not stop ends the run with this check (<see cref="StopRun"/>).
     /// </summary>
 #else
     /// <summary>
     /// Wykonuje <paramref name="work"/> z limitem czasu; <paramref name="where"/> mówi, gdzie była praca, gdy limit
     /// minął (np. piksel). Zwraca czas trwania. Po limicie praca dostaje sygnał zatrzymania
     /// (<see cref="StopIfPastLimit"/>) i <see cref="Grace"/> na zatrzymanie się; sprawdzenie i tak nie przechodzi, a
-    /// komunikat mówi, czy Twoja metoda się zatrzymała.
+    /// komunikat mówi, czy Twoja metoda się zatrzymała. Metoda, która się nie zatrzymała, kończy przebieg na tym
+    /// sprawdzeniu (<see cref="StopRun"/>).
     /// </summary>
 #endif
     public static TimeSpan Run(ITestOutputHelper output, Func<string> where, Action work)
@@ -112,13 +113,18 @@ internal static class Check
             string last = where();
             stop.Cancel();
             bool stopped = Finished(task, Grace);
+            if (!stopped)
+            {
+                StopRun();
+            }
+
             throw new Xunit.Sdk.CheckFailure(T(
                 $"Przekroczony limit czasu {Limit.TotalSeconds:F0} s: metoda się nie skończyła (zapętlenie?). Ostatnio: {last}. "
                     + (stopped ? "Twoja metoda została zatrzymana."
-                        : "Twojej metody nie dało się zatrzymać (jej pętla nie woła niczego z kodu sprawdzeń): zajmuje procesor do końca dotnet test."),
+                        : $"Twojej metody nie dało się zatrzymać (jej pętla nie woła niczego z kodu sprawdzeń), więc dotnet test kończy się na tym sprawdzeniu razem z nią ({RunStopped}): sprawdzenia, które się jeszcze nie zaczęły, nie są wykonane. Popraw pętlę i uruchom dotnet test ponownie."),
                 $"Time limit of {Limit.TotalSeconds:F0} s passed: the method did not finish (an endless loop?). Last: {last}. "
                     + (stopped ? "Your method was stopped."
-                        : "Your method could not be stopped (its loop calls nothing of the checks' code): it keeps a processor busy until dotnet test ends.")), null);
+                        : $"Your method could not be stopped (its loop calls nothing of the checks' code), so dotnet test ends at this check, and the loop with it ({RunStopped}): the checks not yet started are not run. Fix the loop and run dotnet test again.")), null);
         }
 
         if (task.Exception?.InnerException is { } wrapped)
@@ -159,6 +165,33 @@ internal static class Check
     }
 
 #if (en)
+    /// <summary>
+    /// The words a check's message holds when it ended the run (<see cref="StopRun"/>): <c>raylab grade</c> looks for
+    /// them, and runs again the checks that were not run.
+    /// </summary>
+#else
+    /// <summary>
+    /// Słowa, które ma komunikat sprawdzenia, które zakończyło przebieg (<see cref="StopRun"/>): <c>raylab grade</c> ich
+    /// szuka i wykonuje ponownie sprawdzenia, które nie zostały wykonane.
+    /// </summary>
+#endif
+    public const string RunStopped = "Check.StopRun";
+
+#if (en)
+    /// <summary>
+    /// Ends the test run once this check's result is reported (<see cref="StoppableRun"/>): the checks already running
+    /// finish, no other starts, and the test process ends, with a method of yours that could not be stopped in it.
+    /// </summary>
+#else
+    /// <summary>
+    /// Kończy przebieg testów po zgłoszeniu wyniku tego sprawdzenia (<see cref="StoppableRun"/>): sprawdzenia już trwające
+    /// się kończą, żadne inne się nie zaczyna, a proces testów kończy się razem z Twoją metodą, której nie dało się
+    /// zatrzymać.
+    /// </summary>
+#endif
+    public static void StopRun() => StoppableRun.Stop.Cancel();
+
+#if (en)
     /// <summary>Whether <paramref name="task"/> ended (its exception, if any, is read later) within <paramref name="time"/>.</summary>
 #else
     /// <summary>Czy <paramref name="task"/> skończyło się (jego wyjątek, jeśli jest, czytany jest później) w czasie <paramref name="time"/>.</summary>
@@ -167,7 +200,14 @@ internal static class Check
     {
         try
         {
-            return task.Wait(time, TestContext.Current.CancellationToken);
+#if (en)
+            // Not the test's cancellation token: once a check ends the run (StopRun) it is cancelled, and the checks
+            // still running finish within their own limits.
+#else
+            // Bez tokenu anulowania testu: gdy sprawdzenie kończy przebieg (StopRun), jest anulowany, a sprawdzenia
+            // jeszcze trwające kończą się w swoich własnych limitach.
+#endif
+            return task.Wait(time);
         }
         catch (AggregateException)
         {
@@ -264,31 +304,46 @@ internal static class Check
     /// wartość wskazuje metodę, która ją dała, i miejsce, gdzie szukać. Samo „Klasa.Metoda”, gdy symbole tego nie mówią.
     /// </summary>
 #endif
-    public static string Source(Type type, string name)
+    public static string Source(Type type, string name) => Source(
+        name == type.Name ? type.GetConstructors().FirstOrDefault()
+            : type.GetMethods(System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Static | System.Reflection.BindingFlags.DeclaredOnly)
+                .FirstOrDefault(m => m.Name == name),
+        $"{type.Name}.{name}");
+
+#if (en)
+    /// <summary>
+    /// Where your <paramref name="method"/> (a constructor, an operator, one overload of several) is written, as
+    /// <see cref="Source(Type, string)"/> gives it, named <paramref name="shown"/>: "src/Lab/File.cs:line, shown", or
+    /// <paramref name="shown"/> alone where the symbols cannot tell.
+    /// </summary>
+#else
+    /// <summary>
+    /// Gdzie jest napisana Twoja metoda <paramref name="method"/> (konstruktor, operator, jedna z kilku przeciążonych),
+    /// tak jak podaje to <see cref="Source(Type, string)"/>, nazwana <paramref name="shown"/>: „src/Lab/Plik.cs:wiersz,
+    /// nazwa”, albo sama <paramref name="shown"/>, gdy symbole tego nie mówią.
+    /// </summary>
+#endif
+    public static string Source(System.Reflection.MethodBase? method, string shown)
     {
-        string method = $"{type.Name}.{name}";
         try
         {
-            System.Reflection.MethodBase? found = name == type.Name
-                ? type.GetConstructors().FirstOrDefault()
-                : type.GetMethods(System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Static | System.Reflection.BindingFlags.DeclaredOnly)
-                    .FirstOrDefault(m => m.Name == name);
-            if (found is null || string.IsNullOrEmpty(type.Assembly.Location))
+            string? location = method?.DeclaringType?.Assembly.Location;
+            if (method is null || string.IsNullOrEmpty(location))
             {
-                return method;
+                return shown;
             }
 
-            using var stream = File.OpenRead(type.Assembly.Location);
+            using var stream = File.OpenRead(location);
             using var pe = new System.Reflection.PortableExecutable.PEReader(stream);
-            if (!pe.TryOpenAssociatedPortablePdb(type.Assembly.Location, path => File.Exists(path) ? File.OpenRead(path) : null, out var provider, out _) || provider is null)
+            if (!pe.TryOpenAssociatedPortablePdb(location, path => File.Exists(path) ? File.OpenRead(path) : null, out var provider, out _) || provider is null)
             {
-                return method;
+                return shown;
             }
 
             using (provider)
             {
                 var pdb = provider.GetMetadataReader();
-                var handle = System.Reflection.Metadata.Ecma335.MetadataTokens.MethodDefinitionHandle(found.MetadataToken);
+                var handle = System.Reflection.Metadata.Ecma335.MetadataTokens.MethodDefinitionHandle(method.MetadataToken);
 #if (en)
                 // The first line of code: past the opening brace of a method with a body.
 #else
@@ -299,7 +354,7 @@ internal static class Check
                 {
                     string path = pdb.GetString(pdb.GetDocument(point.Document).Name).Replace('\\', '/');
                     int lab = path.LastIndexOf("/src/Lab/", StringComparison.Ordinal);
-                    return F($"{(lab >= 0 ? path[(lab + 1)..] : Path.GetFileName(path))}:{point.StartLine}, {method}");
+                    return F($"{(lab >= 0 ? path[(lab + 1)..] : Path.GetFileName(path))}:{point.StartLine}, {shown}");
                 }
             }
         }
@@ -312,7 +367,7 @@ internal static class Check
 #endif
         }
 
-        return method;
+        return shown;
     }
 
 #if (en)

@@ -16,10 +16,10 @@ public sealed class IntensityChecks(ITestOutputHelper output)
     [Fact(DisplayName = English ? "2.1 Intensity: constructors with 3, 2, 1 and 0 components, negative → 0" : "2.1 Natężenie: konstruktory z 3, 2, 1 i 0 składowymi, ujemne → 0")]
     public void Constructors() => Run(output, () =>
     {
-        Same("LightIntensity(-0.5, 0.3, 2)", new Intensity(-0.5, 0.3, 2), new LightIntensity(-0.5, 0.3, 2));
-        Same("LightIntensity(0.7, -0.1)", new Intensity(0.7, -0.1), new LightIntensity(0.7, -0.1));
-        Same("LightIntensity(0.4)", new Intensity(0.4), new LightIntensity(0.4));
-        Same("LightIntensity()", new Intensity(), new LightIntensity());
+        Same("LightIntensity(-0.5, 0.3, 2)", new Intensity(-0.5, 0.3, 2), new LightIntensity(-0.5, 0.3, 2), Constructor("r, g, b", typeof(double), typeof(double), typeof(double)));
+        Same("LightIntensity(0.7, -0.1)", new Intensity(0.7, -0.1), new LightIntensity(0.7, -0.1), Constructor("r, g", typeof(double), typeof(double)));
+        Same("LightIntensity(0.4)", new Intensity(0.4), new LightIntensity(0.4), Constructor("r", typeof(double)));
+        Same("LightIntensity()", new Intensity(), new LightIntensity(), Constructor(""));
         output.WriteLine(T("5 konstruktorów jak w RayLab", "5 constructors as RayLab's"));
     });
 
@@ -34,17 +34,17 @@ public sealed class IntensityChecks(ITestOutputHelper output)
             {
                 Intensity a = new(p[0], p[1], p[2]), b = new(q[0], q[1], q[2]);
                 LightIntensity la = new(p[0], p[1], p[2]), lb = new(q[0], q[1], q[2]);
-                Same($"{I(la)} + {I(lb)}", a + b, la + lb);
-                Same($"{I(la)} − {I(lb)} ({T("ujemne → 0", "negative → 0")})", a - b, la - lb);
-                Same($"{I(la)} × 3", a * 3, la * 3);
-                Same($"3 × {I(la)}", 3 * a, 3 * la);
-                Same($"{I(la)} ÷ 4", a / 4, la / 4);
+                Same($"{I(la)} + {I(lb)}", a + b, la + lb, Operator("op_Addition", "+", typeof(LightIntensity), typeof(LightIntensity)));
+                Same($"{I(la)} − {I(lb)} ({T("ujemne → 0", "negative → 0")})", a - b, la - lb, Operator("op_Subtraction", "−", typeof(LightIntensity), typeof(LightIntensity)));
+                Same($"{I(la)} × 3", a * 3, la * 3, Operator("op_Multiply", "* (I × s)", typeof(LightIntensity), typeof(double)));
+                Same($"3 × {I(la)}", 3 * a, 3 * la, Operator("op_Multiply", "* (s × I)", typeof(double), typeof(LightIntensity)));
+                Same($"{I(la)} ÷ 4", a / 4, la / 4, Operator("op_Division", "/", typeof(LightIntensity), typeof(double)));
                 LightIntensity compound = la;
                 compound += lb;
                 compound *= 2;
                 compound /= 2;
                 compound -= lb;
-                Same($"(({I(la)} += {I(lb)}) *= 2, /= 2, −= {I(lb)})", ((a + b) * 2 / 2) - b, compound);
+                Same($"(({I(la)} += {I(lb)}) *= 2, /= 2, −= {I(lb)})", ((a + b) * 2 / 2) - b, compound, null);
                 compared += 6;
             }
         }
@@ -68,13 +68,41 @@ public sealed class IntensityChecks(ITestOutputHelper output)
         output.WriteLine($"ToString(): {text}");
     });
 
-    private static void Same(string what, Intensity expected, LightIntensity actual)
+#if (en)
+    /// <summary>
+    /// Fails unless <paramref name="actual"/> is <paramref name="expected"/> bit for bit; the message names
+    /// <paramref name="source"/>, where your constructor or operator that gave the value is written (read only then), when there is one.
+    /// </summary>
+#else
+    /// <summary>
+    /// Nie przechodzi, jeśli <paramref name="actual"/> nie jest co do bitu <paramref name="expected"/>; komunikat podaje
+    /// <paramref name="source"/>, gdzie jest napisany Twój konstruktor albo operator, który dał tę wartość (odczytywane dopiero wtedy), jeśli jest jeden.
+    /// </summary>
+#endif
+    private static void Same(string what, Intensity expected, LightIntensity actual, Func<string>? source)
     {
         if (expected.R != actual.R || expected.G != actual.G || expected.B != actual.B)
         {
+            string at = source is null ? "" : $" ({source()})";
             Assert.Fail(T(
-                $"2.1 Natężenie: {what} powinno dać {I(expected)} (każda składowa osobno; ujemna → 0), a dało {I(actual)}.",
-                $"2.1 Intensity: {what} should give {I(expected)} (each component on its own; negative → 0), got {I(actual)}."));
+                $"2.1 Natężenie: {what} powinno dać {I(expected)} (każda składowa osobno; ujemna → 0), a dało {I(actual)}{at}.",
+                $"2.1 Intensity: {what} should give {I(expected)} (each component on its own; negative → 0), got {I(actual)}{at}."));
         }
     }
+
+#if (en)
+    /// <summary>Where your constructor of LightIntensity with these parameters is written (<see cref="Check.Source(System.Reflection.MethodBase?, string)"/>).</summary>
+#else
+    /// <summary>Gdzie jest napisany Twój konstruktor LightIntensity z tymi parametrami (<see cref="Check.Source(System.Reflection.MethodBase?, string)"/>).</summary>
+#endif
+    private static Func<string> Constructor(string parameters, params Type[] types) => () =>
+        Source(typeof(LightIntensity).GetConstructor(types), $"new LightIntensity({parameters})");
+
+#if (en)
+    /// <summary>Where your operator <paramref name="shown"/> of LightIntensity (the method <paramref name="name"/>, with these operands) is written.</summary>
+#else
+    /// <summary>Gdzie jest napisany Twój operator <paramref name="shown"/> LightIntensity (metoda <paramref name="name"/> z tymi argumentami).</summary>
+#endif
+    private static Func<string> Operator(string name, string shown, params Type[] types) => () =>
+        Source(typeof(LightIntensity).GetMethod(name, types), $"LightIntensity.operator {shown}");
 }
