@@ -542,7 +542,7 @@ public static partial class GradeJob
         }
 
         ChildRun list = sandbox.Run(folders.Results, log, Min(left(), TimeSpan.FromMinutes(1)), "dotnet",
-            ["test", folders.Project, "--no-build", "--list-tests", .. folders.HostSettings], cancellation,
+            ["test", .. folders.TestAssemblyArgs, "--list-tests", .. folders.HostSettings], cancellation,
             readOnly: [folders.Checks], nested: folders.Nested);
         cancellation.ThrowIfCancellationRequested();
         return list.TimedOut || list.ExitCode != 0 ? [] : [.. ListedTests(list.Output)];
