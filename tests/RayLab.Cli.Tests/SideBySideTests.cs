@@ -1,4 +1,5 @@
 using System.Collections.Concurrent;
+using RayLab.Grading;
 
 namespace RayLab.Cli.Tests;
 

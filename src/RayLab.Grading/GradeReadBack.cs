@@ -1,7 +1,7 @@
 using System.Globalization;
 using RayLab.Reports.Imaging;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>What a picture read back from a lab's copy comes to (<see cref="GradeJob.ReadPicture"/>).</summary>
 /// <param name="Picture">The decoded picture, or null.</param>
@@ -46,6 +46,7 @@ public static partial class GradeJob
     /// <param name="width">The exact image's width.</param>
     /// <param name="height">The exact image's height.</param>
     /// <returns>The picture, or why there is none.</returns>
+    // Long: each check of an untrusted picture in the order it must run: path, links, size, opened file, header, decode.
     public static PictureRead ReadPicture(string lab, string file, int width, int height)
     {
         ArgumentException.ThrowIfNullOrEmpty(lab);

@@ -2,12 +2,12 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Text;
 using System.Text.RegularExpressions;
-using RayLab.Grading;
 using RayLab.Reports.Imaging;
 using RayLab.Metrics;
+using RayLab.Reports.Output;
 using RayLab.Scenes;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>
 /// <c>raylab grade</c>: for each submitted lab, a copy whose <c>tests/</c>, root build files and <c>nuget.config</c> are
@@ -26,40 +26,20 @@ public static partial class GradeJob
     /// <summary>Runs the grading.</summary>
     /// <param name="request">What to grade.</param>
     /// <param name="stdout">One line per submission, then the report's path.</param>
-    /// <param name="stderr">Errors, one line each.</param>
     /// <param name="cancellation">Stops the submission in progress; no report is written.</param>
-    /// <returns>0 when the report is written (whatever the grades), 1 for bad input, 130 when cancelled.</returns>
-    public static int Run(GradeRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
+    /// <returns>0 when the report is written (whatever the grades).</returns>
+    /// <exception cref="SandboxUnavailableException">The machine has no sandbox, or cannot hold a limit asked for.</exception>
+    /// <exception cref="SceneFileException">The checks' scene file is not valid.</exception>
+    /// <exception cref="OperationCanceledException">The run was cancelled; no report is written.</exception>
+    /// <exception cref="IOException">A file could not be read or written; the message says which (a bad request too).</exception>
+    public static int Run(GradeRequest request, TextWriter stdout, CancellationToken cancellation = default)
     {
         ArgumentNullException.ThrowIfNull(request);
         ArgumentNullException.ThrowIfNull(stdout);
-        ArgumentNullException.ThrowIfNull(stderr);
-        try
-        {
-            return RunChecked(request, stdout, cancellation);
-        }
-        catch (Exception e) when (e is UsageException or SandboxUnavailableException)
-        {
-            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
-            return 1;
-        }
-        catch (SceneFileException e)
-        {
-            stderr.WriteLine($"raylab: error: --checks: {SceneFileException.OneLine(e.Message)}");
-            return 1;
-        }
-        catch (OperationCanceledException)
-        {
-            stderr.WriteLine("raylab: grading cancelled; no report written");
-            return Program.CancelledExitCode;
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
-            return 1;
-        }
+        return RunChecked(request, stdout, cancellation);
     }
 
+    // Long: the grading's one sequence (set-up, sandbox, builds side by side, programs one at a time, report), read top to bottom.
     private static int RunChecked(GradeRequest request, TextWriter stdout, CancellationToken cancellation)
     {
         string work = Directory.CreateTempSubdirectory("raylab-grade-").FullName;
@@ -194,6 +174,7 @@ public static partial class GradeJob
     }
 
     /// <summary>A submission's copy built and checked, the first part of its grading; its program runs later.</summary>
+    // Long: a submission's build, scan and checks as numbered steps, each ending the row where it fails.
     private static GradedLab BuildAndCheck(GradeSetup setup, GradeSandbox sandbox, string submission, StudentRow row, string work, string staging, CancellationToken cancellation)
     {
         string folder = Path.Combine(staging, "students", row.Folder);
@@ -422,6 +403,7 @@ public static partial class GradeJob
         }
     }
 
+    // Long: one loop over the runs of the checks, with what each run's files say.
     private static void RunCheckRuns(GradeSetup setup, GradeSandbox sandbox, CheckFolders folders, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
     {
         for (int attempt = 1; ; attempt++)

@@ -1,6 +1,6 @@
 using System.Runtime.ExceptionServices;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>
 /// Long jobs run a few at a time, each on a thread of its own: <c>raylab grade</c> builds and checks submissions this

@@ -1,6 +1,6 @@
 using System.Xml.Linq;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>
 /// The pinned checks, apart from the lab: for each submission a folder of their own in the grader's work, which the lab's
