@@ -153,7 +153,7 @@ public static partial class GradeJob
     /// </summary>
     /// <param name="names">The submissions' names, in the report's order.</param>
     /// <returns>One distinct folder name per submission.</returns>
-    public static string[] StudentFolders(IReadOnlyList<string> names)
+    internal static string[] StudentFolders(IReadOnlyList<string> names)
     {
         ArgumentNullException.ThrowIfNull(names);
         var taken = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
@@ -385,7 +385,7 @@ public static partial class GradeJob
     /// </summary>
     /// <param name="output">The command's output.</param>
     /// <returns>The listed display names, in order.</returns>
-    public static IEnumerable<string> ListedTests(string output)
+    internal static IEnumerable<string> ListedTests(string output)
     {
         ArgumentNullException.ThrowIfNull(output);
         bool listing = false;
@@ -487,7 +487,7 @@ public static partial class GradeJob
     }
 
     /// <summary>How many times the checks run at most, each without the checks that stopped the runs before it.</summary>
-    public const int MaxCheckRuns = 50;
+    internal const int MaxCheckRuns = 50;
 
     /// <summary>
     /// What one <c>dotnet test</c> run of the checks comes to. Checks that stopped the run (a hang, a crash) are left
@@ -501,7 +501,7 @@ public static partial class GradeJob
     /// <param name="hang">Whether the run was stopped for inactivity (<c>--blame-hang-timeout</c>), not by a crash.</param>
     /// <param name="attempt">This run's number, from 1.</param>
     /// <param name="firstErrors">The run's first error lines, read from its output when the verdict needs them.</param>
-    public static CheckRunVerdict JudgeCheckRun(bool trxWritten, int checksRecorded, int stopped, bool hang, int attempt, Func<string> firstErrors)
+    internal static CheckRunVerdict JudgeCheckRun(bool trxWritten, int checksRecorded, int stopped, bool hang, int attempt, Func<string> firstErrors)
     {
         ArgumentNullException.ThrowIfNull(firstErrors);
         if (stopped > 0 && attempt < MaxCheckRuns)
@@ -690,7 +690,7 @@ public static partial class GradeJob
     /// passed and at least one was skipped (the exercise lab's checks skip a section still throwing
     /// NotImplementedException), which earns nothing, as a fail does; otherwise fail; "" when none of its checks ran.
     /// </summary>
-    public static string SectionResult(IReadOnlyCollection<string> outcomes, bool refused)
+    internal static string SectionResult(IReadOnlyCollection<string> outcomes, bool refused)
     {
         ArgumentNullException.ThrowIfNull(outcomes);
         return refused ? "fail"
@@ -709,7 +709,7 @@ public static partial class GradeJob
     /// </summary>
     /// <param name="display">The check's display name.</param>
     /// <returns>The section.</returns>
-    public static string SectionOf(string display)
+    internal static string SectionOf(string display)
     {
         ArgumentNullException.ThrowIfNull(display);
         Match m = SectionPrefix().Match(display);
@@ -855,7 +855,7 @@ internal sealed record PictureScore(double Rmse, double Flip, string? Problem);
 /// <param name="RunAgain">Whether the checks run again, without those that stopped this run.</param>
 /// <param name="Problem">The row's problem, or null for none.</param>
 /// <param name="Detail">The row's detail, or null for none.</param>
-public readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail);
+internal readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail);
 
 /// <summary>Where a submission's checks run: their built folder (read-only to the run) and the folder the run writes, its results.</summary>
 /// <param name="Checks">The checks' folder (<see cref="GradeChecks.Prepare"/>), built.</param>

@@ -446,7 +446,7 @@ internal static class GradeReport
 }
 
 /// <summary>The cells of <c>raylab grade</c>'s grades.csv, safe to open in a spreadsheet.</summary>
-public static class GradeCsv
+internal static class GradeCsv
 {
     /// <summary>
     /// One cell: a text that starts with <c>=</c>, <c>+</c>, <c>-</c>, <c>@</c>, a tab or a carriage return (which a

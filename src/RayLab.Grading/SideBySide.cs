@@ -7,7 +7,7 @@ namespace RayLab.Grading;
 /// way. Its jobs wait minutes on child processes; on the thread pool they would hold the threads that read those
 /// children's output.
 /// </summary>
-public static class SideBySide
+internal static class SideBySide
 {
     /// <summary>
     /// Runs <paramref name="body"/> for items 0 to <paramref name="count"/> − 1 in that order, at most

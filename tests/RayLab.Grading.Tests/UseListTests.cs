@@ -46,7 +46,7 @@ public sealed class UseListTests
     public void TheExerciseLabsListAllowsItsScanAndNothingElseOfTheGrader(string type, string member, UseRefusal expected)
     {
         string list = Path.Combine(AppContext.BaseDirectory, "exercise-uses.json");
-        string assembly = type.StartsWith("RayLab.Grading", StringComparison.Ordinal) ? "RayLab.Grading" : type.StartsWith("RayLab", StringComparison.Ordinal) ? "RayLab.Core" : "System.Runtime";
+        string assembly = type is "RayLab.Grading.UseList" or "RayLab.Grading.AssemblyUses" or "RayLab.Grading.UseFinding" ? "RayLab.Grading.Uses" : type.StartsWith("RayLab.Grading", StringComparison.Ordinal) ? "RayLab.Grading" : type.StartsWith("RayLab", StringComparison.Ordinal) ? "RayLab.Core" : "System.Runtime";
         Assert.Equal(expected, Judge(File.ReadAllText(list), type, member, assembly).Refusal);
     }
 
