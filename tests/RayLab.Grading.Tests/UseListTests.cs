@@ -35,12 +35,13 @@ public sealed class UseListTests
     }
 
     [Theory]
-    // the exercise lab's own list: the skeleton's scan of itself, and nothing else of RayLab.Grading
+    // the exercise lab's own list: the skeleton's scan of itself (RayLab.Grading.Uses), and nothing of the grader,
+    // whose package (RayLab.Grading) is no assembly a lab may use
     [InlineData("RayLab.Grading.UseList", "Load", UseRefusal.None)]
     [InlineData("RayLab.Grading.AssemblyUses", "Read", UseRefusal.None)]
     [InlineData("RayLab.Grading.UseFinding", "Message", UseRefusal.None)]
-    [InlineData("RayLab.Grading.GradeSandbox", "Run", UseRefusal.Forbidden)]
-    [InlineData("RayLab.Grading.SafeZip", "Extract", UseRefusal.Forbidden)]
+    [InlineData("RayLab.Grading.GradeSandbox", "Run", UseRefusal.NotListed)]
+    [InlineData("RayLab.Grading.SafeZip", "Extract", UseRefusal.NotListed)]
     [InlineData("RayLab.OrthoCamera", "GetImagePlane", UseRefusal.ToWrite)]
     [InlineData("System.Diagnostics.Process", "Start", UseRefusal.Forbidden)]
     public void TheExerciseLabsListAllowsItsScanAndNothingElseOfTheGrader(string type, string member, UseRefusal expected)
