@@ -2,6 +2,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Text.Json;
 using RayLab.Cli;
+using RayLab.Grading;
 
 namespace RayLab.Templates.Tests;
 
