@@ -1,3 +1,5 @@
+using RayLab.Tests.Shared;
+
 namespace RayLab.Grading.Tests;
 
 /// <summary>
