@@ -924,7 +924,10 @@ internal sealed record CheckFolders(string Checks, string Results, string Tests)
     /// run to find it), with the settings the project gives <c>dotnet test</c> itself: its run settings file and the
     /// console logger at its verbosity (<see cref="GradeChecks.ProjectTestSettings"/>).
     /// </summary>
-    public IEnumerable<string> TestAssemblyArgs => [Tests, .. GradeChecks.ProjectTestSettings(Checks)];
+    public IEnumerable<string> TestAssemblyArgs => [Tests, .. _settings ??= GradeChecks.ProjectTestSettings(Checks)];
+
+    /// <summary>The project's settings for <c>dotnet test</c>, read from it once for all of the submission's runs.</summary>
+    private IReadOnlyList<string>? _settings;
 
     /// <summary>The launcher of the test host in a sandbox of its own (<see cref="GradeSandbox.TestHostLauncher"/>), or null.</summary>
     public string? Launcher { get; set; }
