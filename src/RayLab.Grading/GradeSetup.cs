@@ -142,7 +142,14 @@ internal sealed class GradeSetup
             throw new GradeRequestException($"--out: '{request.Output}' is inside the {(IsInside(output, checks) ? "checks" : "submissions")} folder; write the report elsewhere");
         }
 
-        OutputFolders.Probe("--out", request.Output); // now, not after every lab is graded
+        try
+        {
+            OutputFolders.Probe("--out", request.Output); // now, not after every lab is graded
+        }
+        catch (UsageException e)
+        {
+            throw new GradeRequestException(e.Message, e);
+        }
 
         foreach (string needed in new[] { Path.Combine("tests", "Lab.Tests"), Path.Combine("src", "Lab") })
         {
