@@ -1,6 +1,5 @@
 using System.CommandLine;
 using RayLab.Grading;
-using RayLab.Reports.Output;
 using RayLab.Scenes;
 
 namespace RayLab.Cli;
@@ -78,7 +77,7 @@ public static class GradeCommand
         {
             return GradeJob.Run(request, stdout, cancellation);
         }
-        catch (Exception e) when (e is UsageException or SandboxUnavailableException)
+        catch (Exception e) when (e is GradeRequestException or SandboxUnavailableException)
         {
             stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
             return 1;

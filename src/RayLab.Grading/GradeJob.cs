@@ -28,6 +28,8 @@ public static partial class GradeJob
     /// <param name="stdout">One line per submission, then the report's path.</param>
     /// <param name="cancellation">Stops the submission in progress; no report is written.</param>
     /// <returns>0 when the report is written (whatever the grades).</returns>
+    /// <exception cref="GradeRequestException">The request cannot be graded (a limit out of range, checks without their
+    /// files, no submissions, a report folder in the way, …); the message names the option.</exception>
     /// <exception cref="SandboxUnavailableException">The machine has no sandbox, or cannot hold a limit asked for.</exception>
     /// <exception cref="SceneFileException">The checks' scene file is not valid.</exception>
     /// <exception cref="OperationCanceledException">The run was cancelled; no report is written.</exception>
@@ -110,7 +112,15 @@ public static partial class GradeJob
             GradeReport.Write(staging, setup, reference, rows, sandbox.IsSandboxed);
             string? worksheet = GradeMarks.WriteWorksheet(staging, setup, rows, stdout);
             Directory.CreateDirectory(setup.Output);
-            ReportFolder.Publish(staging, setup.Output);
+            try
+            {
+                ReportFolder.Publish(staging, setup.Output);
+            }
+            catch (UsageException e)
+            {
+                throw new GradeRequestException(e.Message, e);
+            }
+
             stdout.WriteLine($"wrote {Path.Combine(setup.Output, "index.html")}, grades.csv and grades.json: {rows.Count} submissions");
             if (worksheet is not null)
             {
@@ -142,7 +152,7 @@ public static partial class GradeJob
         cancellation.ThrowIfCancellationRequested();
         if (restore.ExitCode != 0)
         {
-            throw new UsageException($"--checks: the checks do not restore from the feed {setup.Feed}: {FirstErrors(restore.Output, lab)}");
+            throw new GradeRequestException($"--checks: the checks do not restore from the feed {setup.Feed}: {FirstErrors(restore.Output, lab)}");
         }
     }
 

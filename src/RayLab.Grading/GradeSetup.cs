@@ -8,7 +8,7 @@ namespace RayLab.Grading;
 /// <c>raylab grade</c>'s checked input: the submissions (one folder each, by name, or a Moodle download's folder or
 /// zip, by full name), the pinned checks' lab and its grading.json (which pictures to score, which method's rays and
 /// time to show, the points), the feed, the report folder, Moodle's grading worksheet.
-/// Every problem is a <see cref="UsageException"/> naming the option and what is wrong, before anything runs.
+/// Every problem is a <see cref="GradeRequestException"/> naming the option and what is wrong, before anything runs.
 /// </summary>
 internal sealed class GradeSetup
 {
@@ -84,25 +84,25 @@ internal sealed class GradeSetup
         {
             if (value <= TimeSpan.Zero)
             {
-                throw new UsageException($"{option}: expected a number of seconds ≥ 1, got {value.TotalSeconds:0}");
+                throw new GradeRequestException($"{option}: expected a number of seconds ≥ 1, got {value.TotalSeconds:0}");
             }
         }
 
         if (request.Jobs < 1)
         {
-            throw new UsageException($"--jobs: expected a count ≥ 1, got {request.Jobs}");
+            throw new GradeRequestException($"--jobs: expected a count ≥ 1, got {request.Jobs}");
         }
 
         if (request.MemoryLimitMegabytes < 256)
         {
-            throw new UsageException($"--memory-limit: expected megabytes ≥ 256, got {request.MemoryLimitMegabytes}");
+            throw new GradeRequestException($"--memory-limit: expected megabytes ≥ 256, got {request.MemoryLimitMegabytes}");
         }
 
         foreach ((string option, int value, int least, string unit) in new[] { ("--process-limit", request.ProcessLimit, 64, "a count"), ("--disk-limit", request.DiskLimitMegabytes, 64, "megabytes"), ("--cpu-limit", request.CpuLimitSeconds, 10, "seconds") })
         {
             if (value < least)
             {
-                throw new UsageException($"{option}: expected {unit} ≥ {least}, got {value}");
+                throw new GradeRequestException($"{option}: expected {unit} ≥ {least}, got {value}");
             }
         }
 
@@ -110,7 +110,7 @@ internal sealed class GradeSetup
         {
             if (!GradeRequest.LimitNames.Contains(limit))
             {
-                throw new UsageException($"--unsafe-no-limit: expected {string.Join(", ", GradeRequest.LimitNames)}, got '{limit}'");
+                throw new GradeRequestException($"--unsafe-no-limit: expected {string.Join(", ", GradeRequest.LimitNames)}, got '{limit}'");
             }
         }
 
@@ -121,34 +121,41 @@ internal sealed class GradeSetup
             : Path.GetFullPath(request.Feed);
         if (!Directory.Exists(feed) || !Directory.EnumerateFiles(feed, "*.nupkg").Any())
         {
-            throw new UsageException(request.Feed is null
+            throw new GradeRequestException(request.Feed is null
                 ? $"--feed: no packages in {feed} (the kit's feed/ beside checks/); give the feed with --feed"
                 : Directory.Exists(feed) ? $"--feed: no packages (*.nupkg) in {feed}" : File.Exists(feed) ? $"--feed: {feed} is a file, not the feed's folder" : $"--feed: no such folder: {feed}");
         }
 
         if (string.IsNullOrWhiteSpace(request.Output))
         {
-            throw new UsageException("--out: the path is empty");
+            throw new GradeRequestException("--out: the path is empty");
         }
 
         string output = Path.GetFullPath(request.Output);
         if (File.Exists(output))
         {
-            throw new UsageException($"--out: '{request.Output}' is a file; the report is a folder");
+            throw new GradeRequestException($"--out: '{request.Output}' is a file; the report is a folder");
         }
 
         if ((Directory.Exists(request.Submissions) && IsInside(output, submissions)) || IsInside(output, checks))
         {
-            throw new UsageException($"--out: '{request.Output}' is inside the {(IsInside(output, checks) ? "checks" : "submissions")} folder; write the report elsewhere");
+            throw new GradeRequestException($"--out: '{request.Output}' is inside the {(IsInside(output, checks) ? "checks" : "submissions")} folder; write the report elsewhere");
         }
 
-        OutputFolders.Probe("--out", request.Output); // now, not after every lab is graded
+        try
+        {
+            OutputFolders.Probe("--out", request.Output); // now, not after every lab is graded
+        }
+        catch (UsageException e)
+        {
+            throw new GradeRequestException(e.Message, e);
+        }
 
         foreach (string needed in new[] { Path.Combine("tests", "Lab.Tests"), Path.Combine("src", "Lab") })
         {
             if (!Directory.Exists(Path.Combine(checks, needed)))
             {
-                throw new UsageException($"--checks: {checks} has no {needed}; give a kit's checks/exercise or checks/method");
+                throw new GradeRequestException($"--checks: {checks} has no {needed}; give a kit's checks/exercise or checks/method");
             }
         }
 
@@ -156,14 +163,14 @@ internal sealed class GradeSetup
         {
             if (!File.Exists(Path.Combine(checks, needed)))
             {
-                throw new UsageException($"--checks: {checks} has no {needed}; give a kit's checks/exercise or checks/method");
+                throw new GradeRequestException($"--checks: {checks} has no {needed}; give a kit's checks/exercise or checks/method");
             }
         }
 
         ClassSubmission[] students = [.. ClassSubmissions.Read(submissions)];
         if (students.Length == 0)
         {
-            throw new UsageException(Directory.EnumerateFiles(submissions).Any(f => f.Contains("_assignsubmission_", StringComparison.Ordinal))
+            throw new GradeRequestException(Directory.EnumerateFiles(submissions).Any(f => f.Contains("_assignsubmission_", StringComparison.Ordinal))
                 ? $"submissions: {request.Submissions} holds Moodle's files without their folders; download them again with \"Download submissions in folders\""
                 : $"submissions: {request.Submissions} has no folders; it holds one folder per student, each a lab or the zip of one");
         }
@@ -187,7 +194,7 @@ internal sealed class GradeSetup
             }
             catch (FormatException e)
             {
-                throw new UsageException($"--checks: {e.Message}");
+                throw new GradeRequestException($"--checks: {e.Message}");
             }
         }
 
@@ -231,13 +238,13 @@ internal sealed class GradeSetup
                 {
                     if (!Pictures.ContainsKey(picture.Name))
                     {
-                        throw new UsageException($"--checks: {path}: pictures.{picture.Name}: expected a camera, orthographic or perspective");
+                        throw new GradeRequestException($"--checks: {path}: pictures.{picture.Name}: expected a camera, orthographic or perspective");
                     }
 
                     string file = picture.Value.GetString() ?? "";
                     if (file.Length == 0 || Path.IsPathRooted(file) || file.Split('/', '\\').Contains(".."))
                     {
-                        throw new UsageException($"--checks: {path}: pictures.{picture.Name}: expected a path inside the lab, got '{file}'");
+                        throw new GradeRequestException($"--checks: {path}: pictures.{picture.Name}: expected a path inside the lab, got '{file}'");
                     }
 
                     Pictures[picture.Name] = file;
@@ -248,11 +255,11 @@ internal sealed class GradeSetup
         }
         catch (GradingFileException e)
         {
-            throw new UsageException($"--checks: {e.Message}");
+            throw new GradeRequestException($"--checks: {e.Message}");
         }
         catch (Exception e) when (e is JsonException or InvalidOperationException)
         {
-            throw new UsageException($"--checks: {path}: {e.Message}");
+            throw new GradeRequestException($"--checks: {path}: {e.Message}");
         }
     }
 
@@ -271,7 +278,7 @@ internal sealed class GradeSetup
         }
         catch (ZipRefusedException e)
         {
-            throw new UsageException($"submissions: {path}: zip refused: {e.Message}");
+            throw new GradeRequestException($"submissions: {path}: zip refused: {e.Message}");
         }
 
         return download;
@@ -289,7 +296,7 @@ internal sealed class GradeSetup
 
         if (!File.Exists(path))
         {
-            throw new UsageException(Directory.Exists(path) ? $"--moodle-worksheet: '{path}' is a folder; give the worksheet's CSV file" : $"--moodle-worksheet: no such file '{path}'");
+            throw new GradeRequestException(Directory.Exists(path) ? $"--moodle-worksheet: '{path}' is a folder; give the worksheet's CSV file" : $"--moodle-worksheet: no such file '{path}'");
         }
 
         try
@@ -298,7 +305,7 @@ internal sealed class GradeSetup
         }
         catch (MoodleWorksheetException e)
         {
-            throw new UsageException($"--moodle-worksheet: {e.Message}");
+            throw new GradeRequestException($"--moodle-worksheet: {e.Message}");
         }
     }
 
@@ -306,12 +313,12 @@ internal sealed class GradeSetup
     {
         if (string.IsNullOrWhiteSpace(path))
         {
-            throw new UsageException($"{option}: the path is empty");
+            throw new GradeRequestException($"{option}: the path is empty");
         }
 
         if (!Directory.Exists(path))
         {
-            throw new UsageException(File.Exists(path) ? $"{option}: '{path}' is a file, not a folder" : $"{option}: no such folder '{path}'");
+            throw new GradeRequestException(File.Exists(path) ? $"{option}: '{path}' is a file, not a folder" : $"{option}: no such folder '{path}'");
         }
 
         return Path.GetFullPath(path).TrimEnd(Path.DirectorySeparatorChar);

@@ -9,6 +9,20 @@ namespace RayLab.Grading.Tests;
 public sealed class GradeJobTests
 {
     [Theory]
+    [InlineData(0, 60, 2048, "--jobs", "--jobs: expected a count ≥ 1, got 0")]
+    [InlineData(1, 0, 2048, "--check-timeout", "--check-timeout: expected a number of seconds ≥ 1, got 0")]
+    [InlineData(1, 60, 100, "--memory-limit", "--memory-limit: expected megabytes ≥ 256, got 100")]
+    public void ARequestThatCannotBeGradedThrowsTheLibrarysOwnExceptionNamingTheOption(int jobs, int checkSeconds, int memory, string option, string message)
+    {
+        var request = new GradeRequest("submissions", "checks", null, "report", TimeSpan.FromSeconds(checkSeconds),
+            TimeSpan.FromSeconds(60), TimeSpan.FromSeconds(600), UnsafeNoSandbox: true) { Jobs = jobs, MemoryLimitMegabytes = memory };
+        GradeRequestException e = Assert.Throws<GradeRequestException>(() => GradeJob.Run(request, TextWriter.Null, TestContext.Current.CancellationToken));
+        Assert.Equal(option, e.Option);
+        Assert.Equal(message, e.Message);
+        Assert.Equal("", new GradeRequestException("no option named here").Option);
+    }
+
+    [Theory]
     [InlineData("3.2 Kamera perspektywiczna: promień przez środek piksela", "3.2")]
     [InlineData("4.1.4 Adaptacyjne: podział, gdy kontrast > 0,05", "4.1.4")]
     [InlineData("5 Zadanie: dwie kule", "5")]
