@@ -122,6 +122,9 @@ public abstract class ImagePlane
     /// <summary>The window's width per pixel, su = (u1 − u0)/W.</summary>
     internal double PixelWidth { get; }
 
+    /// <summary>What the plane's rays are made from, as one unmanaged value (the ray formula's input on every path).</summary>
+    internal RayBasis Basis { get; private protected init; }
+
     /// <summary>The window's height per pixel, sv = (v1 − v0)/H.</summary>
     internal double PixelHeight { get; }
 
