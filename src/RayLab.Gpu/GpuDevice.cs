@@ -12,7 +12,7 @@ namespace RayLab.Gpu;
 /// <summary>
 /// A GPU that renders RayLab's point-sampled images (<see cref="RenderDevice"/>): a CUDA device through ILGPU, or,
 /// for tests and for checking the bytes where no GPU is, ILGPU's CPU accelerator, which runs the same kernel's code.
-/// It renders the built-in regular, jittered and random samplers with both cameras into 8-bit images, with the
+/// It renders the built-in regular, jittered, random and Hammersley samplers with both cameras into 8-bit images, with the
 /// bytes of the CPU kernel <see cref="Renderer.Kernel"/> chooses; every other render goes to the CPU renderers in the
 /// same call. Made once and kept: the kernel is compiled on the first render (for CUDA, PTX generation and load);
 /// <see cref="Dispose"/> frees the device.
@@ -91,6 +91,9 @@ public sealed class GpuDevice : RenderDevice, IDisposable
         return context.GetCudaDevices().Count > 0;
     }
 
+    /// <summary>The last render's kernel alone, launch to finish, without the uploads and the copy back (the measuring test).</summary>
+    internal TimeSpan LastKernelTime { get; private set; }
+
     /// <summary>Compiles and loads the kernel now, so that the first render's time does not include it.</summary>
     public void Warm()
     {
@@ -140,6 +143,10 @@ public sealed class GpuDevice : RenderDevice, IDisposable
                 frame.Sampler = DeviceSampler.Random;
                 frame.Salt = random.Salt;
                 break;
+            case HammersleySampler hammersley:
+                frame.Sampler = DeviceSampler.Hammersley;
+                frame.Salt = hammersley.Salt;
+                break;
             default:
                 return null;
         }
@@ -155,7 +162,7 @@ public sealed class GpuDevice : RenderDevice, IDisposable
             return null;
         }
 
-        RenderKernel kernel = KernelChoice.Choose(options.Kernel, scene, plane, out _, out string? reason);
+        RenderKernel cpuKernel = KernelChoice.Choose(options.Kernel, scene, plane, out _, out string? reason);
         if (FrameOf(sampler) is not PointFrame settings)
         {
             return null;
@@ -164,7 +171,7 @@ public sealed class GpuDevice : RenderDevice, IDisposable
         options.CancellationToken.ThrowIfCancellationRequested();
         settings.Basis = plane.Basis;
         settings.Background = scene.Background;
-        settings.Lanes = kernel != RenderKernel.Scalar ? 1 : 0;
+        settings.Lanes = cpuKernel != RenderKernel.Scalar ? 1 : 0;
         settings.FirstRow = first;
         int width = image.Width, rows = end - first;
         var spheres = new DeviceSphere[Math.Max(1, scene.Spheres.Count)];
@@ -182,8 +189,12 @@ public sealed class GpuDevice : RenderDevice, IDisposable
             using MemoryBuffer1D<DeviceSphere, Stride1D.Dense> sphereBuffer = _accelerator.Allocate1D(spheres);
             using MemoryBuffer1D<byte, Stride1D.Dense> output = _accelerator.Allocate1D<byte>(bytes.LongLength);
             ArrayView<DeviceSphere> sphereView = sphereBuffer.View.SubView(0, scene.Spheres.Count);
-            Kernel(width * rows, settings, sphereView, output.View);
+            Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<byte>> kernel = Kernel;
             _accelerator.Synchronize();
+            long launched = Stopwatch.GetTimestamp();
+            kernel(width * rows, settings, sphereView, output.View);
+            _accelerator.Synchronize();
+            LastKernelTime = Stopwatch.GetElapsedTime(launched);
             output.CopyToCPU(bytes);
         }
 
@@ -195,7 +206,7 @@ public sealed class GpuDevice : RenderDevice, IDisposable
 
         return new RenderStatistics((long)width * rows * sampler.SamplesPerPixel, clock.Elapsed)
         {
-            Kernel = kernel,
+            Kernel = cpuKernel,
             Device = Name,
             ScalarReason = reason,
         };

@@ -16,6 +16,9 @@ internal enum DeviceSampler
 
     /// <summary><see cref="RandomSampler"/>.</summary>
     Random,
+
+    /// <summary><see cref="HammersleySampler"/>.</summary>
+    Hammersley,
 }
 
 /// <summary>A sphere as the kernel reads it: centre, radius and its flat colour (<see cref="Scene.ColourOf"/>).</summary>
@@ -123,10 +126,16 @@ internal static class PointKernel
                 JitteredSampler.Formula.Point<FloatLane, FloatLaneMath>(keys, i, JitteredSampler.Formula.CellOf(i, frame.GridSize), frame.GridSize, frame.JitterScale, out FloatLane px, out FloatLane py);
                 (sx, sy) = (px.Value, py.Value);
             }
-            else
+            else if (frame.Sampler == DeviceSampler.Random)
             {
                 RandomSampler.Formula.Point<FloatLane, FloatLaneMath>(keys, i, out FloatLane px, out FloatLane py);
                 (sx, sy) = (px.Value, py.Value);
+            }
+            else
+            {
+                HammersleySampler.Formula.Shift<FloatLane, FloatLaneMath>(keys, out FloatLane shiftX, out FloatLane shiftY);
+                SamplePoint p = HammersleySampler.Formula.Unshifted(i, frame.Samples);
+                (sx, sy) = (FloatLaneMath.Shifted(p.X, shiftX).Value, FloatLaneMath.Shifted(p.Y, shiftY).Value);
             }
 
             Intensity colour = Trace(frame, spheres, frame.Basis.GetPixelRay(x, row, sx, sy));
@@ -155,10 +164,16 @@ internal static class PointKernel
                 JitteredSampler.Formula.Point<ScalarLane, ScalarMath>(keys, i, JitteredSampler.Formula.CellOf(i, frame.GridSize), frame.GridSize, frame.JitterScale, out ScalarLane px, out ScalarLane py);
                 (sx, sy) = (px.Value, py.Value);
             }
-            else
+            else if (frame.Sampler == DeviceSampler.Random)
             {
                 RandomSampler.Formula.Point<ScalarLane, ScalarMath>(keys, i, out ScalarLane px, out ScalarLane py);
                 (sx, sy) = (px.Value, py.Value);
+            }
+            else
+            {
+                HammersleySampler.Formula.Shift<ScalarLane, ScalarMath>(keys, out ScalarLane shiftX, out ScalarLane shiftY);
+                SamplePoint p = HammersleySampler.Formula.Unshifted(i, n);
+                (sx, sy) = (ScalarMath.Shifted(p.X, shiftX).Value, ScalarMath.Shifted(p.Y, shiftY).Value);
             }
 
             Intensity value = Trace(frame, spheres, frame.Basis.GetPixelRay(x, row, sx, sy));

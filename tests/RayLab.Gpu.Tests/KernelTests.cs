@@ -42,6 +42,8 @@ public class KernelTests
     [InlineData("jittered", 9)]
     [InlineData("jittered", 1024)]
     [InlineData("random", 6)]
+    [InlineData("hammersley", 6)]
+    [InlineData("hammersley", 1024)]
     public void TheDevicePointsAreTheLanesFloats(string sampler, int samples)
     {
         // FloatLaneMath is one lane of LaneMath in plain code: the same float for every point of a row of pixels.
@@ -60,9 +62,15 @@ public class KernelTests
                 {
                     JitteredSampler.Formula.Point<Lanes128, LaneMath<Lanes128>>(keys, i, JitteredSampler.Formula.CellOf(i, grid), grid, scale, out lx, out ly);
                 }
-                else
+                else if (sampler == "random")
                 {
                     RandomSampler.Formula.Point<Lanes128, LaneMath<Lanes128>>(keys, i, out lx, out ly);
+                }
+                else
+                {
+                    HammersleySampler.Formula.Shift<Lanes128, LaneMath<Lanes128>>(keys, out Lanes128 shiftX, out Lanes128 shiftY);
+                    SamplePoint p = HammersleySampler.Formula.Unshifted(i, samples);
+                    (lx, ly) = (LaneMath<Lanes128>.Shifted(p.X, shiftX), LaneMath<Lanes128>.Shifted(p.Y, shiftY));
                 }
 
                 lx.Store(lane);
@@ -75,9 +83,15 @@ public class KernelTests
                     {
                         JitteredSampler.Formula.Point<FloatLane, FloatLaneMath>(key, i, JitteredSampler.Formula.CellOf(i, grid), grid, scale, out fx, out fy);
                     }
-                    else
+                    else if (sampler == "random")
                     {
                         RandomSampler.Formula.Point<FloatLane, FloatLaneMath>(key, i, out fx, out fy);
+                    }
+                    else
+                    {
+                        HammersleySampler.Formula.Shift<FloatLane, FloatLaneMath>(key, out FloatLane shiftX, out FloatLane shiftY);
+                        SamplePoint p = HammersleySampler.Formula.Unshifted(i, samples);
+                        (fx, fy) = (FloatLaneMath.Shifted(p.X, shiftX), FloatLaneMath.Shifted(p.Y, shiftY));
                     }
 
                     differing += fx.Value == lane[k] && fy.Value == lane[Lanes128.Count + k] ? 0 : 1;

@@ -17,7 +17,7 @@ public class SameBytesTests(CpuAcceleratorFixture fixture) : IClassFixture<CpuAc
         var data = new TheoryData<string, string, int, RenderKernel>();
         foreach (string camera in TestScenes.Cameras.Keys)
         {
-            foreach ((string sampler, int[] counts) in new[] { ("regular", new[] { 1, 9 }), ("jittered", new[] { 4, 16 }), ("random", new[] { 1, 6 }) })
+            foreach ((string sampler, int[] counts) in new[] { ("regular", new[] { 1, 9 }), ("jittered", new[] { 4, 16 }), ("random", new[] { 1, 6 }), ("hammersley", new[] { 6 }) })
             {
                 foreach (int n in counts)
                 {
@@ -52,6 +52,7 @@ public class SameBytesTests(CpuAcceleratorFixture fixture) : IClassFixture<CpuAc
     [InlineData("regular")]
     [InlineData("jittered")]
     [InlineData("random")]
+    [InlineData("hammersley")]
     public void TheDeviceKeepsTheGoldenSetsBytes(string sampler)
     {
         // The golden set (tests/RayLab.Tests/Golden) pins 37×23 renders of each sampler, camera and kernel: the device's
@@ -63,7 +64,7 @@ public class SameBytesTests(CpuAcceleratorFixture fixture) : IClassFixture<CpuAc
         int checkedCount = 0;
         foreach ((string cameraName, Camera camera) in TestScenes.Cameras)
         {
-            foreach (int n in sampler is "random" ? new[] { 1, 6, 16 } : [1, 9, 16])
+            foreach (int n in sampler is "regular" or "jittered" ? new[] { 1, 9, 16 } : [1, 6, 16])
             {
                 foreach ((RenderKernel kernel, string pinned) in new[] { (RenderKernel.Auto, "Vector512"), (RenderKernel.Scalar, "Scalar") })
                 {

@@ -39,20 +39,29 @@ internal readonly struct RayBasis
     /// <summary>1 for the orthographic projection, 0 for the perspective one (a kernel parameter holds no bool: not blittable).</summary>
     private readonly int _orthographic;
 
-    /// <summary>The basis of a plane's rays.</summary>
-    /// <param name="plane">The plane.</param>
-    public RayBasis(ImagePlane plane)
+    /// <summary>The basis of a plane's rays (<see cref="ImagePlane.Basis"/>).</summary>
+    /// <param name="eye">e.</param>
+    /// <param name="a">a.</param>
+    /// <param name="b">b.</param>
+    /// <param name="c">c.</param>
+    /// <param name="parallelDirection">The orthographic direction.</param>
+    /// <param name="width">W.</param>
+    /// <param name="height">H.</param>
+    /// <param name="tMin">The smallest visible t.</param>
+    /// <param name="tMax">The largest visible t.</param>
+    /// <param name="orthographic">True for the orthographic projection.</param>
+    public RayBasis(Double3 eye, Double3 a, Double3 b, Double3 c, Double3 parallelDirection, int width, int height, double tMin, double tMax, bool orthographic)
     {
-        Eye = plane.Eye;
-        A = plane.A;
-        B = plane.B;
-        C = plane.C;
-        ParallelDirection = plane.ParallelDirection;
-        Width = plane.Width;
-        Height = plane.Height;
-        TMin = plane.TMin;
-        TMax = plane.TMax;
-        _orthographic = plane.IsOrthographic ? 1 : 0;
+        Eye = eye;
+        A = a;
+        B = b;
+        C = c;
+        ParallelDirection = parallelDirection;
+        Width = width;
+        Height = height;
+        TMin = tMin;
+        TMax = tMax;
+        _orthographic = orthographic ? 1 : 0;
     }
 
     /// <summary>True for the orthographic projection, false for the perspective one.</summary>
