@@ -40,8 +40,8 @@ public sealed class DeviceCliTests : IDisposable
     [Fact]
     public void AnUnknownDeviceIsAOneLineErrorListingTheChoices()
     {
-        var r = ConsoleRunner.Run("render", Scene, "-o", Path.Combine(_dir, "d.png"), "--device", "tpu");
+        var r = ConsoleRunner.Run("render", Scene, "-o", Path.Combine(_dir, "d.png"), "--device", "quantum");
         Assert.Equal(1, r.Code);
-        Assert.Equal("raylab: error: --device: unknown device 'tpu'; expected one of: cpu, gpu, auto", r.Err.TrimEnd());
+        Assert.Equal("raylab: error: --device: unknown device 'quantum'; expected one of: cpu, gpu, auto", r.Err.TrimEnd());
     }
 }
