@@ -87,13 +87,14 @@ public static class Program
         var quincunx = new Option<bool>("--quincunx") { Description = $"Adaptive: trace every pixel's centre, even where its corners agree (≈ 1 ray per pixel more). Default: the scene's sampler.quincunx; {(d.Quincunx ? "true" : "false")} if omitted." };
         var guard = new Option<bool>("--guard") { Description = $"Adaptive: also refine, down to the maximum depth, every square a sphere's silhouette may cross although its points agree (never loses a small sphere or a sliver). Default: the scene's sampler.guard; {(d.Guard ? "true" : "false")} if omitted." };
         var kernel = new Option<string?>("--kernel") { Description = $"Point samplers and the adaptive sampler's traced points: the render loop, {Choices(RenderJob.Kernels)}; auto takes the widest SIMD packet the CPU runs, scalar is the double-precision reference loop. Default: auto.", HelpName = "KERNEL" };
+        var device = new Option<string?>("--device") { Description = $"Point samplers (regular, jittered, random, hammersley): where the render runs, {Choices(DeviceChoice.Names)}; gpu is the first CUDA GPU (an error where there is none), auto the GPU where there is one, else the CPU. Same bytes on each; other methods render on the CPU. Not in the native build. Default: cpu.", HelpName = "DEVICE" };
         var heatmap = new Option<string?>("--heatmap") { Description = "Also write the primary rays spent per pixel as an image with a legend, .png, .bmp, .jpg/.jpeg or .webp. Default: none.", HelpName = "HEAT.png" };
         var warmup = new Option<bool>("--warmup") { Description = "For timing: render the scene scaled down first and commit the image's memory, so that the render's time (printed, and the stats file's renderMs) leaves out JIT compilation and page faults; the stats file gives them as warmupMs and commitMs. Default: off, the render is done once." };
         var quality = new Option<int?>("--quality") { Description = $"JPEG and WebP quality, 0 to 100 (higher keeps more detail in a larger file); PNG and BMP are lossless and ignore it. Default: {ImageFormats.DefaultQuality}.", HelpName = "Q" };
 
         var render = new Command("render", "Render a scene file into an image.")
         {
-            scene, output, camera, sampler, samples, seed, minDepth, maxDepth, contrast, quincunx, guard, width, height, threads, kernel, stats, warmup, heatmap, quality,
+            scene, output, camera, sampler, samples, seed, minDepth, maxDepth, contrast, quincunx, guard, width, height, threads, kernel, device, stats, warmup, heatmap, quality,
         };
         render.SetAction(result => RenderJob.Run(
             new RenderRequest(
@@ -115,7 +116,8 @@ public static class Program
                 result.GetValue(quincunx),
                 result.GetValue(guard),
                 result.GetValue(quality),
-                result.GetValue(warmup)),
+                result.GetValue(warmup),
+                result.GetValue(device)),
             stdout,
             stderr,
             cancellation));

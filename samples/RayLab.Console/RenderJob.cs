@@ -114,6 +114,7 @@ public static class RenderJob
         CheckChoice(request.Camera, "--camera", "camera", CameraSettings.Types);
         CheckChoice(request.Sampler, "--sampler", "sampler", SamplerSettings.Types);
         CheckChoice(request.Kernel, "--kernel", "kernel", Kernels);
+        CheckChoice(request.Device, "--device", "device", DeviceChoice.Names);
 
         if (request.Threads is < 1)
         {
@@ -132,6 +133,7 @@ public static class RenderJob
         var renderer = new Renderer
         {
             MaxDegreeOfParallelism = request.Threads ?? -1, Kernel = ParseKernel(request.Kernel), Progress = progress, CancellationToken = cancellation,
+            Device = DeviceChoice.Open(request.Device),
         };
         // The measurement harness, only when asked for (--warmup; the timing tools pass it): a smaller render of the
         // same scene first, so that renderMs is the render and not the JIT compiling it (the native anchors are
@@ -386,6 +388,7 @@ public static class RenderJob
             Kernel = stats.Kernel.ToString().ToLowerInvariant(),
             RetracedSamples = stats.RetracedSamples,
             ScalarReason = stats.ScalarReason,
+            Device = stats.Device ?? "cpu",
         };
         return System.Text.Encoding.UTF8.GetBytes(JsonSerializer.Serialize(json, RenderStatsJson.Default.RenderStatsFile) + Environment.NewLine);
     }

@@ -20,11 +20,12 @@ namespace RayLab.Cli;
 /// <param name="Guard">Adaptive: also refine squares a sphere's silhouette may cross.</param>
 /// <param name="Quality">JPEG/WebP quality (0–100), null for <c>ImageFormats.DefaultQuality</c>.</param>
 /// <param name="Warmup">The timing harness: a scaled-down warm-up render and the image's pages committed before the timed render.</param>
+/// <param name="Device">Point samplers: where the render runs, <c>cpu</c>, <c>gpu</c> or <c>auto</c>; null for the CPU.</param>
 public sealed record RenderRequest(
     string ScenePath, string OutputPath, string? Camera = null, string? Sampler = null, int? Samples = null,
     uint? Seed = null, int? Threads = null, int? Width = null, int? Height = null, string? StatsPath = null,
     int? MinDepth = null, int? MaxDepth = null, double? Contrast = null, string? HeatmapPath = null,
-    string? Kernel = null, bool Quincunx = false, bool Guard = false, int? Quality = null, bool Warmup = false)
+    string? Kernel = null, bool Quincunx = false, bool Guard = false, int? Quality = null, bool Warmup = false, string? Device = null)
 {
     /// <summary>The options that override scene-file fields.</summary>
     internal SceneOverrides Overrides => new(Width, Height, Camera, Sampler, Samples, Seed, MinDepth, MaxDepth, Contrast, Quincunx, Guard);

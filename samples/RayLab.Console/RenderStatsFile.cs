@@ -81,6 +81,9 @@ public sealed record RenderStatsFile
 
     /// <summary>Why the render fell back to the double loop, if it did.</summary>
     public string? ScalarReason { get; init; }
+
+    /// <summary>The device that rendered: "cpu", or the GPU's name (<c>--device</c>).</summary>
+    public string Device { get; init; } = "cpu";
 }
 
 /// <summary>The stats file's JSON, generated at compile time (no reflection, so the native build can write it; the serializing code alone, without the metadata that reading would need).</summary>

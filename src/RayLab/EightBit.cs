@@ -58,6 +58,16 @@ public static class EightBit
     }
 
     /// <summary>Room for one packed RGB word per lane of the widest packet, on the stack.</summary>
+    /// <summary>
+    /// The level <see cref="WriteLanes"/> gives one lane, in scalar code (a device kernel's form of it): the sum times
+    /// the scale in float, capped at 255 and truncated. Used where lanes are not, so both give one byte.
+    /// </summary>
+    /// <param name="sum">The pixel's sum of sample values, in float.</param>
+    /// <param name="scale">256/n in float.</param>
+    /// <returns>The level, 0..255.</returns>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static byte LaneLevel(float sum, float scale) => (byte)(int)MathF.Min(sum * scale, Top);
+
     [InlineArray(16)]
     private struct WordBuffer
     {

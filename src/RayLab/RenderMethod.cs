@@ -104,7 +104,8 @@ public abstract class RenderMethod
 
         internal override RenderStatistics Render(Scene scene, ImagePlane plane, PixelTarget image, RenderOptions options, float[]? raysPerPixel)
         {
-            RenderStatistics stats = PointRenderer.Render(scene, plane, sampler, image, options);
+            RenderStatistics stats = options.Device?.TryRender(scene, plane, sampler, image, options)
+                ?? PointRenderer.Render(scene, plane, sampler, image, options);
             RowsOf(raysPerPixel, image, options).Fill(sampler.SamplesPerPixel);
             return stats;
         }

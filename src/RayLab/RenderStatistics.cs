@@ -17,6 +17,12 @@ public readonly record struct RenderStatistics(long PrimaryRays, TimeSpan Render
     /// </summary>
     public long RetracedSamples { get; init; }
 
+    /// <summary>
+    /// The device that rendered, by <see cref="RenderDevice.Name"/>: null for the CPU renderers. A device's render
+    /// reports the CPU kernel whose bytes it reproduces as <see cref="Kernel"/>.
+    /// </summary>
+    public string? Device { get; init; }
+
     /// <summary>Why an <see cref="RenderKernel.Auto"/> render took the scalar path, when the scene was the reason; else null.</summary>
     public string? ScalarReason { get; init; }
 }

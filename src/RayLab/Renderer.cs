@@ -36,6 +36,21 @@ public sealed class Renderer
     public RenderKernel Kernel { get; init; } = RenderKernel.Auto;
 
     /// <summary>
+    /// Where point-sampled renders run: <see cref="RenderDevice.Cpu"/> (the default), or a device from another package
+    /// (<c>RayLab.Gpu</c>). A device gives the bytes of the CPU kernel <see cref="Kernel"/> chooses; what it cannot
+    /// render (a sampler of your own, adaptive, exact, a pixel method) the CPU renders in the same call, and
+    /// <see cref="RenderStatistics.Device"/> says which ran.
+    /// </summary>
+    /// <exception cref="ArgumentNullException">The value is null.</exception>
+    public RenderDevice Device
+    {
+        get => _device;
+        init => _device = value ?? throw new ArgumentNullException(nameof(value));
+    }
+
+    private readonly RenderDevice _device = RenderDevice.Cpu;
+
+    /// <summary>
     /// Optional: counts finished rows while a render runs, for a progress bar polled from another thread.
     /// </summary>
     public RenderProgress? Progress { get; init; }
@@ -49,7 +64,7 @@ public sealed class Renderer
     /// <summary>The per-thread buffers kept from one render to the next (the adaptive renderer's lines and caches).</summary>
     private readonly ScratchPool _pool = new();
 
-    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool) { Trace = Trace, RowPieces = RowPieces };
+    internal RenderOptions Options => new(MaxDegreeOfParallelism, Kernel, Progress, CancellationToken, _pool) { Trace = Trace, RowPieces = RowPieces, Device = _device };
 
     /// <summary>Records the next renders' row-loop phases and band times (the scaling tool); null records nothing.</summary>
     internal RowLoopTrace? Trace { get; set; }

@@ -1,3 +1,5 @@
+using RayLab.Geometry;
+
 namespace RayLab;
 
 /// <summary>A sphere with a flat colour (the lab's sphere from lab I, plus the colour this lab shows it in).</summary>
@@ -54,61 +56,6 @@ public sealed class Sphere
     /// <param name="tMax">The largest accepted parameter.</param>
     /// <param name="t">The parameter of the hit, when there is one.</param>
     /// <returns>True when the ray hits the sphere within the interval.</returns>
-    public bool TryIntersect(in Ray ray, double tMin, double tMax, out double t)
-    {
-        t = double.PositiveInfinity;
-        double r = Radius;
-        if (r == 0)
-        {
-            return false;
-        }
-
-        Double3 d = ray.Direction;
-        Double3 f = ray.Origin - Center;
-        double a = Double3.Dot(d, d);
-        if (!(a > 0) || !double.IsFinite(a))
-        {
-            return false; // zero, NaN or infinite direction: no meaningful hit
-        }
-
-        double b = Double3.Dot(f, d);               // half of the textbook b
-        Double3 perp = f - ((b / a) * d);          // f minus its projection on d
-        double disc = (r * r) - perp.LengthSquared; // (b² − ac)/a, without cancellation
-        if (!(disc >= 0))
-        {
-            return false;
-        }
-
-        double c = f.LengthSquared - (r * r);
-        double sqrtTerm = Math.Sqrt(a) * Math.Sqrt(disc); // not √(a·disc): that product overflows for |d|, r ~ 1e100
-        double q = -(b + (b >= 0 ? sqrtTerm : -sqrtTerm));
-        double t0, t1;
-        if (q == 0)
-        {
-            t0 = t1 = 0; // b = 0 and Δ = 0 only when c = 0: origin on the surface, tangent
-        }
-        else
-        {
-            t0 = q / a;
-            t1 = c / q;
-            if (t0 > t1)
-            {
-                (t0, t1) = (t1, t0);
-            }
-        }
-
-        if (t0 >= tMin && t0 <= tMax)
-        {
-            t = t0;
-            return true;
-        }
-
-        if (t1 >= tMin && t1 <= tMax)
-        {
-            t = t1;
-            return true;
-        }
-
-        return false;
-    }
+    public bool TryIntersect(in Ray ray, double tMin, double tMax, out double t) =>
+        SphereHit.TryIntersect(Center, Radius, ray, tMin, tMax, out t);
 }

@@ -64,6 +64,7 @@ public sealed class HelpTests
     [InlineData("--contrast", "Default: the scene's sampler.contrast;", "≥ 0")]
     [InlineData("--quincunx", "Default: the scene's sampler.quincunx;", "every pixel's centre")]
     [InlineData("--kernel", "Default: auto.", "auto, scalar, vector128, vector256 or vector512")]
+    [InlineData("--device", "Default: cpu.", "cpu, gpu or auto")]
     [InlineData("--width", "Default: the scene's image.width.", "1 to 1048576, with W·H·3 ≤ 2,147,483,591 bytes")]
     [InlineData("--height", "Default: the scene's image.height.", "1 to 1048576, with W·H·3 ≤ 2,147,483,591 bytes")]
     [InlineData("--threads", "Default: all cores", "≥ 1")]
@@ -84,7 +85,7 @@ public sealed class HelpTests
     {
         string[] entries = OptionEntries(RenderHelp());
 
-        Assert.Equal(19, entries.Length); // --output, 17 other options and --help
+        Assert.Equal(20, entries.Length); // --output, 18 other options and --help
         Assert.All(entries.Where(e => !e.Contains("--help", StringComparison.Ordinal)), e =>
             Assert.True(e.Contains("Default:", StringComparison.Ordinal) || e.Contains("(REQUIRED)", StringComparison.Ordinal), e));
     }

@@ -109,10 +109,10 @@ internal interface IProjection : ILaneRays
     static abstract Double3 Frustum(ImagePlane plane, double alpha0, double alpha1, double beta0, double beta1, Span<Plane> planes);
 
     /// <summary>The ray through window point (α, β), in double.</summary>
-    /// <param name="plane">The image plane (e, w and the lab's a, b, c).</param>
+    /// <param name="basis">The image plane's e, a, b, c and −w (<see cref="ImagePlane.Basis"/>).</param>
     /// <param name="alpha">α, left to right.</param>
     /// <param name="beta">β, bottom to top.</param>
-    static abstract Ray GetRay(ImagePlane plane, double alpha, double beta);
+    static abstract Ray GetRay(in RayBasis basis, double alpha, double beta);
 
     /// <summary>
     /// The homogeneous pixel coordinates (Xh, Yh, Zh) of (<paramref name="v"/>, <paramref name="w4"/>) in camera

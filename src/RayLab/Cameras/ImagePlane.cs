@@ -45,6 +45,7 @@ public abstract class ImagePlane
         ParallelDirection = parallelDirection;
         OriginShift = originShift;
         FixedPoint = eye + originShift;
+        Basis = new RayBasis(eye, A, B, C, parallelDirection, width, height, TMin, TMax, orthographic);
     }
 
     /// <summary>The relative margin of <see cref="Visibility"/>: a sphere within 10⁻⁹ of a plane's depth counts as cut by it.</summary>
@@ -121,6 +122,9 @@ public abstract class ImagePlane
 
     /// <summary>The window's width per pixel, su = (u1 − u0)/W.</summary>
     internal double PixelWidth { get; }
+
+    /// <summary>What the plane's rays are made from, as one unmanaged value (the ray formula's input on every path); a field, passed by reference.</summary>
+    internal readonly RayBasis Basis;
 
     /// <summary>The window's height per pixel, sv = (v1 − v0)/H.</summary>
     internal double PixelHeight { get; }

@@ -52,7 +52,7 @@ internal sealed class ImagePlane<TProjection> : ImagePlane
         TProjection.Frustum(this, alpha0, alpha1, beta0, beta1, planes);
 
     /// <inheritdoc />
-    public override Ray GetRay(double alpha, double beta) => TProjection.GetRay(this, alpha, beta);
+    public override Ray GetRay(double alpha, double beta) => TProjection.GetRay(in Basis, alpha, beta);
 
     /// <inheritdoc />
     internal override (double X, double Y, double Z) ToPixelHomogeneous(Double3 v, double w4) => TProjection.ToPixel(this, v, w4);

@@ -73,8 +73,8 @@ internal readonly struct OrthographicProjection : IProjection
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Ray GetRay(ImagePlane plane, double alpha, double beta) =>
-        new(plane.Eye + (plane.C + (alpha * plane.A) + (beta * plane.B)), plane.ParallelDirection);
+    public static Ray GetRay(in RayBasis basis, double alpha, double beta) =>
+        new(basis.Eye + (basis.C + (alpha * basis.A) + (beta * basis.B)), basis.ParallelDirection);
 
     /// <inheritdoc />
     /// <remarks>o = α a + β b relative to e + c, which the frame's sphere offsets e + c − C already hold; d = −w.</remarks>

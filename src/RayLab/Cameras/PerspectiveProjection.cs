@@ -85,8 +85,8 @@ internal readonly struct PerspectiveProjection : IProjection
 
     /// <inheritdoc />
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Ray GetRay(ImagePlane plane, double alpha, double beta) =>
-        new(plane.Eye, plane.C + (alpha * plane.A) + (beta * plane.B));
+    public static Ray GetRay(in RayBasis basis, double alpha, double beta) =>
+        new(basis.Eye, basis.C + (alpha * basis.A) + (beta * basis.B));
 
     /// <inheritdoc />
     /// <remarks>d = c + α a + β b; the origin is e for every lane, which the frame's sphere offsets e − C already hold.</remarks>

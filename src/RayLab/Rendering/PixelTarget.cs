@@ -36,9 +36,14 @@ internal abstract class PixelTarget
     /// <summary>Row <paramref name="y"/> (0 at the top), for the thread that renders it.</summary>
     public abstract TargetRow Row(int y);
 
+    /// <summary>The 8-bit row <paramref name="y"/> of the picture, or an empty span for linear rows (a device writes the bytes it made).</summary>
+    public virtual Span<Rgb24> EightBitRow(int y) => default;
+
     private sealed class EightBitRows(IPixelRows image) : PixelTarget(image.Width, image.Height)
     {
         public override TargetRow Row(int y) => new(image.GetRowSpan(y));
+
+        public override Span<Rgb24> EightBitRow(int y) => image.GetRowSpan(y);
     }
 
     private sealed unsafe class LinearRows(Intensity* pixels, int width, int height, int firstRow) : PixelTarget(width, height)

@@ -24,6 +24,9 @@ internal readonly record struct RenderOptions(int MaxDegreeOfParallelism, Render
     /// <summary>Pieces per row for a renderer that cuts its rows (the adaptive renderer), for the scaling tool; 0 (the default) lets the renderer choose.</summary>
     public int RowPieces { get; init; }
 
+    /// <summary>The device point-sampled renders go to first (<see cref="Renderer.Device"/>); null is the CPU.</summary>
+    public RenderDevice? Device { get; init; }
+
     /// <summary>Records the row loop's phases and band times, for the scaling tool; null (the default) records nothing.</summary>
     public RowLoopTrace? Trace { get; init; }
 

@@ -29,7 +29,7 @@ public sealed class HammersleySampler : PixelSampler, ILaneSampled
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index)
     {
-        Shift<ScalarLane, ScalarMath>(PointHash.PixelKeys<ScalarLane, ScalarMath>(x, y, _salt), out ScalarLane shiftX, out ScalarLane shiftY);
+        Formula.Shift<ScalarLane, ScalarMath>(PointHash.PixelKeys<ScalarLane, ScalarMath>(x, y, _salt), out ScalarLane shiftX, out ScalarLane shiftY);
         SamplePoint point = Unshifted(index);
         return new SamplePoint(ScalarMath.Shifted(point.X, shiftX).Value, ScalarMath.Shifted(point.Y, shiftY).Value);
     }
@@ -39,21 +39,35 @@ public sealed class HammersleySampler : PixelSampler, ILaneSampled
 
     /// <summary>Point <paramref name="index"/> of the unshifted Hammersley set: (index / N, φ₂(index)).</summary>
     /// <param name="index">The sample index.</param>
-    internal SamplePoint Unshifted(int index) =>
-        new((double)index / SamplesPerPixel, LowDiscrepancy.RadicalInverse2((uint)index));
+    internal SamplePoint Unshifted(int index) => Formula.Unshifted(index, SamplesPerPixel);
 
-    /// <summary>
-    /// The toroidal shift of the pixels whose keys are <paramref name="keys"/>, each coordinate's top 24 bits; a
-    /// point is then <see cref="IPointMath{TV}.Shifted"/> by them.
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void Shift<TV, TM>(TV keys, out TV shiftX, out TV shiftY)
-        where TV : struct
-        where TM : IPointMath<TV>
+    /// <summary>The salted seed the pixel keys are made with (the device form's input).</summary>
+    internal uint Salt => _salt;
+
+    /// <summary>The Hammersley point formula, once, for the CPU lanes, the scalar path and the device.</summary>
+    internal readonly struct Formula
     {
-        TV h1 = TM.Hash(TM.Xor(keys, TM.BroadcastBits(ShiftSalt)));
-        shiftX = TM.Top24(h1);
-        shiftY = TM.Top24(TM.Hash(h1));
+        /// <summary>Point <paramref name="index"/> of <paramref name="count"/> before the pixel's shift: (i/N, the radical inverse of i).</summary>
+        /// <param name="index">The sample's index.</param>
+        /// <param name="count">N, the samples per pixel.</param>
+        /// <returns>The point.</returns>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static SamplePoint Unshifted(int index, int count) =>
+            new((double)index / count, LowDiscrepancy.RadicalInverse2((uint)index));
+
+        /// <summary>
+        /// The toroidal shift of the pixels whose keys are <paramref name="keys"/>, each coordinate's top 24 bits; a
+        /// point is then <see cref="IPointMath{TV}.Shifted"/> by them.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Shift<TV, TM>(TV keys, out TV shiftX, out TV shiftY)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            TV h1 = TM.Hash(TM.Xor(keys, TM.BroadcastBits(ShiftSalt)));
+            shiftX = TM.Top24(h1);
+            shiftY = TM.Top24(TM.Hash(h1));
+        }
     }
 
     /// <summary>The points in lanes: the shift made once per packet, each point shifted in double and rounded to float.</summary>
@@ -77,7 +91,7 @@ public sealed class HammersleySampler : PixelSampler, ILaneSampled
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void BeginPacket(int x0, int row) =>
-            Shift<TL, LaneMath<TL>>(PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt), out _shiftX, out _shiftY);
+            Formula.Shift<TL, LaneMath<TL>>(PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt), out _shiftX, out _shiftY);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public readonly int Prepare(int start, int end) => end;

@@ -400,3 +400,112 @@ internal static class PointHash
     /// <summary>The hashed, salted seed that <see cref="PixelKeys"/> takes.</summary>
     public static uint Salt(uint seed) => CounterHash.Hash(seed + CounterHash.Golden);
 }
+
+/// <summary>One pixel's value for <see cref="FloatLaneMath"/>: 32 bits or a float, as the formula's step needs.</summary>
+/// <param name="bits">The bits.</param>
+/// <param name="value">The real, in float.</param>
+internal readonly struct FloatLane(uint bits, float value)
+{
+    /// <summary>The value as bits.</summary>
+    public readonly uint Bits = bits;
+
+    /// <summary>The value as a real.</summary>
+    public readonly float Value = value;
+}
+
+/// <summary>
+/// <see cref="IPointMath{TV}"/> on one pixel with the lanes' float reals, in plain scalar code: what
+/// <see cref="LaneMath{TL}"/> gives one lane, for a device kernel (no SIMD there). Every real is the float that the
+/// lanes give: the float of <see cref="ScalarMath"/>'s double, except <see cref="InCell"/>, which the lanes give as one
+/// fused multiply-add in float; that is formed exactly in double and rounded once (the product of a 24-bit integer
+/// and a float is exact in double, and so is its sum with a float corner in [0, 1) for grids up to 64 cells a side),
+/// so it is the same float with or without a device's contraction of multiply and add.
+/// </summary>
+internal readonly struct FloatLaneMath : IPointMath<FloatLane>
+{
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane BroadcastBits(uint bits) => new(bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane SequenceBits(uint start) => new(start, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane Xor(FloatLane a, FloatLane b) => new(a.Bits ^ b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane And(FloatLane a, FloatLane b) => new(a.Bits & b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane Or(FloatLane a, FloatLane b) => new(a.Bits | b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane AddBits(FloatLane a, FloatLane b) => new(a.Bits + b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane MultiplyBits(FloatLane a, FloatLane b) => new(a.Bits * b.Bits, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane ShiftRightBits(FloatLane bits, int count) => new(bits.Bits >> count, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane ShiftLeftBits(FloatLane bits, int count) => new(bits.Bits << count, 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane Hash(FloatLane bits) => new(CounterHash.Hash(bits.Bits), 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane ReverseBits(FloatLane bits) => new(LowDiscrepancy.ReverseBits(bits.Bits), 0);
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane ToUnit(FloatLane bits) => Real(ScalarMath.ToUnit(Scalar(bits)));
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane Top24(FloatLane bits) => Real(ScalarMath.Top24(Scalar(bits)));
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane Shifted(double q, FloatLane top24) => Real(ScalarMath.Shifted(q, new ScalarLane(0, top24.Value)));
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane InCell(FloatLane bits, int cell, int n, float corner, float scale) =>
+        new(0, (float)(((double)(bits.Bits >> 8) * scale) + corner));
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane InCellExactly(FloatLane cell, FloatLane bits, in CellDivisor n) =>
+        Real(ScalarMath.InCellExactly(Scalar(cell), Scalar(bits), n));
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static FloatLane InSubCell(int cell, FloatLane sub, FloatLane bits, in CellDivisor n) =>
+        Real(ScalarMath.InSubCell(cell, Scalar(sub), Scalar(bits), n));
+
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void InWholeCells(FloatLane cellX, FloatLane subX, FloatLane bitsX, in WholeCell x, FloatLane cellY, FloatLane subY, FloatLane bitsY, in WholeCell y, out FloatLane sx, out FloatLane sy)
+    {
+        ScalarMath.InWholeCells(Scalar(cellX), Scalar(subX), Scalar(bitsX), x, Scalar(cellY), Scalar(subY), Scalar(bitsY), y, out ScalarLane px, out ScalarLane py);
+        sx = Real(px);
+        sy = Real(py);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static ScalarLane Scalar(FloatLane lane) => new(lane.Bits, lane.Value);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static FloatLane Real(ScalarLane lane) => new(0, (float)lane.Value);
+}

@@ -24,22 +24,29 @@ public sealed class RandomSampler : PixelSampler, ILaneSampled
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index)
     {
-        Point<ScalarLane, ScalarMath>(PointHash.PixelKeys<ScalarLane, ScalarMath>(x, y, _salt), index, out ScalarLane sx, out ScalarLane sy);
+        Formula.Point<ScalarLane, ScalarMath>(PointHash.PixelKeys<ScalarLane, ScalarMath>(x, y, _salt), index, out ScalarLane sx, out ScalarLane sy);
         return new SamplePoint(sx.Value, sy.Value);
     }
 
     /// <inheritdoc />
     TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) => user.Run(() => new LaneForm<TL>(_salt));
 
-    /// <summary>Sample <paramref name="index"/> of the pixels whose keys are <paramref name="keys"/>: two hashes, each a coordinate.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void Point<TV, TM>(TV keys, int index, out TV sx, out TV sy)
-        where TV : struct
-        where TM : IPointMath<TV>
+    /// <summary>The salted seed the pixel keys are made with (the device form's input).</summary>
+    internal uint Salt => _salt;
+
+    /// <summary>The random sampler's point formula, once, for the CPU lanes, the scalar path and the device.</summary>
+    internal readonly struct Formula
     {
-        TV h1 = PointHash.SampleHash<TV, TM>(keys, index);
-        sx = TM.ToUnit(h1);
-        sy = TM.ToUnit(TM.Hash(h1));
+        /// <summary>Sample <paramref name="index"/> of the pixels whose keys are <paramref name="keys"/>: two hashes, each a coordinate.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Point<TV, TM>(TV keys, int index, out TV sx, out TV sy)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            TV h1 = PointHash.SampleHash<TV, TM>(keys, index);
+            sx = TM.ToUnit(h1);
+            sy = TM.ToUnit(TM.Hash(h1));
+        }
     }
 
     /// <summary>The points in lanes, one pixel per lane.</summary>
@@ -55,6 +62,6 @@ public sealed class RandomSampler : PixelSampler, ILaneSampled
         public readonly int Prepare(int start, int end) => end;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public readonly void Sample(int index, out TL sx, out TL sy) => Point<TL, LaneMath<TL>>(_keys, index, out sx, out sy);
+        public readonly void Sample(int index, out TL sx, out TL sy) => Formula.Point<TL, LaneMath<TL>>(_keys, index, out sx, out sy);
     }
 }

@@ -20,11 +20,21 @@ public sealed class RegularSampler : GridSampler, ILaneSampled
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index)
     {
-        int n = GridSize;
-        return new SamplePoint(((index % n) + 0.5) / n, ((index / n) + 0.5) / n);
+        return Formula.Point(index, GridSize);
     }
 
     /// <inheritdoc />
+    /// <summary>The regular grid's point formula, once, for the CPU and the device.</summary>
+    internal readonly struct Formula
+    {
+        /// <summary>Sample <paramref name="index"/> of an n×n grid: the centre of its cell, row by row.</summary>
+        /// <param name="index">The sample's index, 0 ≤ index &lt; n².</param>
+        /// <param name="n">The grid's side.</param>
+        /// <returns>The point in the pixel.</returns>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static SamplePoint Point(int index, int n) => new(((index % n) + 0.5) / n, ((index / n) + 0.5) / n);
+    }
+
     TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) => user.Run(() => new LaneForm<TL>(this));
 
     /// <summary>The points in lanes: <see cref="GetSample"/>'s (the same in every pixel) in float, from a table made once.</summary>

@@ -12,7 +12,7 @@ namespace RayLab.Tests.Architecture;
 /// </summary>
 public sealed class CoreNamesNoAddOnTests
 {
-    private static readonly string[] AddOns = ["RayLab.Reports", "RayLab.ImageSharp"];
+    private static readonly string[] AddOns = ["RayLab.Reports", "RayLab.ImageSharp", "RayLab.Gpu", "ILGPU"];
 
     private static (string[] References, string[] Strings) ReadCore()
     {

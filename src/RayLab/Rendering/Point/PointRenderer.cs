@@ -125,7 +125,7 @@ internal static class PointRenderer
         for (int i = 0; i < n; i++)
         {
             SamplePoint s = sampler.GetSample(x, row, i);
-            Ray ray = TP.GetRay(plane, plane.Alpha(x, s.X), plane.Beta(row, s.Y));
+            Ray ray = TP.GetRay(in plane.Basis, plane.Alpha(x, s.X), plane.Beta(row, s.Y));
             Intensity value = plane.Trace(scene, ray);
             r += value.R;
             g += value.G;

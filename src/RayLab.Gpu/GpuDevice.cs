@@ -1,0 +1,214 @@
+using System.Diagnostics;
+using ILGPU;
+using ILGPU.Runtime;
+using ILGPU.Runtime.CPU;
+using ILGPU.Runtime.Cuda;
+using RayLab.Cameras;
+using RayLab.Rendering;
+using RayLab.Sampling;
+
+namespace RayLab.Gpu;
+
+/// <summary>
+/// A GPU that renders RayLab's point-sampled images (<see cref="RenderDevice"/>): a CUDA device through ILGPU, or,
+/// for tests and for checking the bytes where no GPU is, ILGPU's CPU accelerator, which runs the same kernel's code.
+/// It renders the built-in regular, jittered, random and Hammersley samplers with both cameras into 8-bit images, with the
+/// bytes of the CPU kernel <see cref="Renderer.Kernel"/> chooses; every other render goes to the CPU renderers in the
+/// same call. Made once and kept: the kernel is compiled on the first render (for CUDA, PTX generation and load);
+/// <see cref="Dispose"/> frees the device.
+/// </summary>
+public sealed class GpuDevice : RenderDevice, IDisposable
+{
+    private readonly Context _context;
+    private readonly Accelerator _accelerator;
+    private readonly Lock _lock = new();
+    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<byte>>? _kernel;
+    private bool _disposed;
+
+    private GpuDevice(Context context, Accelerator accelerator, string name)
+    {
+        _context = context;
+        _accelerator = accelerator;
+        Name = name;
+    }
+
+    /// <inheritdoc />
+    public override string Name { get; }
+
+    /// <summary>True when the device is ILGPU's CPU accelerator (the kernel's code on the CPU), not a GPU.</summary>
+    public bool IsCpuAccelerator => _accelerator.AcceleratorType == AcceleratorType.CPU;
+
+    /// <summary>
+    /// The first CUDA GPU (or the one numbered <paramref name="index"/>).
+    /// </summary>
+    /// <param name="index">Which CUDA device, 0 the first.</param>
+    /// <returns>The device.</returns>
+    /// <exception cref="GpuUnavailableException">No CUDA driver or no such device; its message is one line.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="index"/> is negative.</exception>
+    public static GpuDevice Cuda(int index = 0)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(index);
+        Context context = Context.Create(builder => builder.Cuda());
+        try
+        {
+            Context.DeviceCollection<CudaDevice> devices = context.GetCudaDevices();
+            if (devices.Count == 0)
+            {
+                throw new GpuUnavailableException("No CUDA GPU: no NVIDIA driver (libcuda) or no device was found; render on the CPU (--device cpu), or ask for a fallback (--device auto).");
+            }
+
+            if (index >= devices.Count)
+            {
+                throw new GpuUnavailableException($"No CUDA GPU {index}: {devices.Count} found.");
+            }
+
+            CudaDevice device = devices[index];
+            return new GpuDevice(context, device.CreateAccelerator(context), $"cuda: {device.Name}");
+        }
+        catch
+        {
+            context.Dispose();
+            throw;
+        }
+    }
+
+    /// <summary>
+    /// ILGPU's CPU accelerator: the device kernel's own code run on the CPU's threads. Slow; it is how the bytes of the
+    /// device path are checked where no GPU is (the tests, <c>raylab render --device ilgpu-cpu</c>).
+    /// </summary>
+    /// <returns>The device.</returns>
+    public static GpuDevice CpuAccelerator()
+    {
+        Context context = Context.Create(builder => builder.CPU());
+        return new GpuDevice(context, context.GetCPUDevice(0).CreateAccelerator(context), "ilgpu-cpu");
+    }
+
+    /// <summary>True when a CUDA GPU can be opened here (a driver and at least one device).</summary>
+    /// <returns>Whether <see cref="Cuda"/> would succeed.</returns>
+    public static bool IsCudaAvailable()
+    {
+        using Context context = Context.Create(builder => builder.Cuda());
+        return context.GetCudaDevices().Count > 0;
+    }
+
+    /// <summary>The last render's kernel alone, launch to finish, without the uploads and the copy back (the measuring test).</summary>
+    internal TimeSpan LastKernelTime { get; private set; }
+
+    /// <summary>Compiles and loads the kernel now, so that the first render's time does not include it.</summary>
+    public void Warm()
+    {
+        lock (_lock)
+        {
+            ObjectDisposedException.ThrowIf(_disposed, this);
+            _ = Kernel;
+        }
+    }
+
+    /// <inheritdoc />
+    public void Dispose()
+    {
+        lock (_lock)
+        {
+            if (_disposed)
+            {
+                return;
+            }
+
+            _disposed = true;
+            _accelerator.Dispose();
+            _context.Dispose();
+        }
+    }
+
+    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<byte>> Kernel =>
+        _kernel ??= _accelerator.LoadAutoGroupedStreamKernel<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<byte>>(PointKernel.Render);
+
+    /// <summary>The kernel's sampler settings, or null when the device has no form of the sampler.</summary>
+    internal static PointFrame? FrameOf(IPixelSampler sampler)
+    {
+        var frame = new PointFrame { Samples = sampler.SamplesPerPixel };
+        switch (sampler)
+        {
+            case RegularSampler regular:
+                frame.Sampler = DeviceSampler.Regular;
+                frame.GridSize = regular.GridSize;
+                break;
+            case JitteredSampler jittered:
+                frame.Sampler = DeviceSampler.Jittered;
+                frame.GridSize = jittered.GridSize;
+                frame.Salt = jittered.Salt;
+                frame.JitterScale = jittered.Scale;
+                break;
+            case RandomSampler random:
+                frame.Sampler = DeviceSampler.Random;
+                frame.Salt = random.Salt;
+                break;
+            case HammersleySampler hammersley:
+                frame.Sampler = DeviceSampler.Hammersley;
+                frame.Salt = hammersley.Salt;
+                break;
+            default:
+                return null;
+        }
+
+        return frame;
+    }
+
+    internal override RenderStatistics? TryRender(Scene scene, ImagePlane plane, IPixelSampler sampler, PixelTarget image, RenderOptions options)
+    {
+        (int first, int end) = options.Rows(image.Height);
+        if (image.EightBitRow(0).IsEmpty || end <= first)
+        {
+            return null;
+        }
+
+        RenderKernel cpuKernel = KernelChoice.Choose(options.Kernel, scene, plane, out _, out string? reason);
+        if (FrameOf(sampler) is not PointFrame settings)
+        {
+            return null;
+        }
+
+        options.CancellationToken.ThrowIfCancellationRequested();
+        settings.Basis = plane.Basis;
+        settings.Background = scene.Background;
+        settings.Lanes = cpuKernel != RenderKernel.Scalar ? 1 : 0;
+        settings.FirstRow = first;
+        int width = image.Width, rows = end - first;
+        var spheres = new DeviceSphere[Math.Max(1, scene.Spheres.Count)];
+        for (int k = 0; k < scene.Spheres.Count; k++)
+        {
+            Sphere s = scene.Spheres[k];
+            spheres[k] = new DeviceSphere(s.Center, s.Radius, scene.ColourOf(k));
+        }
+
+        var bytes = new byte[3L * width * rows];
+        var clock = Stopwatch.StartNew();
+        lock (_lock)
+        {
+            ObjectDisposedException.ThrowIf(_disposed, this);
+            using MemoryBuffer1D<DeviceSphere, Stride1D.Dense> sphereBuffer = _accelerator.Allocate1D(spheres);
+            using MemoryBuffer1D<byte, Stride1D.Dense> output = _accelerator.Allocate1D<byte>(bytes.LongLength);
+            ArrayView<DeviceSphere> sphereView = sphereBuffer.View.SubView(0, scene.Spheres.Count);
+            Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<byte>> kernel = Kernel;
+            _accelerator.Synchronize();
+            long launched = Stopwatch.GetTimestamp();
+            kernel(width * rows, settings, sphereView, output.View);
+            _accelerator.Synchronize();
+            LastKernelTime = Stopwatch.GetElapsedTime(launched);
+            output.CopyToCPU(bytes);
+        }
+
+        clock.Stop();
+        for (int y = first; y < end; y++)
+        {
+            bytes.AsSpan(3 * width * (y - first), 3 * width).CopyTo(System.Runtime.InteropServices.MemoryMarshal.AsBytes(image.EightBitRow(y)));
+        }
+
+        return new RenderStatistics((long)width * rows * sampler.SamplesPerPixel, clock.Elapsed)
+        {
+            Kernel = cpuKernel,
+            Device = Name,
+            ScalarReason = reason,
+        };
+    }
+}
