@@ -1,6 +1,7 @@
 #if RAYLAB_GPU
 using RayLab.Gpu;
 #endif
+using RayLab.Reports.Output;
 
 namespace RayLab.Cli;
 
