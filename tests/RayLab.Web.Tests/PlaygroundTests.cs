@@ -33,9 +33,24 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         ExecutablePath = Chromium, Headless = true, Args = ["--no-sandbox", "--disable-features=PreloadTopChromeWebUI,WebUIOmniboxPopup"],
     });
 
-    private async Task<Session> OpenAsync(string query = "", string? locale = null)
+    /// <summary>
+    /// Opens the page at <paramref name="query"/>. <paramref name="workers"/>, when given, is the number of Web Workers the
+    /// page starts (<c>globalThis.raylabWorkers</c>; 0: none, the page renders on its own thread); else the page's own
+    /// choice, <c>navigator.hardwareConcurrency − 1</c>. <paramref name="initScript"/> runs before the page's scripts.
+    /// </summary>
+    private async Task<Session> OpenAsync(string query = "", string? locale = null, int? workers = null, string? initScript = null)
     {
         IBrowserContext context = await NewContext(new() { ViewportSize = new() { Width = 1400, Height = 1000 }, Locale = locale });
+        if (workers is int count)
+        {
+            await context.AddInitScriptAsync($"globalThis.raylabWorkers = {count};");
+        }
+
+        if (initScript is not null)
+        {
+            await context.AddInitScriptAsync(initScript);
+        }
+
         // Long tasks (50 ms or more on the main thread, Chromium's measure of blocked input), kept for the figures.
         await context.AddInitScriptAsync(
             "window.longTasks = []; new PerformanceObserver(l => { for (const e of l.getEntries()) window.longTasks.push([e.startTime, e.duration]); }).observe({ type: 'longtask', buffered: true });");
@@ -58,6 +73,22 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
     private static async Task WaitForFrame(IPage page, int frame) => await page.WaitForFunctionAsync(
         $"() => {{ const l = document.getElementById('lab'); return l && l.dataset.state === 'ready' && Number(l.dataset.frame) >= {frame}; }}",
         null, new() { Timeout = 120_000 });
+
+    /// <summary>Waits until the page's workers are up (or have failed, or are off), and returns the state.</summary>
+    private static async Task<string> WaitForWorkers(IPage page)
+    {
+        await page.WaitForFunctionAsync(
+            "() => ['up', 'failed', 'off'].includes(document.getElementById('lab').dataset.workersState)", null, new() { Timeout = 120_000 });
+        return await page.GetAttributeAsync("#lab", "data-workers-state") ?? "";
+    }
+
+    /// <summary>Renders the page's picture again and waits for it.</summary>
+    private static async Task RenderAgain(IPage page)
+    {
+        int frame = await Frame(page);
+        await page.ClickAsync("#rerender");
+        await WaitForFrame(page, frame + 1);
+    }
 
     /// <summary>The page's time now, in ms after navigation.</summary>
     private static Task<double> Now(IPage page) => page.EvaluateAsync<double>("() => performance.now()");
@@ -136,6 +167,80 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         Assert.NotEqual("", await s.Page.GetAttributeAsync("#lab", "data-first-band-ms"));
         Assert.Equal(await LibraryHash(s.Page, Scene("two-spheres", 1280, 720) with { Sampler = new SamplerSettings("jittered", 16, 3) }), await CanvasHash(s.Page));
         Assert.Empty(s.Errors);
+    }
+
+    [Theory]
+    [InlineData("?scene=two-spheres&m=jittered&n=16&seed=5")]
+    [InlineData("?scene=two-spheres")]
+    [InlineData("?scene=off-axis&m=mitchell")]
+    public async Task A_picture_rendered_by_two_workers_equals_the_picture_of_the_pages_own_thread_byte_for_byte(string query)
+    {
+        await using Session one = await OpenAsync(query, workers: 0);
+        Assert.Equal("off", await WaitForWorkers(one.Page));
+        await RenderAgain(one.Page);
+        Assert.Equal("0", await one.Page.GetAttributeAsync("#lab", "data-workers"));
+        string oneThread = await CanvasHash(one.Page);
+        string oneRmse = await one.Page.InnerTextAsync("#rmse");
+
+        await using Session two = await OpenAsync(query, workers: 2);
+        // The first picture is the page's own; the workers start after it.
+        Assert.Equal("0", await two.Page.GetAttributeAsync("#lab", "data-workers"));
+        Assert.Equal("up", await WaitForWorkers(two.Page));
+        Assert.Equal("2", await two.Page.GetAttributeAsync("#lab", "data-workers-up"));
+        await RenderAgain(two.Page);
+        Assert.Equal("2", await two.Page.GetAttributeAsync("#lab", "data-workers"));
+        Assert.Equal("2 workers", (await two.Page.InnerTextAsync("#workers")).Trim());
+        Assert.Equal(oneThread, await CanvasHash(two.Page));
+        // The error against exact: the exact picture was rendered by the workers too.
+        Assert.Equal(oneRmse, await two.Page.InnerTextAsync("#rmse"));
+        Assert.Empty(one.Errors);
+        Assert.Empty(two.Errors);
+    }
+
+    [Fact]
+    public async Task Workers_pictures_equal_the_librarys_and_a_change_under_way_cancels_their_bands()
+    {
+        // 1280x720 at 16 spp: seconds on the workers, so the change comes while their bands are under way.
+        const string query = "?scene=two-spheres&w=1280&h=720&m=jittered&n=16&seed=3";
+        await using Session s = await OpenAsync(query, workers: 2);
+        Assert.Equal("up", await WaitForWorkers(s.Page));
+        await RenderAgain(s.Page);
+        Assert.Equal("2", await s.Page.GetAttributeAsync("#lab", "data-workers"));
+        SceneDescription scene = Scene("two-spheres", 1280, 720);
+        Assert.Equal(await LibraryHash(s.Page, scene with { Sampler = new SamplerSettings("jittered", 16, 3) }), await CanvasHash(s.Page));
+
+        int frame = await Frame(s.Page);
+        await s.Page.ClickAsync("#rerender");
+        await s.Page.WaitForSelectorAsync("#lab[data-state='rendering']");
+        await Change(s.Page, "#seed", "4");
+        await WaitForFrame(s.Page, frame + 1);
+        // One frame: the cancelled picture never finished, and none of its bands was painted over the new one.
+        Assert.Equal(frame + 1, await Frame(s.Page));
+        Assert.Equal("2", await s.Page.GetAttributeAsync("#lab", "data-workers"));
+        Assert.Equal(await LibraryHash(s.Page, scene with { Sampler = new SamplerSettings("jittered", 16, 4) }), await CanvasHash(s.Page));
+        Assert.Empty(s.Errors);
+    }
+
+    [Theory]
+    [InlineData("en-US", "the page's thread (workers could not start: no Web Workers)")]
+    [InlineData("pl-PL", "wątek strony (wątki robocze nie wystartowały: no Web Workers)")]
+    public async Task Where_workers_cannot_start_the_page_renders_on_its_own_thread_and_says_so(string locale, string words)
+    {
+        await using Session s = await OpenAsync("?scene=two-spheres&m=jittered&n=4&seed=1", locale, initScript: "delete globalThis.Worker;");
+        Assert.Equal("failed", await WaitForWorkers(s.Page));
+        await RenderAgain(s.Page);
+        Assert.Equal("0", await s.Page.GetAttributeAsync("#lab", "data-workers"));
+        Assert.Equal(words, (await s.Page.InnerTextAsync("#workers")).Trim());
+        Assert.Equal(await LibraryHash(s.Page, Scene("two-spheres") with { Sampler = new SamplerSettings("jittered", 4, 1) }), await CanvasHash(s.Page));
+        Assert.Empty(s.Errors);
+    }
+
+    [Fact]
+    public void The_published_site_is_at_most_4_5_MB_with_brotli()
+    {
+        long bytes = site.BrotliBytes();
+        TestContext.Current.SendDiagnosticMessage($"figure: site {bytes / 1e6:0.00} MB with brotli");
+        Assert.InRange(bytes, 1, 4_500_000);
     }
 
     [Fact]
