@@ -60,6 +60,8 @@ public sealed partial class Playground : IDisposable
     private string? _workersMessage; // why the workers could not start, or why they failed on a picture
     private double? _workersMs;
     private int _frameWorkers; // the workers that rendered the last full picture (0: the page's thread)
+    private string _frameBands = ""; // the bands each worker rendered of it, and the page's time on them (for the figures)
+    private double _frameBandsMs;
 
     /// <summary>The RayLab version the page runs (the core assembly's informational version).</summary>
     private static string Version { get; } =
@@ -165,7 +167,7 @@ public sealed partial class Playground : IDisposable
 
             await Task.Delay(1, cancel.Token);
             bool paint = _state.View == "picture";
-            (BandProgress done, int workers) = await RenderBandsAsync(prepared, exact: false, image, rays, from, paint, cancel.Token);
+            (BandProgress done, WorkerPicture? workers) = await RenderBandsAsync(prepared, exact: false, image, rays, from, paint, cancel.Token);
             RenderStatistics stats = done.Statistics(prepared.Method.Name, rays);
             double wall = (first?.WallMs ?? 0) + clock.Elapsed.TotalMilliseconds;
             Paint(image.PixelBytes.ToArray(), image.Width, image.Height);
@@ -203,7 +205,9 @@ public sealed partial class Playground : IDisposable
 
             _longestGap = _module?.Invoke<double>("longestFrameGap") ?? 0;
             _preview = null;
-            _frameWorkers = workers;
+            _frameWorkers = workers?.Workers ?? 0;
+            _frameBands = workers?.Bands ?? "";
+            _frameBandsMs = workers?.PageMilliseconds ?? 0;
             _frames++;
             _status = "ready";
             UpdateUrl();
@@ -237,8 +241,8 @@ public sealed partial class Playground : IDisposable
     /// <paramref name="paint"/>: on the workers when they are up (and nothing was begun here), else on this thread. A
     /// picture the workers fail on is rendered here (a state the library refuses then shows its message).
     /// </summary>
-    /// <returns>The rows and their statistics, and how many workers rendered them (0: this thread).</returns>
-    private async Task<(BandProgress Done, int Workers)> RenderBandsAsync(
+    /// <returns>The rows and their statistics, and the workers' picture (null: this thread rendered it).</returns>
+    private async Task<(BandProgress Done, WorkerPicture? Workers)> RenderBandsAsync(
         PreparedScene prepared, bool exact, Image image, float[]? rays, BandProgress from, bool paint, CancellationToken cancel)
     {
         if (_workers == WorkerState.Up && from.Rows == 0 && OperatingSystem.IsBrowser())
@@ -246,7 +250,7 @@ public sealed partial class Playground : IDisposable
             WorkerPicture picture = await Workers.RenderAsync(_state, prepared.SamplerDescription, exact, image, rays ?? new float[image.Width * image.Height], paint, cancel);
             if (picture.Done is BandProgress done)
             {
-                return (done, picture.Workers);
+                return (done, picture);
             }
 
             _workersMessage = picture.Failure;
@@ -257,7 +261,7 @@ public sealed partial class Playground : IDisposable
             }
         }
 
-        return (await _bands.RenderAsync(PageRenderer(cancel), prepared, image, rays, from, paint ? PaintRows(image) : null, null, cancel), 0);
+        return (await _bands.RenderAsync(PageRenderer(cancel), prepared, image, rays, from, paint ? PaintRows(image) : null, null, cancel), null);
     }
 
     /// <summary>Starts the workers once a page, after its first picture; until they are up, full pictures render on this thread.</summary>

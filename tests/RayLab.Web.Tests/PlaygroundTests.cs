@@ -567,12 +567,54 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
             Assert.Empty(s.Errors);
         }
 
-        // A drag on the page a student opens first (its picture adaptive, begun before the controls), and on the exact one.
-        foreach (string query in new[] { "", "?scene=two-spheres&m=exact" })
+        // Jittered 16 spp 640x360 on the page's thread (no workers) and on two workers, both pages open, renders taken in
+        // turn (so the machine's load falls on both alike), each after its page's first picture and one more (warm-up).
+        await using (Session one = await OpenAsync("?scene=two-spheres&m=jittered&n=16&seed=1", workers: 0))
+        await using (Session two = await OpenAsync("?scene=two-spheres&m=jittered&n=16&seed=1", workers: 2))
         {
-            await using Session drag = await OpenAsync(query);
+            await WaitForWorkers(one.Page);
+            string state = await WaitForWorkers(two.Page);
+            lines.Add($"2 workers {state} {await two.Page.GetAttributeAsync("#lab", "data-workers-ms")} ms after their start (the first picture's end)");
+            await RenderAgain(one.Page);
+            await RenderAgain(two.Page);
+            var walls = new Dictionary<Session, List<double>> { [one] = [], [two] = [] };
+            var renders = new Dictionary<Session, List<double>> { [one] = [], [two] = [] };
+            var tasks = new Dictionary<Session, List<string>> { [one] = [], [two] = [] };
+            var bands = new List<string>();
+            for (int i = 0; i < 7; i++)
+            {
+                foreach (Session s in new[] { one, two })
+                {
+                    double since = await Now(s.Page);
+                    await RenderAgain(s.Page);
+                    walls[s].Add(double.Parse(await s.Page.GetAttributeAsync("#lab", "data-wall-ms") ?? "", CultureInfo.InvariantCulture));
+                    renders[s].Add(double.Parse(await s.Page.GetAttributeAsync("#lab", "data-render-ms") ?? "", CultureInfo.InvariantCulture));
+                    tasks[s].Add(await LongestTask(s.Page, since));
+                    if (s == two)
+                    {
+                        bands.Add($"{await s.Page.GetAttributeAsync("#lab", "data-bands")} ({await s.Page.GetAttributeAsync("#lab", "data-bands-page-ms")} ms)");
+                        Assert.Equal("2", await s.Page.GetAttributeAsync("#lab", "data-workers"));
+                    }
+                }
+            }
+
+            double oneMedian = Median(walls[one]), twoMedian = Median(walls[two]);
+            lines.Add($"jittered 16 spp 640x360, the page's thread: wall {string.Join(", ", walls[one])} ms (median {oneMedian:0}), render {string.Join(", ", renders[one])} ms; longest task {string.Join(", ", tasks[one])} ms");
+            lines.Add($"jittered 16 spp 640x360, 2 workers: wall {string.Join(", ", walls[two])} ms (median {twoMedian:0}), render (summed over the workers) {string.Join(", ", renders[two])} ms; longest task {string.Join(", ", tasks[two])} ms");
+            lines.Add($"jittered 16 spp 640x360, 2 workers: bands per worker (the page's time on them) {string.Join(", ", bands)}");
+            lines.Add($"jittered 16 spp 640x360: 2 workers {oneMedian / twoMedian:0.00}x the page's thread (medians of wall times)");
+            Assert.Empty(one.Errors);
+            Assert.Empty(two.Errors);
+        }
+
+        // A drag on the page a student opens first (its picture adaptive, begun before the controls), on the exact one,
+        // and on the first page with two workers up (3 threads on the 2 cores when a move comes during a picture).
+        foreach ((string query, int? workers) in new[] { ("", (int?)null), ("?scene=two-spheres&m=exact", null), ("", 2) })
+        {
+            await using Session drag = await OpenAsync(query, workers: workers);
             // The page warms a drag up with previews when idle after its first picture; a user's hand takes longer than that.
             await drag.Page.WaitForFunctionAsync("() => document.getElementById('lab').dataset.dragWarm === 'done'");
+            string up = await WaitForWorkers(drag.Page);
             LocatorBoundingBoxResult box = (await drag.Page.Locator("#view").BoundingBoxAsync())!;
             float cx = box.X + (box.Width / 2), cy = box.Y + (box.Height / 2);
             var previews = new List<string>();
@@ -592,7 +634,8 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
 
             await drag.Page.Mouse.UpAsync();
             await WaitForFrame(drag.Page, 2);
-            lines.Add($"drag previews (exact at a reduced size) on {(query.Length == 0 ? "the first page" : query)}: {string.Join(", ", previews)} ms");
+            lines.Add($"drag previews (exact at a reduced size) on {(query.Length == 0 ? "the first page" : query)}, workers {up} "
+                + $"({await drag.Page.GetAttributeAsync("#lab", "data-workers-up")}), the picture after it on {await drag.Page.GetAttributeAsync("#lab", "data-workers")} workers: {string.Join(", ", previews)} ms");
         }
 
         // Diagnostic messages (xunit.runner.json) reach the console at any verbosity; the file keeps them for docs/performance.md.
@@ -606,6 +649,12 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
     }
 
     private static string R(double value) => value.ToString("R", CultureInfo.InvariantCulture);
+
+    private static double Median(List<double> values)
+    {
+        double[] sorted = [.. values.Order()];
+        return sorted.Length % 2 == 1 ? sorted[sorted.Length / 2] : (sorted[(sorted.Length / 2) - 1] + sorted[sorted.Length / 2]) / 2;
+    }
 
     private static Dictionary<string, string> Query(string url) => new Uri(url).Query.TrimStart('?').Split('&')
         .Select(p => p.Split('=', 2)).ToDictionary(p => p[0], p => Uri.UnescapeDataString(p[1]));

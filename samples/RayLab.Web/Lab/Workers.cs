@@ -41,14 +41,15 @@ internal static partial class Workers
 
         if (result.HasProperty("failed"))
         {
-            return new WorkerPicture(null, 0, result.GetPropertyAsString("message") ?? "", result.GetPropertyAsInt32("left"));
+            return new WorkerPicture(null, 0, result.GetPropertyAsString("message") ?? "", result.GetPropertyAsInt32("left"), "", 0);
         }
 
         Take(image.PixelBytes, MemoryMarshal.AsBytes(rays.AsSpan()));
         var done = new BandProgress(
             result.GetPropertyAsInt32("rows"), (long)result.GetPropertyAsDouble("primaryRays"),
             TimeSpan.FromMilliseconds(result.GetPropertyAsDouble("renderMs")), (RenderKernel)result.GetPropertyAsInt32("kernel"));
-        return new WorkerPicture(done, result.GetPropertyAsInt32("workers"), null, result.GetPropertyAsInt32("left"));
+        return new WorkerPicture(
+            done, result.GetPropertyAsInt32("workers"), null, result.GetPropertyAsInt32("left"), result.GetPropertyAsString("bands") ?? "", result.GetPropertyAsDouble("pageMs"));
     }
 
     /// <summary>Waits for the job; a cancellation cancels it on the workers at once (its promise then resolves).</summary>
@@ -82,4 +83,6 @@ internal static partial class Workers
 /// <param name="Workers">How many workers rendered bands of it.</param>
 /// <param name="Failure">The workers' message when they failed.</param>
 /// <param name="Left">The workers still up.</param>
-internal sealed record WorkerPicture(BandProgress? Done, int Workers, string? Failure, int Left);
+/// <param name="Bands">The bands each worker rendered, such as <c>31+29</c> (for the figures).</param>
+/// <param name="PageMilliseconds">The page's own time on the bands: copying and painting them (for the figures).</param>
+internal sealed record WorkerPicture(BandProgress? Done, int Workers, string? Failure, int Left, string Bands, double PageMilliseconds);

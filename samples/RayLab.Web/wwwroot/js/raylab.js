@@ -207,14 +207,14 @@ export function startWorkers() {
 }
 
 // Renders the picture of a state (its query) on the workers, painting each band onto the view canvas when paint is
-// true. Resolves with { rows, primaryRays, renderMs, kernel, workers, wallMs }, or { cancelled } when a newer picture
+// true. Resolves with { rows, primaryRays, renderMs, kernel, workers, bands, pageMs }, or { cancelled } when a newer picture
 // or a move took over, or { failed, message } when a worker refused a band or stopped. takeRows then copies the bytes.
 export function renderOnWorkers(query, exact, width, height, method, paint) {
   cancelWorkers();
   const job = {
     id: ++pool.jobs, query, exact, width, height, method: `${method}|${width}|${exact}`, paint,
     next: 0, done: 0, rgb: new Uint8Array(width * height * 3), rays: new Float32Array(width * height),
-    primaryRays: 0, renderMs: 0, kernel: 0, by: new Set(), started: performance.now(),
+    primaryRays: 0, renderMs: 0, kernel: 0, bands: new Map(), pageMs: 0, started: performance.now(),
   };
   return new Promise(resolve => {
     job.resolve = resolve;
@@ -283,6 +283,7 @@ function received(w, m) {
   const job = pool.current;
   if (m.type === 'rows') {
     if (job && m.job === job.id) {
+      const t0 = performance.now();
       const pixels = m.count * job.width;
       const bytes = new Uint8Array(m.bytes);
       pool.speed.set(job.method, { msPerRow: m.renderMs / m.count, rows: m.count });
@@ -293,11 +294,14 @@ function received(w, m) {
       job.primaryRays += m.primaryRays;
       job.renderMs += m.renderMs;
       job.kernel = m.kernel;
-      job.by.add(w.id);
+      job.bands.set(w.id, (job.bands.get(w.id) || 0) + 1);
       job.done += m.count;
+      job.pageMs += performance.now() - t0;
       if (job.done === job.height) {
         pool.last = job;
-        end(job, { rows: job.height, primaryRays: job.primaryRays, renderMs: job.renderMs, kernel: job.kernel, workers: job.by.size, wallMs: performance.now() - job.started });
+        // For the figures: the bands each worker rendered ("31+29"), and the page's own time on them (copy and paint).
+        const bands = [...job.bands.entries()].sort((a, b) => a[0] - b[0]).map(e => e[1]).join('+');
+        end(job, { rows: job.height, primaryRays: job.primaryRays, renderMs: job.renderMs, kernel: job.kernel, workers: job.bands.size, bands, pageMs: job.pageMs });
         return;
       }
     }
