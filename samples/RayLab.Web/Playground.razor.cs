@@ -62,6 +62,7 @@ public sealed partial class Playground : IDisposable
     private int _frameWorkers; // the workers that rendered the last full picture (0: the page's thread)
     private string _frameBands = ""; // the bands each worker rendered of it, and the page's time on them (for the figures)
     private double _frameBandsMs;
+    private string _frameCancelled = ""; // the bands of cancelled pictures before it: late/dropped by the workers
 
     /// <summary>The RayLab version the page runs (the core assembly's informational version).</summary>
     private static string Version { get; } =
@@ -208,6 +209,7 @@ public sealed partial class Playground : IDisposable
             _frameWorkers = workers?.Workers ?? 0;
             _frameBands = workers?.Bands ?? "";
             _frameBandsMs = workers?.PageMilliseconds ?? 0;
+            _frameCancelled = workers?.Cancelled ?? "";
             _frames++;
             _status = "ready";
             UpdateUrl();
@@ -250,6 +252,7 @@ public sealed partial class Playground : IDisposable
             WorkerPicture picture = await Workers.RenderAsync(_state, prepared.SamplerDescription, exact, image, rays ?? new float[image.Width * image.Height], paint, cancel);
             if (picture.Done is BandProgress done)
             {
+                _workersMessage = null;
                 return (done, picture);
             }
 

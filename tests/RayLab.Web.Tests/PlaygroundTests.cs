@@ -211,11 +211,17 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
 
         int frame = await Frame(s.Page);
         await s.Page.ClickAsync("#rerender");
-        await s.Page.WaitForSelectorAsync("#lab[data-state='rendering']");
+        // The change comes once the workers' first bands of the picture are in, with the rest in flight or to come.
+        await s.Page.WaitForFunctionAsync("() => document.getElementById('lab').dataset.state === 'rendering' && globalThis.raylabWorkerRows > 0");
         await Change(s.Page, "#seed", "4");
         await WaitForFrame(s.Page, frame + 1);
-        // One frame: the cancelled picture never finished, and none of its bands was painted over the new one.
+        // One frame: the cancelled picture never finished. The workers were told: each holds a band queued behind the one
+        // it renders, and drops it unrendered; the bands under way come back late and are dropped by the page. None was
+        // painted over the new picture.
         Assert.Equal(frame + 1, await Frame(s.Page));
+        string[] cancelled = (await s.Page.GetAttributeAsync("#lab", "data-bands-cancelled") ?? "").Split('/');
+        TestContext.Current.SendDiagnosticMessage($"figure: cancelled picture's bands: {cancelled[0]} came back late, {cancelled[1]} dropped by the workers");
+        Assert.InRange(int.Parse(cancelled[1], CultureInfo.InvariantCulture), 1, 4);
         Assert.Equal("2", await s.Page.GetAttributeAsync("#lab", "data-workers"));
         Assert.Equal(await LibraryHash(s.Page, scene with { Sampler = new SamplerSettings("jittered", 16, 4) }), await CanvasHash(s.Page));
         Assert.Empty(s.Errors);

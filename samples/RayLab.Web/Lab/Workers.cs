@@ -12,6 +12,8 @@ namespace RayLab.Web.Lab;
 [SupportedOSPlatform("browser")]
 internal static partial class Workers
 {
+    private static int _pictures;
+
     /// <summary>Starts <c>navigator.hardwareConcurrency − 1</c> workers (at least 1) and waits until each is up or has failed.</summary>
     /// <returns>How many are up, and the first failure's message (<c>off</c> when none were wanted).</returns>
     public static async Task<(int Up, string Message, double Milliseconds)> StartAsync()
@@ -31,8 +33,9 @@ internal static partial class Workers
     public static async Task<WorkerPicture> RenderAsync(LabState state, string method, bool exact, Image image, float[] rays, bool paint, CancellationToken cancel)
     {
         cancel.ThrowIfCancellationRequested();
-        Task<JSObject> job = Render(state.ToQuery(), exact, image.Width, image.Height, method, paint);
-        using JSObject result = await WhenDone(job, cancel);
+        int id = ++_pictures;
+        Task<JSObject> job = Render(id, state.ToQuery(), exact, image.Width, image.Height, method, paint);
+        using JSObject result = await WhenDone(id, job, cancel);
         cancel.ThrowIfCancellationRequested();
         if (result.HasProperty("cancelled"))
         {
@@ -41,7 +44,7 @@ internal static partial class Workers
 
         if (result.HasProperty("failed"))
         {
-            return new WorkerPicture(null, 0, result.GetPropertyAsString("message") ?? "", result.GetPropertyAsInt32("left"), "", 0);
+            return new WorkerPicture(null, 0, result.GetPropertyAsString("message") ?? "", result.GetPropertyAsInt32("left"), "", 0, "");
         }
 
         Take(image.PixelBytes, MemoryMarshal.AsBytes(rays.AsSpan()));
@@ -49,13 +52,14 @@ internal static partial class Workers
             result.GetPropertyAsInt32("rows"), (long)result.GetPropertyAsDouble("primaryRays"),
             TimeSpan.FromMilliseconds(result.GetPropertyAsDouble("renderMs")), (RenderKernel)result.GetPropertyAsInt32("kernel"));
         return new WorkerPicture(
-            done, result.GetPropertyAsInt32("workers"), null, result.GetPropertyAsInt32("left"), result.GetPropertyAsString("bands") ?? "", result.GetPropertyAsDouble("pageMs"));
+            done, result.GetPropertyAsInt32("workers"), null, result.GetPropertyAsInt32("left"), result.GetPropertyAsString("bands") ?? "", result.GetPropertyAsDouble("pageMs"),
+            $"{result.GetPropertyAsInt32("late")}/{result.GetPropertyAsInt32("dropped")}");
     }
 
-    /// <summary>Waits for the job; a cancellation cancels it on the workers at once (its promise then resolves).</summary>
-    private static async Task<JSObject> WhenDone(Task<JSObject> job, CancellationToken cancel)
+    /// <summary>Waits for picture <paramref name="id"/>; a cancellation cancels it on the workers at once (its promise then resolves).</summary>
+    private static async Task<JSObject> WhenDone(int id, Task<JSObject> job, CancellationToken cancel)
     {
-        using CancellationTokenRegistration registration = cancel.Register(Cancel);
+        using CancellationTokenRegistration registration = cancel.Register(() => Cancel(id));
         return await job;
     }
 
@@ -69,10 +73,10 @@ internal static partial class Workers
 
     [JSImport("renderOnWorkers", "raylab")]
     [return: JSMarshalAs<JSType.Promise<JSType.Object>>]
-    private static partial Task<JSObject> Render(string query, bool exact, int width, int height, string method, bool paint);
+    private static partial Task<JSObject> Render(int id, string query, bool exact, int width, int height, string method, bool paint);
 
     [JSImport("cancelWorkers", "raylab")]
-    private static partial void Cancel();
+    private static partial void Cancel(int id);
 
     [JSImport("takeRows", "raylab")]
     private static partial bool Take([JSMarshalAs<JSType.MemoryView>] Span<byte> rgb, [JSMarshalAs<JSType.MemoryView>] Span<byte> rays);
@@ -85,4 +89,6 @@ internal static partial class Workers
 /// <param name="Left">The workers still up.</param>
 /// <param name="Bands">The bands each worker rendered, such as <c>31+29</c> (for the figures).</param>
 /// <param name="PageMilliseconds">The page's own time on the bands: copying and painting them (for the figures).</param>
-internal sealed record WorkerPicture(BandProgress? Done, int Workers, string? Failure, int Left, string Bands, double PageMilliseconds);
+/// <param name="Cancelled">The bands of pictures cancelled since the last one: come back late and dropped by the page,
+/// then those the workers dropped unrendered, such as <c>2/2</c> (for the tests).</param>
+internal sealed record WorkerPicture(BandProgress? Done, int Workers, string? Failure, int Left, string Bands, double PageMilliseconds, string Cancelled);

@@ -160,7 +160,7 @@ export function setLanguage(lang, title) {
 // worker's time, from the last band's speed of the same method, at most twice the last band's rows, and at most an
 // even share of the rows left, so the workers finish together.
 const BandMs = 30, InFlight = 2, StartTimeoutMs = 60000;
-const pool = { workers: [], jobs: 0, current: null, last: null, speed: new Map(), wanted: 0 };
+const pool = { workers: [], current: null, late: 0, dropped: 0, last: null, speed: new Map(), wanted: 0 };
 
 // How many workers the page starts: navigator.hardwareConcurrency − 1, at least 1 (the page's own thread paints and
 // listens). globalThis.raylabWorkers, when a number, overrides it (0: no workers; the tests and figures set it).
@@ -206,28 +206,31 @@ export function startWorkers() {
   });
 }
 
-// Renders the picture of a state (its query) on the workers, painting each band onto the view canvas when paint is
-// true. Resolves with { rows, primaryRays, renderMs, kernel, workers, bands, pageMs }, or { cancelled } when a newer picture
-// or a move took over, or { failed, message } when a worker refused a band or stopped. takeRows then copies the bytes.
-export function renderOnWorkers(query, exact, width, height, method, paint) {
-  cancelWorkers();
+// Renders the picture of a state (its query) on the workers as picture number id (one more than the last), painting
+// each band onto the view canvas when paint is true. Resolves with { rows, primaryRays, renderMs, kernel, workers,
+// bands, pageMs, late, dropped }, or { cancelled } when a newer picture or a move took over, or { failed, message }
+// when a worker refused a band or stopped; each with left, the workers up. takeRows then copies the bytes.
+export function renderOnWorkers(id, query, exact, width, height, method, paint) {
+  if (pool.current) cancelWorkers(pool.current.id);
   const job = {
-    id: ++pool.jobs, query, exact, width, height, method: `${method}|${width}|${exact}`, paint,
+    id, query, exact, width, height, method: `${method}|${width}|${exact}`, paint,
     next: 0, done: 0, rgb: new Uint8Array(width * height * 3), rays: new Float32Array(width * height),
     primaryRays: 0, renderMs: 0, kernel: 0, bands: new Map(), pageMs: 0, started: performance.now(),
   };
   return new Promise(resolve => {
     job.resolve = resolve;
     pool.current = job;
+    globalThis.raylabWorkerRows = 0;
     if (pool.workers.length === 0) { end(job, { failed: true, message: 'no workers' }); return; }
     feed();
   });
 }
 
-// Cancels the picture under way: its bands still to come are dropped here, and the workers drop those they hold.
-export function cancelWorkers() {
+// Cancels picture number id if it is under way: its bands still to come are dropped here, and the workers drop those
+// they hold.
+export function cancelWorkers(id) {
   const job = pool.current;
-  if (!job) return;
+  if (!job || job.id !== id) return;
   for (const w of pool.workers) w.worker.postMessage({ type: 'cancel', job: job.id });
   end(job, { cancelled: true });
 }
@@ -244,13 +247,14 @@ export function takeRows(rgb, rays) {
 
 // Ends the workers (the page is closed).
 export function stopWorkers() {
-  cancelWorkers();
+  if (pool.current) cancelWorkers(pool.current.id);
   for (const w of pool.workers) w.worker.terminate();
   pool.workers = [];
 }
 
 function end(job, result) {
   if (pool.current === job) pool.current = null;
+  globalThis.raylabWorkerRows = 0;
   result.left = pool.workers.length;
   job.resolve(result);
 }
@@ -297,14 +301,22 @@ function received(w, m) {
       job.bands.set(w.id, (job.bands.get(w.id) || 0) + 1);
       job.done += m.count;
       job.pageMs += performance.now() - t0;
+      globalThis.raylabWorkerRows = job.done; // the rows of the picture under way in so far (the tests wait on it)
       if (job.done === job.height) {
         pool.last = job;
         // For the figures: the bands each worker rendered ("31+29"), and the page's own time on them (copy and paint).
         const bands = [...job.bands.entries()].sort((a, b) => a[0] - b[0]).map(e => e[1]).join('+');
-        end(job, { rows: job.height, primaryRays: job.primaryRays, renderMs: job.renderMs, kernel: job.kernel, workers: job.bands.size, bands, pageMs: job.pageMs });
+        // And the bands of cancelled pictures since the last picture: come back late and dropped here, dropped by the workers.
+        end(job, { rows: job.height, primaryRays: job.primaryRays, renderMs: job.renderMs, kernel: job.kernel, workers: job.bands.size, bands, pageMs: job.pageMs, late: pool.late, dropped: pool.dropped });
+        pool.late = 0;
+        pool.dropped = 0;
         return;
       }
+    } else {
+      pool.late++;
     }
+  } else if (m.type === 'dropped') {
+    pool.dropped++;
   } else if (m.type === 'error' && job && m.job === job.id) {
     for (const other of pool.workers) other.worker.postMessage({ type: 'cancel', job: job.id });
     end(job, { failed: true, message: m.message });
