@@ -52,7 +52,7 @@ trap 'rm -rf "$work"' EXIT
 feed="$kit/feed"
 mkdir -p "$feed"
 
-projects=(src/RayLab src/RayLab.Reports src/RayLab.Grading templates/RayLab.Templates)
+projects=(src/RayLab src/RayLab.Reports src/RayLab.Grading.Uses src/RayLab.Grading templates/RayLab.Templates)
 [ -d "$repo/src/RayLab.ImageSharp" ] && projects+=(src/RayLab.ImageSharp)
 # The tool: the pointer package, the framework-dependent build every OS runs, and the native linux-x64 build.
 tool_ids=(RayLab.Tool RayLab.Tool.any RayLab.Tool.linux-x64)

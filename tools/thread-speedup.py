@@ -8,7 +8,7 @@ in turn so that load drifts touch them alike. Prints the median renderMs per cel
 median(2 threads), the median over the rounds of each round's own speed-up (its 1-thread time over the 2-thread time
 that follows it, which takes out what drifts between rounds) with that median's 95 % interval, how many rounds' own
 speed-ups are below 1.25× (a 2-thread render that ran at about 1-thread speed: on the lab's VMs, the hypervisor did
-not run the second vCPU during it; docs/performance.md, "On 2 cores"), and with --before DIR
+not run the second vCPU during it; docs/bench/every-core.md, "On 2 cores"), and with --before DIR
 (another checkout, built with `dotnet build samples/RayLab.Console -c Release`) the same for that build and this
 build's 1-thread time over the other's. With --native EXE it runs that native raylab (`tools/publish-native.sh`, or a
 `dotnet publish -r linux-x64` of this checkout) instead of this checkout's JIT build: no tiered compilation, so the

@@ -1,5 +1,6 @@
 using System.Globalization;
 using RayLab.Scenes;
+using RayLab.Reports.Output;
 
 namespace RayLab.Cli;
 

@@ -1,4 +1,5 @@
 using RayLab.Scenes;
+using RayLab.Reports.Output;
 
 namespace RayLab.Cli;
 

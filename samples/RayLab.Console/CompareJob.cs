@@ -2,6 +2,7 @@ using System.Globalization;
 using RayLab.Sampling;
 using RayLab.Reports.Comparison;
 using RayLab.Scenes;
+using RayLab.Reports.Output;
 
 namespace RayLab.Cli;
 

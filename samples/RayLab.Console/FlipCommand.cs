@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Globalization;
 using RayLab.Reports.Imaging;
 using RayLab.Metrics;
+using RayLab.Reports.Output;
 
 namespace RayLab.Cli;
 

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using RayLab.Reports.Patterns;
 using RayLab.Sampling;
+using RayLab.Reports.Output;
 
 namespace RayLab.Cli;
 

@@ -1,5 +1,6 @@
 using System.Globalization;
 using RayLab.Reports.Patterns;
+using RayLab.Reports.Output;
 
 namespace RayLab.Cli;
 

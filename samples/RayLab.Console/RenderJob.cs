@@ -4,6 +4,7 @@ using System.Runtime.CompilerServices;
 using System.Text.Json;
 using RayLab.Reports.Imaging;
 using RayLab.Scenes;
+using RayLab.Reports.Output;
 
 namespace RayLab.Cli;
 

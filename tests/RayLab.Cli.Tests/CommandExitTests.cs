@@ -1,3 +1,4 @@
+using RayLab.Reports.Output;
 using RayLab.Scenes;
 
 namespace RayLab.Cli.Tests;

@@ -4,114 +4,14 @@ using RayLab.Grading;
 namespace RayLab.Cli.Tests;
 
 /// <summary>
-/// <c>raylab grade</c>'s input checks (one line naming the option and what is wrong, exit 1, no report) and its
-/// reading of sections from check names. Grading real labs in bubblewrap is ClassKitTests' (tests/RayLab.Templates.Tests).
+/// <c>raylab grade</c>'s input checks (one line naming the option and what is wrong, exit 1, no report), through the
+/// console's front. The grading's own rules are RayLab.Grading.Tests'. Grading real labs in bubblewrap is ClassKitTests' (tests/RayLab.Templates.Tests).
 /// </summary>
 public sealed class GradeCliTests : IDisposable
 {
     private readonly TempDirectory _dir = new();
 
     public void Dispose() => _dir.Dispose();
-
-    [Theory]
-    [InlineData("3.2 Kamera perspektywiczna: promień przez środek piksela", "3.2")]
-    [InlineData("4.1.4 Adaptacyjne: podział, gdy kontrast > 0,05", "4.1.4")]
-    [InlineData("5 Zadanie: dwie kule", "5")]
-    [InlineData("own Moja metoda: RMSE ≤ 2,5", "own")]
-    [InlineData("MyLab.Tests.CameraTests.ACameraLookingDownMinusZHasTheWorldAxesAsItsFrame", "CameraTests")]
-    [InlineData("Lab_1.Tests.MyMethodTests.MyMethodIsCloseToTheExactImageAtAStatedCost(cameraName: \"perspective\")", "MyMethodTests")]
-    [InlineData("ownership is not a section", "ownership is not a section")]
-    public void ASectionIsTheDisplayNamesSectionNumberOrElseTheChecksClass(string display, string section) =>
-        Assert.Equal(section, GradeJob.SectionOf(display));
-
-    [Theory]
-    [InlineData("Passed,Passed", false, "pass")]
-    [InlineData("Passed,Skipped", false, "not written")]          // a check of a section still to write is skipped
-    [InlineData("Skipped,Skipped", false, "not written")]
-    [InlineData("Passed,Skipped,Failed", false, "fail")]          // wrong beats not written
-    [InlineData("Passed,Passed", true, "fail")]                   // a use the lab does not allow
-    [InlineData("Skipped,Timeout", false, "timeout")]
-    [InlineData("", false, "")]
-    public void ASectionWithASkippedCheckIsNotWrittenAndEarnsNothing(string outcomes, bool refused, string result)
-    {
-        Assert.Equal(result, GradeJob.SectionResult(outcomes.Length == 0 ? [] : outcomes.Split(','), refused));
-        Assert.Equal(0, RayLab.Grading.GradingScheme.Default.Grade(new Dictionary<string, string> { ["2.1"] = "not written" }, []));
-    }
-
-    [Theory]
-    [InlineData(true, 12, 0, false, 1, false, null, false)]                  // every check ended: ok
-    [InlineData(false, 0, 0, false, 1, false, "checks did not run", true)]   // no TRX: the run's first errors say why
-    [InlineData(true, 0, 0, true, 1, false, "checks did not run", false)]    // stopped before the first check ended
-    [InlineData(true, 0, 0, false, 1, false, "checks did not run", true)]    // a TRX with no check in it
-    [InlineData(true, 5, 1, true, 1, true, "check time limit", false)]       // a check hung: again without it
-    [InlineData(true, 5, 1, false, 3, true, "checks crashed", false)]        // a check crashed the host: again without it
-    [InlineData(true, 9, 2, true, GradeJob.MaxCheckRuns, false, null, false)] // the last run: its stopped checks stay
-    public void ACheckRunIsOkOnlyWithChecksAndRunsAgainWithoutTheOnesThatStoppedIt(
-        bool trx, int checks, int stopped, bool hang, int attempt, bool again, string? problem, bool firstErrors)
-    {
-        const string errors = "error CS1002: ; expected";
-        int read = 0;
-        CheckRunVerdict verdict = GradeJob.JudgeCheckRun(trx, checks, stopped, hang, attempt, () => { read++; return errors; });
-        Assert.Equal(again, verdict.RunAgain);
-        Assert.Equal(problem, verdict.Problem);
-        Assert.Equal(firstErrors ? 1 : 0, read); // the output is read only for the detail that shows it
-        Assert.Equal(firstErrors, verdict.Detail == errors);
-        if (problem == "checks did not run" && hang)
-        {
-            Assert.Contains("--check-timeout", verdict.Detail, StringComparison.Ordinal);
-        }
-    }
-
-    [Fact]
-    public void TheChecksLeftWithoutAResultAreSelectedByTheirDisplayNamesEscapedForTheTestPlatformsFilter()
-    {
-        // A check that ended its run leaves the checks not yet started without a result: the next run selects them by
-        // name, and the filter's own characters in a name ((), =, |, !, ~, &, \) are escaped.
-        string filter = GradeJob.DisplayNameFilter(["3 Kamera: baza w = −g/|g|", "4.1.1 Próbkowanie regularne(n: 4)", "a!~&\\b"]);
-        Assert.Equal("DisplayName=3 Kamera: baza w \\= −g/\\|g\\||DisplayName=4.1.1 Próbkowanie regularne\\(n: 4\\)|DisplayName=a\\!\\~\\&\\\\b", filter);
-        Assert.Equal("", GradeJob.DisplayNameFilter([]));
-    }
-
-    [Fact]
-    public void TheListedChecksAreTheIndentedLinesAfterTheHeadingWithoutTheAdaptersOwn()
-    {
-        // dotnet test --list-tests of a lab, as it prints (the adapter's lines fall among the names).
-        const string output = """
-            Test run for /lab/tests/Lab.Tests/bin/Debug/net10.0/Lab.Tests.dll (.NETCoreApp,Version=v10.0)
-                A line before the heading
-            The following Tests are available:
-            [xUnit.net 00:00:00.01] xUnit.net VSTest Adapter v4.0.1+0f7d528729 (64-bit .NET 10.0.12)
-            [xUnit.net 00:00:00.74]   Discovering: Lab.Tests
-                4.1.4 Próbkowanie adaptacyjne: te same promienie(cameraName: "perspective")
-            [xUnit.net 00:00:01.87]   Discovered:  Lab.Tests
-                4.1.4 Próbkowanie adaptacyjne: te same promienie(cameraName: "orthographic")
-                5 Zadanie: dwie kule (RMSE, FLIP)(cameraName: "orthographic")
-
-            """;
-        string[] listed = ["4.1.4 Próbkowanie adaptacyjne: te same promienie(cameraName: \"perspective\")", "4.1.4 Próbkowanie adaptacyjne: te same promienie(cameraName: \"orthographic\")",
-            "5 Zadanie: dwie kule (RMSE, FLIP)(cameraName: \"orthographic\")"];
-        Assert.Equal(listed, GradeJob.ListedTests(output));
-        Assert.Equal(listed, GradeJob.ListedTests(output.ReplaceLineEndings("\r\n")));
-        Assert.Empty(GradeJob.ListedTests("No test matches the given testcase filter"));
-    }
-
-    [Theory]
-    [InlineData("exercise/tests/Lab.Tests", "checks.runsettings")]
-    [InlineData("tests/Lab.Tests", "tests.runsettings")]
-    public void TheChecksRunOnTheirAssemblyWithTheSettingsAndLoggerTheirProjectGivesDotnetTest(string template, string settings)
-    {
-        string tests = Path.Combine(_dir.Path, "tests", "Lab.Tests");
-        Directory.CreateDirectory(tests);
-        string from = Path.Combine(RepoPaths.Root(), "templates", "RayLab.Templates", "content", "raylab-lab", template);
-        File.Copy(Path.Combine(from, "Lab.Tests.csproj"), Path.Combine(tests, "Lab.Tests.csproj"));
-        Assert.Equal(["--logger", "console;verbosity=detailed"], GradeChecks.ProjectTestSettings(_dir.Path));
-        File.Copy(Path.Combine(from, settings), Path.Combine(tests, settings));
-        Assert.Equal(["--settings", Path.Combine(tests, settings), "--logger", "console;verbosity=detailed"], GradeChecks.ProjectTestSettings(_dir.Path));
-        Assert.Null(GradeChecks.BuiltTests(_dir.Path));
-        Directory.CreateDirectory(Path.GetDirectoryName(Path.Combine(_dir.Path, GradeChecks.TestsOutput))!);
-        File.WriteAllText(Path.Combine(_dir.Path, GradeChecks.TestsOutput), "");
-        Assert.Equal(Path.Combine(_dir.Path, GradeChecks.TestsOutput), GradeChecks.BuiltTests(_dir.Path));
-    }
 
     [Fact]
     public void MissingSubmissionsNameTheArgument()
@@ -307,16 +207,6 @@ public sealed class GradeCliTests : IDisposable
         Assert.Equal(1, code);
         Assert.Equal($"raylab: error: submissions: {zip}: zip refused: entry ../evil.txt climbs out of the folder", stderr.TrimEnd());
         Assert.False(File.Exists(_dir.File("evil.txt")));
-    }
-
-    [Fact]
-    public void NamesThatMakeTheSameFolderGetFoldersOfTheirOwn()
-    {
-        // Polish letters, spaces and case all fold: each student still gets a folder (work copy, pictures, log) of their own.
-        string[] names = ["Jan Kowalski", "Jan_Kowalski", "jan_kowalski", "Łucja", "Żucja", "_ucja-2", "anna"];
-        string[] folders = GradeJob.StudentFolders(names);
-        Assert.Equal(["Jan_Kowalski", "Jan_Kowalski-2", "jan_kowalski-3", "_ucja", "_ucja-2", "_ucja-2-2", "anna"], folders);
-        Assert.Equal(names.Length, folders.Distinct(StringComparer.OrdinalIgnoreCase).Count());
     }
 
     /// <summary>A kit's checks folder with what the grader looks for first (the lab's folders and scene), and an empty feed beside it.</summary>

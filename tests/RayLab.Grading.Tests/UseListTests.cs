@@ -35,18 +35,19 @@ public sealed class UseListTests
     }
 
     [Theory]
-    // the exercise lab's own list: the skeleton's scan of itself, and nothing else of RayLab.Grading
+    // the exercise lab's own list: the skeleton's scan of itself (RayLab.Grading.Uses), and nothing of the grader,
+    // whose package (RayLab.Grading) is no assembly a lab may use
     [InlineData("RayLab.Grading.UseList", "Load", UseRefusal.None)]
     [InlineData("RayLab.Grading.AssemblyUses", "Read", UseRefusal.None)]
     [InlineData("RayLab.Grading.UseFinding", "Message", UseRefusal.None)]
-    [InlineData("RayLab.Grading.GradeSandbox", "Run", UseRefusal.Forbidden)]
-    [InlineData("RayLab.Grading.SafeZip", "Extract", UseRefusal.Forbidden)]
+    [InlineData("RayLab.Grading.GradeSandbox", "Run", UseRefusal.NotListed)]
+    [InlineData("RayLab.Grading.SafeZip", "Extract", UseRefusal.NotListed)]
     [InlineData("RayLab.OrthoCamera", "GetImagePlane", UseRefusal.ToWrite)]
     [InlineData("System.Diagnostics.Process", "Start", UseRefusal.Forbidden)]
     public void TheExerciseLabsListAllowsItsScanAndNothingElseOfTheGrader(string type, string member, UseRefusal expected)
     {
         string list = Path.Combine(AppContext.BaseDirectory, "exercise-uses.json");
-        string assembly = type.StartsWith("RayLab.Grading", StringComparison.Ordinal) ? "RayLab.Grading" : type.StartsWith("RayLab", StringComparison.Ordinal) ? "RayLab.Core" : "System.Runtime";
+        string assembly = type is "RayLab.Grading.UseList" or "RayLab.Grading.AssemblyUses" or "RayLab.Grading.UseFinding" ? "RayLab.Grading.Uses" : type.StartsWith("RayLab.Grading", StringComparison.Ordinal) ? "RayLab.Grading" : type.StartsWith("RayLab", StringComparison.Ordinal) ? "RayLab.Core" : "System.Runtime";
         Assert.Equal(expected, Judge(File.ReadAllText(list), type, member, assembly).Refusal);
     }
 

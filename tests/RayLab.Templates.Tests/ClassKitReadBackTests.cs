@@ -51,6 +51,8 @@ public sealed partial class ClassKitTests
         File.WriteAllBytes(Path.Combine(huge, "claim-20000.png"), ClaimingPng.Of(20_000, 20_000));
         Edit(huge, "src/Lab/Program.cs", LastLine, LastLine + """
 
+                    bool? optimised = !System.Reflection.CustomAttributeExtensions.GetCustomAttribute<System.Diagnostics.DebuggableAttribute>(typeof(Program).Assembly)?.IsJITOptimizerDisabled;
+                    Console.WriteLine($"JIT-optimised: {optimised ?? true}");
                     File.Copy("claim-100000.png", "out/two-spheres-perspective-mymethod.png", overwrite: true);
                     File.Copy("claim-20000.png", "out/two-spheres-orthographic-mymethod.png", overwrite: true);
             """);
@@ -99,6 +101,9 @@ public sealed partial class ClassKitTests
         Assert.Equal("picture too large", rows["huge"].GetProperty("status").GetString());
         Assert.Contains("100000×100000", rows["huge"].GetProperty("pictures").GetProperty("perspective").GetProperty("problem").GetString(), StringComparison.Ordinal);
         Assert.Contains("20000×20000", rows["huge"].GetProperty("pictures").GetProperty("orthographic").GetProperty("problem").GetString(), StringComparison.Ordinal);
+
+        // The grader built the lab's program with optimisations (a debug build's program says False).
+        Assert.Contains("JIT-optimised: True", File.ReadAllText(Path.Combine(report, "students", "huge", "log.txt")), StringComparison.Ordinal);
 
         // The times are the grader's: its clock around the program, which waited 2 s; none of the lab's "0.001 ms".
         JsonElement program = rows[formula].GetProperty("program");

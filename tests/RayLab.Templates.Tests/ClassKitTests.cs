@@ -2,23 +2,35 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Text.Json;
 using RayLab.Cli;
+using RayLab.Grading;
 
 namespace RayLab.Templates.Tests;
 
 /// <summary>
-/// Once for the test class: <c>tools/class-kit.sh --feed-only --packed</c> makes a kit from the run's one packing
-/// (<see cref="PackedPackages"/>): the feed with every package a lab restores, the instructor's template package
-/// beside it and the pinned checks. The kit is then moved to another path
+/// Once for the test run, shared by the test classes that take it: <c>tools/class-kit.sh --feed-only --packed</c> makes a
+/// kit from the run's one packing (<see cref="PackedPackages"/>): the feed with every package a lab restores, the
+/// instructor's template package beside it and the pinned checks. The kit is then moved to another path
 /// (the folder it was made in is deleted); the students' template is installed from the moved kit's feed, and the
 /// instructor's from its instructor/ folder, in a temporary DOTNET_CLI_HOME, with an empty NUGET_PACKAGES and a
-/// nuget.config above the work folders that clears every package source.
+/// nuget.config above the work folders that clears every package source. Each class works in folders of its own under
+/// <see cref="Root"/>; the folder goes when the test process ends.
 /// </summary>
 public sealed class ClassKit : IAsyncLifetime
 {
     private static readonly TimeSpan ChildTimeout = TimeSpan.FromMinutes(10);
 
-    /// <summary>The temporary folder everything happens in.</summary>
-    public string Root { get; } = Directory.CreateTempSubdirectory("raylab-kit-").FullName;
+    /// <summary>The kit of this test process, made by the first class that needs it.</summary>
+    private static readonly Lazy<Task<string>> Made = new(MakeAsync, LazyThreadSafetyMode.ExecutionAndPublication);
+
+    /// <summary>One <c>dotnet new</c> at a time in the shared DOTNET_CLI_HOME (classes run side by side).</summary>
+    private static readonly SemaphoreSlim NewLab = new(1, 1);
+
+    /// <summary>The test process's one temporary folder for the kit.</summary>
+    private static readonly string SharedRoot = Directory.CreateTempSubdirectory("raylab-kit-").FullName;
+
+    /// <summary>The temporary folder everything happens in (one for the test process).</summary>
+    [System.Diagnostics.CodeAnalysis.SuppressMessage("Performance", "CA1822", Justification = "the kit's folders are read through the fixture the classes take")]
+    public string Root => SharedRoot;
 
     /// <summary>The kit, at the path it was moved to.</summary>
     public string Kit => Path.Combine(Root, "elsewhere", "kit");
@@ -35,19 +47,36 @@ public sealed class ClassKit : IAsyncLifetime
     /// <summary>The version the kit's packages carry.</summary>
     public string Version { get; private set; } = "";
 
-    public async ValueTask InitializeAsync()
+    public async ValueTask InitializeAsync() => Version = await Made.Value;
+
+    /// <summary>Nothing per class: the kit's folder goes when the test process ends.</summary>
+    public ValueTask DisposeAsync() => ValueTask.CompletedTask;
+
+    private static async Task<string> MakeAsync()
     {
+        AppDomain.CurrentDomain.ProcessExit += (_, _) =>
+        {
+            try
+            {
+                Directory.Delete(SharedRoot, recursive: true);
+            }
+            catch (IOException)
+            {
+                // a child killed on timeout may still hold a file
+            }
+        };
+        var kit = new ClassKit();
         PackedSet packed = await PackedPackages.LibrariesAsync();
         await ChildProcess.RunCheckedAsync(RepoPaths.Root(), new Dictionary<string, string?>(), ChildTimeout,
-            "bash", Path.Combine(RepoPaths.Root(), "tools", "class-kit.sh"), MadeAt, "--feed-only", "--packed", packed.Folder);
-        Directory.CreateDirectory(Path.GetDirectoryName(Kit)!);
-        Directory.Move(MadeAt, Kit);
-        string template = Assert.Single(Directory.GetFiles(Path.Combine(Kit, "feed"), "RayLab.Templates.*.nupkg"));
-        Version = Path.GetFileNameWithoutExtension(template)["RayLab.Templates.".Length..];
-        Assert.Equal(packed.Version, Version);
-        Directory.CreateDirectory(Work);
-        Directory.CreateDirectory(Path.Combine(Root, "dotnet-home"));
-        File.WriteAllText(Path.Combine(Work, "nuget.config"), """
+            "bash", Path.Combine(RepoPaths.Root(), "tools", "class-kit.sh"), kit.MadeAt, "--feed-only", "--packed", packed.Folder);
+        Directory.CreateDirectory(Path.GetDirectoryName(kit.Kit)!);
+        Directory.Move(kit.MadeAt, kit.Kit);
+        string template = Assert.Single(Directory.GetFiles(Path.Combine(kit.Kit, "feed"), "RayLab.Templates.*.nupkg"));
+        string version = Path.GetFileNameWithoutExtension(template)["RayLab.Templates.".Length..];
+        Assert.Equal(packed.Version, version);
+        Directory.CreateDirectory(kit.Work);
+        Directory.CreateDirectory(Path.Combine(SharedRoot, "dotnet-home"));
+        File.WriteAllText(Path.Combine(kit.Work, "nuget.config"), """
             <?xml version="1.0" encoding="utf-8"?>
             <configuration>
               <packageSources>
@@ -55,22 +84,9 @@ public sealed class ClassKit : IAsyncLifetime
               </packageSources>
             </configuration>
             """);
-        await RunAsync(Work, "dotnet", "new", "install", $"RayLab.Templates::{Version}", "--add-source", Path.Combine(Kit, "feed"));
-        await RunAsync(Work, "dotnet", "new", "install", $"RayLab.Templates.Instructor::{Version}", "--add-source", Path.Combine(Kit, "instructor"));
-    }
-
-    public ValueTask DisposeAsync()
-    {
-        try
-        {
-            Directory.Delete(Root, recursive: true);
-        }
-        catch (IOException)
-        {
-            // a child killed on timeout may still hold a file
-        }
-
-        return ValueTask.CompletedTask;
+        await kit.RunAsync(kit.Work, "dotnet", "new", "install", $"RayLab.Templates::{version}", "--add-source", Path.Combine(kit.Kit, "feed"));
+        await kit.RunAsync(kit.Work, "dotnet", "new", "install", $"RayLab.Templates.Instructor::{version}", "--add-source", Path.Combine(kit.Kit, "instructor"));
+        return version;
     }
 
     /// <summary>Runs a child in the kit's environment; fails with its command line and output unless it exits 0.</summary>
@@ -94,7 +110,16 @@ public sealed class ClassKit : IAsyncLifetime
             args.Add("--skipRestore");
         }
 
-        await RunAsync(folder, "dotnet", [.. args]);
+        await NewLab.WaitAsync();
+        try
+        {
+            await RunAsync(folder, "dotnet", [.. args]);
+        }
+        finally
+        {
+            NewLab.Release();
+        }
+
         return lab;
     }
 

@@ -41,7 +41,7 @@ public sealed class TemplateFeed : IAsyncLifetime
         Directory.CreateDirectory(CliHome);
         // Packed once for the run (PackedPackages, shared with the class kit and the package tests), copied here.
         PackedSet packed = await PackedPackages.LibrariesAsync();
-        packed.CopyTo(Feed, "RayLab", "RayLab.ImageSharp", "RayLab.Reports", "RayLab.Grading", "RayLab.Templates");
+        packed.CopyTo(Feed, "RayLab", "RayLab.ImageSharp", "RayLab.Reports", "RayLab.Grading.Uses", "RayLab.Grading", "RayLab.Templates");
         packed.CopyTo(InstructorFeed, "RayLab.Templates.Instructor");
 
         string template = Assert.Single(Directory.GetFiles(Feed, "RayLab.Templates.*.nupkg"));

@@ -47,7 +47,7 @@ internal static class PackedPackages
     public const string SharedVariable = "RAYLAB_TEST_PACKAGES";
 
     /// <summary>The libraries and the template packages: what a lab restores and what installs its templates.</summary>
-    public static readonly string[] LibraryIds = ["RayLab", "RayLab.Reports", "RayLab.ImageSharp", "RayLab.Grading", "RayLab.Templates", "RayLab.Templates.Instructor"];
+    public static readonly string[] LibraryIds = ["RayLab", "RayLab.Reports", "RayLab.ImageSharp", "RayLab.Grading.Uses", "RayLab.Grading", "RayLab.Templates", "RayLab.Templates.Instructor"];
 
     private static readonly TimeSpan ChildTimeout = TimeSpan.FromMinutes(10);
 
@@ -122,7 +122,7 @@ internal static class PackedPackages
     private static async Task<string> PackLibrariesAsync(string folder, string? artifacts)
     {
         string repo = RepoPaths.Root();
-        foreach (string project in new[] { "src/RayLab/RayLab.csproj", "src/RayLab.Reports/RayLab.Reports.csproj", "src/RayLab.ImageSharp/RayLab.ImageSharp.csproj", "src/RayLab.Grading/RayLab.Grading.csproj", "templates/RayLab.Templates/RayLab.Templates.csproj", "templates/RayLab.Templates.Instructor/RayLab.Templates.Instructor.csproj" })
+        foreach (string project in new[] { "src/RayLab/RayLab.csproj", "src/RayLab.Reports/RayLab.Reports.csproj", "src/RayLab.ImageSharp/RayLab.ImageSharp.csproj", "src/RayLab.Grading.Uses/RayLab.Grading.Uses.csproj", "src/RayLab.Grading/RayLab.Grading.csproj", "templates/RayLab.Templates/RayLab.Templates.csproj", "templates/RayLab.Templates.Instructor/RayLab.Templates.Instructor.csproj" })
         {
             await PackAsync(Path.Combine(repo, project), folder, artifacts);
         }

@@ -1,8 +1,8 @@
 using System.Text.Json;
-using RayLab.Grading;
+using RayLab.Reports.Output;
 using RayLab.Scenes;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>
 /// <c>raylab grade</c>'s checked input: the submissions (one folder each, by name, or a Moodle download's folder or
@@ -77,6 +77,7 @@ internal sealed class GradeSetup
     public SceneDescription Scene { get; private set; } = null!;
 
     /// <summary>Checks the request; a Moodle download's zip is unpacked into <paramref name="work"/>.</summary>
+    // Long: every input check, in the order their messages take precedence.
     public static GradeSetup Check(GradeRequest request, string work)
     {
         foreach ((string option, TimeSpan value) in new[] { ("--check-timeout", request.CheckTimeout), ("--run-timeout", request.RunTimeout), ("--submission-timeout", request.SubmissionTimeout) })

@@ -1,4 +1,4 @@
-namespace RayLab.Cli;
+namespace RayLab.Reports.Output;
 
 /// <summary>
 /// Moves a report built in a hidden staging folder into its output folder, <c>index.html</c> last, so a page never
@@ -12,6 +12,7 @@ internal static class ReportFolder
     /// is moved). The moves are all or none: when one fails, every file already replaced is put back.
     /// </summary>
     /// <returns>How many files were moved, <c>index.html</c> included.</returns>
+    // Long: the checks before any move, then the moves all or none, in one place.
     public static int Publish(string staging, string folder)
     {
         string[] files = [.. Directory.EnumerateFiles(staging, "*", SearchOption.AllDirectories)

@@ -1,4 +1,4 @@
-namespace RayLab.Cli;
+namespace RayLab.Reports.Output;
 
 /// <summary>
 /// The files one command writes, all or none, existing files included. Each is first written under a hidden temporary
@@ -7,7 +7,7 @@ namespace RayLab.Cli;
 /// move is done and put back if one fails, so a failed run leaves the files it would have replaced as they were.
 /// Disposing removes the temporary files of a set that was not committed.
 /// </summary>
-public sealed class OutputFiles : IDisposable
+internal sealed class OutputFiles : IDisposable
 {
     private readonly List<FileMove> _staged = [];
 
@@ -160,4 +160,4 @@ public sealed class OutputFiles : IDisposable
 /// <param name="Temp">The file as written, under a hidden name (full path).</param>
 /// <param name="Target">Where it goes, as given.</param>
 /// <param name="Option">The option that named the target (<c>--stats</c>, <c>--out</c>), for errors.</param>
-public readonly record struct FileMove(string Temp, string Target, string Option);
+internal readonly record struct FileMove(string Temp, string Target, string Option);

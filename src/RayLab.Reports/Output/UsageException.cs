@@ -1,5 +1,5 @@
-namespace RayLab.Cli;
+namespace RayLab.Reports.Output;
 
 /// <summary>A command-line value that cannot be used; the message is the one line the user sees.</summary>
 /// <param name="message">The message, starting with the option's name.</param>
-public sealed class UsageException(string message) : Exception(message);
+internal sealed class UsageException(string message) : Exception(message);

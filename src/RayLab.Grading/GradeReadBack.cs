@@ -1,28 +1,28 @@
 using System.Globalization;
 using RayLab.Reports.Imaging;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>What a picture read back from a lab's copy comes to (<see cref="GradeJob.ReadPicture"/>).</summary>
 /// <param name="Picture">The decoded picture, or null.</param>
 /// <param name="Status">The row's problem ("picture is a link", "picture too large"), or null for none.</param>
 /// <param name="Problem">The picture's own line in the report (why it has no score), or null.</param>
 /// <param name="Missing">Whether there is no picture at the path at all.</param>
-public sealed record PictureRead(Image? Picture, string? Status, string? Problem, bool Missing);
+internal sealed record PictureRead(Image? Picture, string? Status, string? Problem, bool Missing);
 
 /// <summary>The built program the grader runs, and how its time is taken (<see cref="GradeJob.ProgramCommand"/>).</summary>
 /// <param name="Command">The program to start.</param>
 /// <param name="Args">Its arguments.</param>
 /// <param name="TimedBy">How the program's seconds in the report were taken, one line.</param>
-public sealed record ProgramLaunch(string Command, IReadOnlyList<string> Args, string TimedBy);
+internal sealed record ProgramLaunch(string Command, IReadOnlyList<string> Args, string TimedBy);
 
 public static partial class GradeJob
 {
     /// <summary>The row's problem of a picture that is a link, or has a link on its path.</summary>
-    public const string PictureIsALink = "picture is a link";
+    internal const string PictureIsALink = "picture is a link";
 
     /// <summary>The row's problem of a picture larger than the exact image, by its file's size or its header's.</summary>
-    public const string PictureTooLarge = "picture too large";
+    internal const string PictureTooLarge = "picture too large";
 
     /// <summary>
     /// The most bytes a picture file of <paramref name="width"/>×<paramref name="height"/> is read with: 8 bytes a
@@ -32,7 +32,7 @@ public static partial class GradeJob
     /// <param name="width">The exact image's width.</param>
     /// <param name="height">The exact image's height.</param>
     /// <returns>The cap in bytes.</returns>
-    public static long PictureByteCap(int width, int height) => (8L * width * height) + (1 << 20);
+    internal static long PictureByteCap(int width, int height) => (8L * width * height) + (1 << 20);
 
     /// <summary>
     /// A picture of a lab's copy read as untrusted, after the lab's processes ended: no link followed (the path's
@@ -46,7 +46,8 @@ public static partial class GradeJob
     /// <param name="width">The exact image's width.</param>
     /// <param name="height">The exact image's height.</param>
     /// <returns>The picture, or why there is none.</returns>
-    public static PictureRead ReadPicture(string lab, string file, int width, int height)
+    // Long: each check of an untrusted picture in the order it must run: path, links, size, opened file, header, decode.
+    internal static PictureRead ReadPicture(string lab, string file, int width, int height)
     {
         ArgumentException.ThrowIfNullOrEmpty(lab);
         ArgumentException.ThrowIfNullOrEmpty(file);
@@ -180,7 +181,7 @@ public static partial class GradeJob
     /// </summary>
     /// <param name="lab">The lab's copy, built.</param>
     /// <returns>The command and how its time is taken.</returns>
-    public static ProgramLaunch ProgramCommand(string lab)
+    internal static ProgramLaunch ProgramCommand(string lab)
     {
         ArgumentException.ThrowIfNullOrEmpty(lab);
         string? assembly = Directory.Exists(Path.Combine(lab, "src", "Lab")) ? GradeChecks.BuiltAssembly(lab) : null;

@@ -1,6 +1,6 @@
-using RayLab.Grading;
+using RayLab.Tests.Shared;
 
-namespace RayLab.Cli.Tests;
+namespace RayLab.Grading.Tests;
 
 /// <summary>
 /// What <c>raylab grade</c> reads back from a lab's copy, read as the lab's own and untrusted: its pictures (no link,

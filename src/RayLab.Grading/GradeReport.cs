@@ -5,7 +5,7 @@ using System.Text.Json;
 using RayLab.Sampling;
 using RayLab.Scenes;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>
 /// What every submission is measured against, computed once by RayLab from the checks' scene file (the lab's
@@ -123,6 +123,7 @@ internal static class GradeReport
         return csv.ToString();
     }
 
+    // Long: grades.json written field by field, in the file's order.
     private static string Json(GradeSetup setup, IReadOnlyList<StudentRow> rows, string[] sections, string[] cameras, GradeReference reference, bool sandboxed)
     {
         using var stream = new MemoryStream();
@@ -281,6 +282,7 @@ internal static class GradeReport
         return Encoding.UTF8.GetString(stream.ToArray()) + "\n";
     }
 
+    // Long: index.html written element by element, in the page's order.
     private static string Html(GradeSetup setup, IReadOnlyList<StudentRow> rows, string[] sections, string[] cameras, GradeReference reference, bool sandboxed)
     {
         static string E(string text) => WebUtility.HtmlEncode(text);
@@ -444,7 +446,7 @@ internal static class GradeReport
 }
 
 /// <summary>The cells of <c>raylab grade</c>'s grades.csv, safe to open in a spreadsheet.</summary>
-public static class GradeCsv
+internal static class GradeCsv
 {
     /// <summary>
     /// One cell: a text that starts with <c>=</c>, <c>+</c>, <c>-</c>, <c>@</c>, a tab or a carriage return (which a

@@ -1,11 +1,11 @@
-namespace RayLab.Cli;
+namespace RayLab.Reports.Output;
 
 /// <summary>
 /// The console's one message for an output folder a command cannot write in, whichever command found it (render's
 /// <c>-o</c>, <c>--stats</c> and <c>--heatmap</c>, the <c>--out</c> of compare, patterns and grade):
 /// <c>OPTION: cannot write in the folder 'FOLDER': WHY</c>.
 /// </summary>
-public static class OutputFolders
+internal static class OutputFolders
 {
     /// <summary>Why a file or folder could not be created in a folder, in a few words, for the end of an error line.</summary>
     /// <param name="e">What creating it threw.</param>

@@ -1,6 +1,6 @@
 using System.Xml.Linq;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>
 /// The pinned checks, apart from the lab: for each submission a folder of their own in the grader's work, which the lab's
@@ -8,7 +8,7 @@ namespace RayLab.Cli;
 /// assembly (a reference to the file, not the lab's project: nothing of the lab's MSBuild runs) and run with their
 /// folder read-only, a folder of results the only one the run writes.
 /// </summary>
-public static class GradeChecks
+internal static class GradeChecks
 {
     /// <summary>The folder, inside the checks' folder, the lab's assembly and its data files are copied to.</summary>
     private const string LabFolder = "lab";

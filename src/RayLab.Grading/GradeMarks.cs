@@ -1,7 +1,6 @@
 using System.Globalization;
-using RayLab.Grading;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>
 /// <c>raylab grade</c>'s marks: a refused upload's row, the failed checks' messages, each row's grade from grading.json's

@@ -1,6 +1,6 @@
 using System.Collections.Concurrent;
 
-namespace RayLab.Cli.Tests;
+namespace RayLab.Grading.Tests;
 
 /// <summary>
 /// <see cref="SideBySide"/>, the loop that <c>raylab grade --jobs N</c> builds and checks submissions in: every item

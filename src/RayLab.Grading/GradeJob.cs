@@ -2,12 +2,12 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Text;
 using System.Text.RegularExpressions;
-using RayLab.Grading;
 using RayLab.Reports.Imaging;
 using RayLab.Metrics;
+using RayLab.Reports.Output;
 using RayLab.Scenes;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>
 /// <c>raylab grade</c>: for each submitted lab, a copy whose <c>tests/</c>, root build files and <c>nuget.config</c> are
@@ -26,40 +26,20 @@ public static partial class GradeJob
     /// <summary>Runs the grading.</summary>
     /// <param name="request">What to grade.</param>
     /// <param name="stdout">One line per submission, then the report's path.</param>
-    /// <param name="stderr">Errors, one line each.</param>
     /// <param name="cancellation">Stops the submission in progress; no report is written.</param>
-    /// <returns>0 when the report is written (whatever the grades), 1 for bad input, 130 when cancelled.</returns>
-    public static int Run(GradeRequest request, TextWriter stdout, TextWriter stderr, CancellationToken cancellation = default)
+    /// <returns>0 when the report is written (whatever the grades).</returns>
+    /// <exception cref="SandboxUnavailableException">The machine has no sandbox, or cannot hold a limit asked for.</exception>
+    /// <exception cref="SceneFileException">The checks' scene file is not valid.</exception>
+    /// <exception cref="OperationCanceledException">The run was cancelled; no report is written.</exception>
+    /// <exception cref="IOException">A file could not be read or written; the message says which (a bad request too).</exception>
+    public static int Run(GradeRequest request, TextWriter stdout, CancellationToken cancellation = default)
     {
         ArgumentNullException.ThrowIfNull(request);
         ArgumentNullException.ThrowIfNull(stdout);
-        ArgumentNullException.ThrowIfNull(stderr);
-        try
-        {
-            return RunChecked(request, stdout, cancellation);
-        }
-        catch (Exception e) when (e is UsageException or SandboxUnavailableException)
-        {
-            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
-            return 1;
-        }
-        catch (SceneFileException e)
-        {
-            stderr.WriteLine($"raylab: error: --checks: {SceneFileException.OneLine(e.Message)}");
-            return 1;
-        }
-        catch (OperationCanceledException)
-        {
-            stderr.WriteLine("raylab: grading cancelled; no report written");
-            return Program.CancelledExitCode;
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            stderr.WriteLine($"raylab: error: {SceneFileException.OneLine(e.Message)}");
-            return 1;
-        }
+        return RunChecked(request, stdout, cancellation);
     }
 
+    // Long: the grading's one sequence (set-up, sandbox, builds side by side, programs one at a time, report), read top to bottom.
     private static int RunChecked(GradeRequest request, TextWriter stdout, CancellationToken cancellation)
     {
         string work = Directory.CreateTempSubdirectory("raylab-grade-").FullName;
@@ -173,7 +153,7 @@ public static partial class GradeJob
     /// </summary>
     /// <param name="names">The submissions' names, in the report's order.</param>
     /// <returns>One distinct folder name per submission.</returns>
-    public static string[] StudentFolders(IReadOnlyList<string> names)
+    internal static string[] StudentFolders(IReadOnlyList<string> names)
     {
         ArgumentNullException.ThrowIfNull(names);
         var taken = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
@@ -194,6 +174,7 @@ public static partial class GradeJob
     }
 
     /// <summary>A submission's copy built and checked, the first part of its grading; its program runs later.</summary>
+    // Long: a submission's build, scan and checks as numbered steps, each ending the row where it fails.
     private static GradedLab BuildAndCheck(GradeSetup setup, GradeSandbox sandbox, string submission, StudentRow row, string work, string staging, CancellationToken cancellation)
     {
         string folder = Path.Combine(staging, "students", row.Folder);
@@ -213,9 +194,11 @@ public static partial class GradeJob
             CopyLab(root, lab.Path);
             string? space = PinBuildFiles(setup, lab.Path);
 
-            // 1. The lab's own project, alone (the restore comes from the prepared, read-only package folder; no network).
+            // 1. The lab's own project, alone (the restore comes from the prepared, read-only package folder; no network),
+            // compiled with optimisations as a release build is (Optimize=true; same bytes, the output still in
+            // bin/Debug): the checks and the program then run the lab's code JIT-optimised, not at the debug build's pace.
             ChildRun build = sandbox.Run(lab.Path, lab.Log, Min(lab.Left(setup), TimeSpan.FromMinutes(10)), "dotnet",
-                ["build", Path.Combine("src", "Lab"), "-nodeReuse:false", "-p:UseSharedCompilation=false"], cancellation);
+                ["build", Path.Combine("src", "Lab"), "-nodeReuse:false", "-p:UseSharedCompilation=false", "-p:Optimize=true"], cancellation);
             row.Steps["build"] = build.Elapsed.TotalSeconds;
             cancellation.ThrowIfCancellationRequested();
             string? assembly = GradeChecks.BuiltAssembly(lab.Path);
@@ -407,7 +390,7 @@ public static partial class GradeJob
     /// </summary>
     /// <param name="output">The command's output.</param>
     /// <returns>The listed display names, in order.</returns>
-    public static IEnumerable<string> ListedTests(string output)
+    internal static IEnumerable<string> ListedTests(string output)
     {
         ArgumentNullException.ThrowIfNull(output);
         bool listing = false;
@@ -425,6 +408,7 @@ public static partial class GradeJob
         }
     }
 
+    // Long: one loop over the runs of the checks, with what each run's files say.
     private static void RunCheckRuns(GradeSetup setup, GradeSandbox sandbox, CheckFolders folders, string log, StudentRow row, Func<TimeSpan> left, List<string> excluded, CancellationToken cancellation)
     {
         // The checks a run left without a result because one of them ended it (LabStoppedRun): the next run runs them alone.
@@ -531,7 +515,7 @@ public static partial class GradeJob
     /// student's method ran past the lab's time limit and could not be stopped, so the check ended the test process
     /// after its own result, and the checks not yet started have none.
     /// </summary>
-    public const string LabStoppedRun = "Check.StopRun";
+    internal const string LabStoppedRun = "Check.StopRun";
 
     /// <summary>Every check's display name, as <c>dotnet test --list-tests</c> gives them; none where the listing fails.</summary>
     private static List<string> ListChecks(GradeSandbox sandbox, CheckFolders folders, string log, Func<TimeSpan> left, CancellationToken cancellation)
@@ -554,14 +538,14 @@ public static partial class GradeJob
     /// </summary>
     /// <param name="displayNames">The checks' display names.</param>
     /// <returns>The filter.</returns>
-    public static string DisplayNameFilter(IEnumerable<string> displayNames)
+    internal static string DisplayNameFilter(IEnumerable<string> displayNames)
     {
         ArgumentNullException.ThrowIfNull(displayNames);
         return string.Join('|', displayNames.Select(name => "DisplayName=" + string.Concat(name.Select(c => "\\()&|=!~".Contains(c, StringComparison.Ordinal) ? $"\\{c}" : c.ToString()))));
     }
 
     /// <summary>How many times the checks run at most, each without the checks that stopped the runs before it.</summary>
-    public const int MaxCheckRuns = 50;
+    internal const int MaxCheckRuns = 50;
 
     /// <summary>
     /// What one <c>dotnet test</c> run of the checks comes to. Checks that stopped the run (a hang, a crash) are left
@@ -575,7 +559,7 @@ public static partial class GradeJob
     /// <param name="hang">Whether the run was stopped for inactivity (<c>--blame-hang-timeout</c>), not by a crash.</param>
     /// <param name="attempt">This run's number, from 1.</param>
     /// <param name="firstErrors">The run's first error lines, read from its output when the verdict needs them.</param>
-    public static CheckRunVerdict JudgeCheckRun(bool trxWritten, int checksRecorded, int stopped, bool hang, int attempt, Func<string> firstErrors)
+    internal static CheckRunVerdict JudgeCheckRun(bool trxWritten, int checksRecorded, int stopped, bool hang, int attempt, Func<string> firstErrors)
     {
         ArgumentNullException.ThrowIfNull(firstErrors);
         if (stopped > 0 && attempt < MaxCheckRuns)
@@ -764,7 +748,7 @@ public static partial class GradeJob
     /// passed and at least one was skipped (the exercise lab's checks skip a section still throwing
     /// NotImplementedException), which earns nothing, as a fail does; otherwise fail; "" when none of its checks ran.
     /// </summary>
-    public static string SectionResult(IReadOnlyCollection<string> outcomes, bool refused)
+    internal static string SectionResult(IReadOnlyCollection<string> outcomes, bool refused)
     {
         ArgumentNullException.ThrowIfNull(outcomes);
         return refused ? "fail"
@@ -783,7 +767,7 @@ public static partial class GradeJob
     /// </summary>
     /// <param name="display">The check's display name.</param>
     /// <returns>The section.</returns>
-    public static string SectionOf(string display)
+    internal static string SectionOf(string display)
     {
         ArgumentNullException.ThrowIfNull(display);
         Match m = SectionPrefix().Match(display);
@@ -929,7 +913,7 @@ internal sealed record PictureScore(double Rmse, double Flip, string? Problem);
 /// <param name="RunAgain">Whether the checks run again, without those that stopped this run.</param>
 /// <param name="Problem">The row's problem, or null for none.</param>
 /// <param name="Detail">The row's detail, or null for none.</param>
-public readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail);
+internal readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail);
 
 /// <summary>Where a submission's checks run: their built folder (read-only to the run) and the folder the run writes, its results.</summary>
 /// <param name="Checks">The checks' folder (<see cref="GradeChecks.Prepare"/>), built.</param>
@@ -942,7 +926,10 @@ internal sealed record CheckFolders(string Checks, string Results, string Tests)
     /// run to find it), with the settings the project gives <c>dotnet test</c> itself: its run settings file and the
     /// console logger at its verbosity (<see cref="GradeChecks.ProjectTestSettings"/>).
     /// </summary>
-    public IEnumerable<string> TestAssemblyArgs => [Tests, .. GradeChecks.ProjectTestSettings(Checks)];
+    public IEnumerable<string> TestAssemblyArgs => [Tests, .. _settings ??= GradeChecks.ProjectTestSettings(Checks)];
+
+    /// <summary>The project's settings for <c>dotnet test</c>, read from it once for all of the submission's runs.</summary>
+    private IReadOnlyList<string>? _settings;
 
     /// <summary>The launcher of the test host in a sandbox of its own (<see cref="GradeSandbox.TestHostLauncher"/>), or null.</summary>
     public string? Launcher { get; set; }

@@ -1,13 +1,13 @@
 using System.Runtime.ExceptionServices;
 
-namespace RayLab.Cli;
+namespace RayLab.Grading;
 
 /// <summary>
 /// Long jobs run a few at a time, each on a thread of its own: <c>raylab grade</c> builds and checks submissions this
 /// way. Its jobs wait minutes on child processes; on the thread pool they would hold the threads that read those
 /// children's output.
 /// </summary>
-public static class SideBySide
+internal static class SideBySide
 {
     /// <summary>
     /// Runs <paramref name="body"/> for items 0 to <paramref name="count"/> − 1 in that order, at most
