@@ -13,9 +13,10 @@ namespace RayLab.Web;
 
 /// <summary>
 /// The playground page: the scene, camera and method on the left, the picture in the middle, the pixel inspector and
-/// the error-against-time chart on the right. Every render goes through the library's public API on the page's one
-/// thread; a camera move shows an exact preview at a reduced size, and the full render that follows runs in row bands
-/// that yield to the browser, cancelled by the next move.
+/// the error-against-time chart on the right. Every render goes through the library's public API. A camera move shows
+/// an exact preview at a reduced size on the page's thread; the full render that follows runs in row bands, cancelled by
+/// the next move: on the page's Web Workers once they are up (<see cref="Workers"/>), else on the page's thread, yielding
+/// to the browser between bands.
 /// </summary>
 public sealed partial class Playground : IDisposable
 {
@@ -54,6 +55,14 @@ public sealed partial class Playground : IDisposable
     private CancellationTokenSource? _cancel;
     private (string Key, Image Image)? _exact;
     private readonly Dictionary<(int Width, int Height), (Image Image, byte[] Bytes)> _previewImages = [];
+    private WorkerState _workers = WorkerState.NotStarted;
+    private int _workersUp;
+    private string? _workersMessage; // why the workers could not start, or why they failed on a picture
+    private double? _workersMs;
+    private int _frameWorkers; // the workers that rendered the last full picture (0: the page's thread)
+    private string _frameBands = ""; // the bands each worker rendered of it, and the page's time on them (for the figures)
+    private double _frameBandsMs;
+    private string _frameCancelled = ""; // the bands of cancelled pictures before it: late/dropped by the workers
 
     /// <summary>The RayLab version the page runs (the core assembly's informational version).</summary>
     private static string Version { get; } =
@@ -159,8 +168,7 @@ public sealed partial class Playground : IDisposable
 
             await Task.Delay(1, cancel.Token);
             bool paint = _state.View == "picture";
-            BandProgress done = await _bands.RenderAsync(
-                PageRenderer(cancel.Token), prepared, image, rays, from, paint ? PaintRows(image) : null, null, cancel.Token);
+            (BandProgress done, WorkerPicture? workers) = await RenderBandsAsync(prepared, exact: false, image, rays, from, paint, cancel.Token);
             RenderStatistics stats = done.Statistics(prepared.Method.Name, rays);
             double wall = (first?.WallMs ?? 0) + clock.Elapsed.TotalMilliseconds;
             Paint(image.PixelBytes.ToArray(), image.Width, image.Height);
@@ -179,7 +187,7 @@ public sealed partial class Playground : IDisposable
             else
             {
                 exact = new Image(image.Width, image.Height);
-                await _bands.RenderAsync(PageRenderer(cancel.Token), prepared with { Method = RenderMethod.Exact }, exact, null, BandProgress.None, null, null, cancel.Token);
+                await RenderBandsAsync(prepared with { Method = RenderMethod.Exact }, exact: true, exact, null, BandProgress.None, paint: false, cancel.Token);
             }
 
             _exact = (key, exact);
@@ -198,10 +206,20 @@ public sealed partial class Playground : IDisposable
 
             _longestGap = _module?.Invoke<double>("longestFrameGap") ?? 0;
             _preview = null;
+            _frameWorkers = workers?.Workers ?? 0;
+            _frameBands = workers?.Bands ?? "";
+            _frameBandsMs = workers?.PageMilliseconds ?? 0;
+            _frameCancelled = workers?.Cancelled ?? "";
             _frames++;
             _status = "ready";
             UpdateUrl();
             StateHasChanged();
+            if (_workers == WorkerState.NotStarted && OperatingSystem.IsBrowser())
+            {
+                // In the background: the workers' runtimes start on their own threads while the page warms a drag up.
+                _ = StartWorkersAsync();
+            }
+
             if (_dragWarm == DragWarmUp.NotStarted)
             {
                 await WarmUpDragAsync(cancel.Token);
@@ -219,6 +237,69 @@ public sealed partial class Playground : IDisposable
             StateHasChanged();
         }
     }
+
+    /// <summary>
+    /// Renders a full picture in bands from <paramref name="from"/>.Rows on, painting each band when
+    /// <paramref name="paint"/>: on the workers when they are up (and nothing was begun here), else on this thread. A
+    /// picture the workers fail on is rendered here (a state the library refuses then shows its message).
+    /// </summary>
+    /// <returns>The rows and their statistics, and the workers' picture (null: this thread rendered it).</returns>
+    private async Task<(BandProgress Done, WorkerPicture? Workers)> RenderBandsAsync(
+        PreparedScene prepared, bool exact, Image image, float[]? rays, BandProgress from, bool paint, CancellationToken cancel)
+    {
+        if (_workers == WorkerState.Up && from.Rows == 0 && OperatingSystem.IsBrowser())
+        {
+            WorkerPicture picture = await Workers.RenderAsync(_state, prepared.SamplerDescription, exact, image, rays ?? new float[image.Width * image.Height], paint, cancel);
+            if (picture.Done is BandProgress done)
+            {
+                _workersMessage = null;
+                return (done, picture);
+            }
+
+            _workersMessage = picture.Failure;
+            if (picture.Left == 0)
+            {
+                _workers = WorkerState.Failed;
+                _workersUp = 0;
+            }
+        }
+
+        return (await _bands.RenderAsync(PageRenderer(cancel), prepared, image, rays, from, paint ? PaintRows(image) : null, null, cancel), null);
+    }
+
+    /// <summary>Starts the workers once a page, after its first picture; until they are up, full pictures render on this thread.</summary>
+    [System.Runtime.Versioning.SupportedOSPlatform("browser")]
+    private async Task StartWorkersAsync()
+    {
+        _workers = WorkerState.Starting;
+        StateHasChanged();
+        (int up, string message, double ms) = await Workers.StartAsync();
+        _workersUp = up;
+        _workersMs = ms;
+        _workersMessage = message.Length == 0 ? null : message;
+        _workers = up > 0 ? WorkerState.Up : message == "off" ? WorkerState.Off : WorkerState.Failed;
+        StateHasChanged();
+    }
+
+    /// <summary>Where the page's workers are.</summary>
+    private enum WorkerState
+    {
+        NotStarted,
+        Starting,
+        Up,
+        Failed,
+        Off,
+    }
+
+    /// <summary>The live numbers' words for who rendered the last full picture.</summary>
+    private string RenderedBy => _frameWorkers > 0 ? _t.Workers(_frameWorkers) : _t.PageThread(_workers switch
+    {
+        WorkerState.Starting => _t.WorkersStarting,
+        WorkerState.Failed => _t.WorkersFailed(_workersMessage ?? ""),
+        WorkerState.Off => _t.WorkersOff,
+        WorkerState.Up when _workersMessage is not null => _t.WorkersFailedOnPicture(_workersMessage),
+        _ => null,
+    });
 
     /// <summary>Cancels the render under way and returns the source for the next one.</summary>
     private CancellationTokenSource Restart()
@@ -660,5 +741,9 @@ public sealed partial class Playground : IDisposable
         _cancel?.Dispose();
         _self?.Dispose();
         _module?.Dispose();
+        if (_workers == WorkerState.Up && OperatingSystem.IsBrowser())
+        {
+            Workers.Stop();
+        }
     }
 }

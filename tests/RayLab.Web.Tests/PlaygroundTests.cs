@@ -33,9 +33,24 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         ExecutablePath = Chromium, Headless = true, Args = ["--no-sandbox", "--disable-features=PreloadTopChromeWebUI,WebUIOmniboxPopup"],
     });
 
-    private async Task<Session> OpenAsync(string query = "", string? locale = null)
+    /// <summary>
+    /// Opens the page at <paramref name="query"/>. <paramref name="workers"/>, when given, is the number of Web Workers the
+    /// page starts (<c>globalThis.raylabWorkers</c>; 0: none, the page renders on its own thread); else the page's own
+    /// choice, <c>navigator.hardwareConcurrency − 1</c>. <paramref name="initScript"/> runs before the page's scripts.
+    /// </summary>
+    private async Task<Session> OpenAsync(string query = "", string? locale = null, int? workers = null, string? initScript = null)
     {
         IBrowserContext context = await NewContext(new() { ViewportSize = new() { Width = 1400, Height = 1000 }, Locale = locale });
+        if (workers is int count)
+        {
+            await context.AddInitScriptAsync($"globalThis.raylabWorkers = {count};");
+        }
+
+        if (initScript is not null)
+        {
+            await context.AddInitScriptAsync(initScript);
+        }
+
         // Long tasks (50 ms or more on the main thread, Chromium's measure of blocked input), kept for the figures.
         await context.AddInitScriptAsync(
             "window.longTasks = []; new PerformanceObserver(l => { for (const e of l.getEntries()) window.longTasks.push([e.startTime, e.duration]); }).observe({ type: 'longtask', buffered: true });");
@@ -58,6 +73,22 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
     private static async Task WaitForFrame(IPage page, int frame) => await page.WaitForFunctionAsync(
         $"() => {{ const l = document.getElementById('lab'); return l && l.dataset.state === 'ready' && Number(l.dataset.frame) >= {frame}; }}",
         null, new() { Timeout = 120_000 });
+
+    /// <summary>Waits until the page's workers are up (or have failed, or are off), and returns the state.</summary>
+    private static async Task<string> WaitForWorkers(IPage page)
+    {
+        await page.WaitForFunctionAsync(
+            "() => ['up', 'failed', 'off'].includes(document.getElementById('lab').dataset.workersState)", null, new() { Timeout = 120_000 });
+        return await page.GetAttributeAsync("#lab", "data-workers-state") ?? "";
+    }
+
+    /// <summary>Renders the page's picture again and waits for it.</summary>
+    private static async Task RenderAgain(IPage page)
+    {
+        int frame = await Frame(page);
+        await page.ClickAsync("#rerender");
+        await WaitForFrame(page, frame + 1);
+    }
 
     /// <summary>The page's time now, in ms after navigation.</summary>
     private static Task<double> Now(IPage page) => page.EvaluateAsync<double>("() => performance.now()");
@@ -136,6 +167,86 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
         Assert.NotEqual("", await s.Page.GetAttributeAsync("#lab", "data-first-band-ms"));
         Assert.Equal(await LibraryHash(s.Page, Scene("two-spheres", 1280, 720) with { Sampler = new SamplerSettings("jittered", 16, 3) }), await CanvasHash(s.Page));
         Assert.Empty(s.Errors);
+    }
+
+    [Theory]
+    [InlineData("?scene=two-spheres&m=jittered&n=16&seed=5")]
+    [InlineData("?scene=two-spheres")]
+    [InlineData("?scene=off-axis&m=mitchell")]
+    public async Task A_picture_rendered_by_two_workers_equals_the_picture_of_the_pages_own_thread_byte_for_byte(string query)
+    {
+        await using Session one = await OpenAsync(query, workers: 0);
+        Assert.Equal("off", await WaitForWorkers(one.Page));
+        await RenderAgain(one.Page);
+        Assert.Equal("0", await one.Page.GetAttributeAsync("#lab", "data-workers"));
+        string oneThread = await CanvasHash(one.Page);
+        string oneRmse = await one.Page.InnerTextAsync("#rmse");
+
+        await using Session two = await OpenAsync(query, workers: 2);
+        // The first picture is the page's own; the workers start after it.
+        Assert.Equal("0", await two.Page.GetAttributeAsync("#lab", "data-workers"));
+        Assert.Equal("up", await WaitForWorkers(two.Page));
+        Assert.Equal("2", await two.Page.GetAttributeAsync("#lab", "data-workers-up"));
+        await RenderAgain(two.Page);
+        Assert.Equal("2", await two.Page.GetAttributeAsync("#lab", "data-workers"));
+        Assert.Equal("2 workers", (await two.Page.InnerTextAsync("#workers")).Trim());
+        Assert.Equal(oneThread, await CanvasHash(two.Page));
+        // The error against exact: the exact picture was rendered by the workers too.
+        Assert.Equal(oneRmse, await two.Page.InnerTextAsync("#rmse"));
+        Assert.Empty(one.Errors);
+        Assert.Empty(two.Errors);
+    }
+
+    [Fact]
+    public async Task Workers_pictures_equal_the_librarys_and_a_change_under_way_cancels_their_bands()
+    {
+        // 1280x720 at 16 spp: seconds on the workers, so the change comes while their bands are under way.
+        const string query = "?scene=two-spheres&w=1280&h=720&m=jittered&n=16&seed=3";
+        await using Session s = await OpenAsync(query, workers: 2);
+        Assert.Equal("up", await WaitForWorkers(s.Page));
+        await RenderAgain(s.Page);
+        Assert.Equal("2", await s.Page.GetAttributeAsync("#lab", "data-workers"));
+        SceneDescription scene = Scene("two-spheres", 1280, 720);
+        Assert.Equal(await LibraryHash(s.Page, scene with { Sampler = new SamplerSettings("jittered", 16, 3) }), await CanvasHash(s.Page));
+
+        int frame = await Frame(s.Page);
+        await s.Page.ClickAsync("#rerender");
+        // The change comes once the workers' first bands of the picture are in, with the rest in flight or to come.
+        await s.Page.WaitForFunctionAsync("() => document.getElementById('lab').dataset.state === 'rendering' && globalThis.raylabWorkerRows > 0");
+        await Change(s.Page, "#seed", "4");
+        await WaitForFrame(s.Page, frame + 1);
+        // One frame: the cancelled picture never finished. The workers were told: each holds a band queued behind the one
+        // it renders, and drops it unrendered; the bands under way come back late and are dropped by the page. None was
+        // painted over the new picture.
+        Assert.Equal(frame + 1, await Frame(s.Page));
+        string[] cancelled = (await s.Page.GetAttributeAsync("#lab", "data-bands-cancelled") ?? "").Split('/');
+        TestContext.Current.SendDiagnosticMessage($"figure: cancelled picture's bands: {cancelled[0]} came back late, {cancelled[1]} dropped by the workers");
+        Assert.InRange(int.Parse(cancelled[1], CultureInfo.InvariantCulture), 1, 4);
+        Assert.Equal("2", await s.Page.GetAttributeAsync("#lab", "data-workers"));
+        Assert.Equal(await LibraryHash(s.Page, scene with { Sampler = new SamplerSettings("jittered", 16, 4) }), await CanvasHash(s.Page));
+        Assert.Empty(s.Errors);
+    }
+
+    [Theory]
+    [InlineData("en-US", "the page's thread (workers could not start: no Web Workers)")]
+    [InlineData("pl-PL", "wątek strony (wątki robocze nie wystartowały: no Web Workers)")]
+    public async Task Where_workers_cannot_start_the_page_renders_on_its_own_thread_and_says_so(string locale, string words)
+    {
+        await using Session s = await OpenAsync("?scene=two-spheres&m=jittered&n=4&seed=1", locale, initScript: "delete globalThis.Worker;");
+        Assert.Equal("failed", await WaitForWorkers(s.Page));
+        await RenderAgain(s.Page);
+        Assert.Equal("0", await s.Page.GetAttributeAsync("#lab", "data-workers"));
+        Assert.Equal(words, (await s.Page.InnerTextAsync("#workers")).Trim());
+        Assert.Equal(await LibraryHash(s.Page, Scene("two-spheres") with { Sampler = new SamplerSettings("jittered", 4, 1) }), await CanvasHash(s.Page));
+        Assert.Empty(s.Errors);
+    }
+
+    [Fact]
+    public void The_published_site_is_at_most_4_5_MB_with_brotli()
+    {
+        long bytes = site.BrotliBytes();
+        TestContext.Current.SendDiagnosticMessage($"figure: site {bytes / 1e6:0.00} MB with brotli");
+        Assert.InRange(bytes, 1, 4_500_000);
     }
 
     [Fact]
@@ -462,12 +573,54 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
             Assert.Empty(s.Errors);
         }
 
-        // A drag on the page a student opens first (its picture adaptive, begun before the controls), and on the exact one.
-        foreach (string query in new[] { "", "?scene=two-spheres&m=exact" })
+        // Jittered 16 spp 640x360 on the page's thread (no workers) and on two workers, both pages open, renders taken in
+        // turn (so the machine's load falls on both alike), each after its page's first picture and one more (warm-up).
+        await using (Session one = await OpenAsync("?scene=two-spheres&m=jittered&n=16&seed=1", workers: 0))
+        await using (Session two = await OpenAsync("?scene=two-spheres&m=jittered&n=16&seed=1", workers: 2))
         {
-            await using Session drag = await OpenAsync(query);
+            await WaitForWorkers(one.Page);
+            string state = await WaitForWorkers(two.Page);
+            lines.Add($"2 workers {state} {await two.Page.GetAttributeAsync("#lab", "data-workers-ms")} ms after their start (the first picture's end)");
+            await RenderAgain(one.Page);
+            await RenderAgain(two.Page);
+            var walls = new Dictionary<Session, List<double>> { [one] = [], [two] = [] };
+            var renders = new Dictionary<Session, List<double>> { [one] = [], [two] = [] };
+            var tasks = new Dictionary<Session, List<string>> { [one] = [], [two] = [] };
+            var bands = new List<string>();
+            for (int i = 0; i < 7; i++)
+            {
+                foreach (Session s in new[] { one, two })
+                {
+                    double since = await Now(s.Page);
+                    await RenderAgain(s.Page);
+                    walls[s].Add(double.Parse(await s.Page.GetAttributeAsync("#lab", "data-wall-ms") ?? "", CultureInfo.InvariantCulture));
+                    renders[s].Add(double.Parse(await s.Page.GetAttributeAsync("#lab", "data-render-ms") ?? "", CultureInfo.InvariantCulture));
+                    tasks[s].Add(await LongestTask(s.Page, since));
+                    if (s == two)
+                    {
+                        bands.Add($"{await s.Page.GetAttributeAsync("#lab", "data-bands")} ({await s.Page.GetAttributeAsync("#lab", "data-bands-page-ms")} ms)");
+                        Assert.Equal("2", await s.Page.GetAttributeAsync("#lab", "data-workers"));
+                    }
+                }
+            }
+
+            double oneMedian = Median(walls[one]), twoMedian = Median(walls[two]);
+            lines.Add($"jittered 16 spp 640x360, the page's thread: wall {string.Join(", ", walls[one])} ms (median {oneMedian:0}), render {string.Join(", ", renders[one])} ms; longest task {string.Join(", ", tasks[one])} ms");
+            lines.Add($"jittered 16 spp 640x360, 2 workers: wall {string.Join(", ", walls[two])} ms (median {twoMedian:0}), render (summed over the workers) {string.Join(", ", renders[two])} ms; longest task {string.Join(", ", tasks[two])} ms");
+            lines.Add($"jittered 16 spp 640x360, 2 workers: bands per worker (the page's time on them) {string.Join(", ", bands)}");
+            lines.Add($"jittered 16 spp 640x360: 2 workers {oneMedian / twoMedian:0.00}x the page's thread (medians of wall times)");
+            Assert.Empty(one.Errors);
+            Assert.Empty(two.Errors);
+        }
+
+        // A drag on the page a student opens first (its picture adaptive, begun before the controls), on the exact one,
+        // and on the first page with two workers up (3 threads on the 2 cores when a move comes during a picture).
+        foreach ((string query, int? workers) in new[] { ("", (int?)null), ("?scene=two-spheres&m=exact", null), ("", 2) })
+        {
+            await using Session drag = await OpenAsync(query, workers: workers);
             // The page warms a drag up with previews when idle after its first picture; a user's hand takes longer than that.
             await drag.Page.WaitForFunctionAsync("() => document.getElementById('lab').dataset.dragWarm === 'done'");
+            string up = await WaitForWorkers(drag.Page);
             LocatorBoundingBoxResult box = (await drag.Page.Locator("#view").BoundingBoxAsync())!;
             float cx = box.X + (box.Width / 2), cy = box.Y + (box.Height / 2);
             var previews = new List<string>();
@@ -487,7 +640,8 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
 
             await drag.Page.Mouse.UpAsync();
             await WaitForFrame(drag.Page, 2);
-            lines.Add($"drag previews (exact at a reduced size) on {(query.Length == 0 ? "the first page" : query)}: {string.Join(", ", previews)} ms");
+            lines.Add($"drag previews (exact at a reduced size) on {(query.Length == 0 ? "the first page" : query)}, workers {up} "
+                + $"({await drag.Page.GetAttributeAsync("#lab", "data-workers-up")}), the picture after it on {await drag.Page.GetAttributeAsync("#lab", "data-workers")} workers: {string.Join(", ", previews)} ms");
         }
 
         // Diagnostic messages (xunit.runner.json) reach the console at any verbosity; the file keeps them for docs/performance.md.
@@ -501,6 +655,12 @@ public sealed class PlaygroundTests(StaticSite site, ITestOutputHelper output) :
     }
 
     private static string R(double value) => value.ToString("R", CultureInfo.InvariantCulture);
+
+    private static double Median(List<double> values)
+    {
+        double[] sorted = [.. values.Order()];
+        return sorted.Length % 2 == 1 ? sorted[sorted.Length / 2] : (sorted[(sorted.Length / 2) - 1] + sorted[sorted.Length / 2]) / 2;
+    }
 
     private static Dictionary<string, string> Query(string url) => new Uri(url).Query.TrimStart('?').Split('&')
         .Select(p => p.Split('=', 2)).ToDictionary(p => p[0], p => Uri.UnescapeDataString(p[1]));

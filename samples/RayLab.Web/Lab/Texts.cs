@@ -37,8 +37,11 @@ public sealed class Texts
     /// <summary>The page's heading.</summary>
     public string Title => T("Plac zabaw RayLab", "RayLab playground");
 
-    /// <summary>The header's runtime note.</summary>
-    public string Runtime => T(".NET WebAssembly, jeden wątek", ".NET WebAssembly, one thread");
+    /// <summary>The header's runtime note: one thread, or the page's thread and its workers.</summary>
+    /// <param name="workers">The workers up (0: the page renders on its own thread).</param>
+    public string Runtime(int workers) => workers == 0
+        ? T(".NET WebAssembly, jeden wątek", ".NET WebAssembly, one thread")
+        : T($".NET WebAssembly, wątek strony i {WorkersPl(workers)}", $".NET WebAssembly, the page's thread and {WorkersEn(workers)}");
 
     /// <summary>The header's hint.</summary>
     public string Hint => T(
@@ -229,6 +232,37 @@ public sealed class Texts
 
     /// <summary>The longest frame gap's label.</summary>
     public string LongestGap => T("Najdłuższa przerwa między klatkami", "Longest frame gap");
+
+    /// <summary>The label of who rendered the last full picture.</summary>
+    public string RenderedOn => T("Renderowały", "Rendered on");
+
+    /// <summary>The picture was rendered on <paramref name="workers"/> workers.</summary>
+    /// <param name="workers">How many workers rendered bands of it.</param>
+    public string Workers(int workers) => T(WorkersPl(workers), WorkersEn(workers));
+
+    /// <summary>The picture was rendered on the page's own thread, with the reason when there is one.</summary>
+    /// <param name="why">Why not on workers, or null.</param>
+    public string PageThread(string? why) => T("wątek strony", "the page's thread") + (why is null ? "" : $" ({why})");
+
+    /// <summary>The workers are starting.</summary>
+    public string WorkersStarting => T("wątki robocze startują", "workers starting");
+
+    /// <summary>The workers could not start.</summary>
+    /// <param name="message">The browser's reason.</param>
+    public string WorkersFailed(string message) => T($"wątki robocze nie wystartowały: {message}", $"workers could not start: {message}");
+
+    /// <summary>The workers failed on this picture, which the page's thread rendered.</summary>
+    /// <param name="message">The workers' message.</param>
+    public string WorkersFailedOnPicture(string message) => T($"wątki robocze zawiodły: {message}", $"the workers failed: {message}");
+
+    /// <summary>No workers were asked for.</summary>
+    public string WorkersOff => T("wątki robocze wyłączone", "workers off");
+
+    // Polish counts: 1 wątek, 2–4 (22–24 …) wątki, else wątków.
+    private static string WorkersPl(int n) => n == 1 ? "1 wątek roboczy"
+        : n % 10 is >= 2 and <= 4 && n % 100 is < 12 or > 14 ? $"{n} wątki robocze" : $"{n} wątków roboczych";
+
+    private static string WorkersEn(int n) => n == 1 ? "1 worker" : $"{n} workers";
 
     /// <summary>The last preview's label.</summary>
     public string LastPreview => T("Ostatni podgląd (dokładny)", "Last preview (exact)");

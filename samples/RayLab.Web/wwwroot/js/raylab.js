@@ -153,3 +153,181 @@ export function setLanguage(lang, title) {
   document.title = title;
   try { sessionStorage.setItem('raylab-lang', lang); } catch { /* storage off: the choice lasts until a reload */ }
 }
+
+// The page's Web Workers (js/worker.js, each with its own .NET runtime; Lab/Workers.cs calls these). A full picture is
+// cut into bands of rows; each worker has at most two bands in flight, so it never waits for the page between bands;
+// each band goes to whichever worker is free, and the page paints each as it arrives. A band aims at BandMs of a
+// worker's time, from the last band's speed of the same method, at most twice the last band's rows, and at most an
+// even share of the rows left, so the workers finish together.
+const BandMs = 30, InFlight = 2, StartTimeoutMs = 60000;
+const pool = { workers: [], current: null, late: 0, dropped: 0, last: null, speed: new Map(), wanted: 0 };
+
+// How many workers the page starts: navigator.hardwareConcurrency − 1, at least 1 (the page's own thread paints and
+// listens). globalThis.raylabWorkers, when a number, overrides it (0: no workers; the tests and figures set it).
+function wantedWorkers() {
+  if (typeof globalThis.raylabWorkers === 'number') return Math.max(0, Math.floor(globalThis.raylabWorkers));
+  return Math.max(1, (navigator.hardwareConcurrency || 1) - 1);
+}
+
+// Starts the workers and resolves once each is up or has failed: { up, wanted, message, ms } (message: the first
+// failure's, or 'off' when no workers are wanted).
+export function startWorkers() {
+  const wanted = wantedWorkers();
+  pool.wanted = wanted;
+  const started = performance.now();
+  if (wanted === 0) return Promise.resolve({ up: 0, wanted, message: 'off', ms: 0 });
+  if (typeof Worker !== 'function') return Promise.resolve({ up: 0, wanted, message: 'no Web Workers', ms: 0 });
+  return new Promise(resolve => {
+    let settled = 0, message = '';
+    const settle = () => { if (++settled === wanted) resolve({ up: pool.workers.length, wanted, message, ms: performance.now() - started }); };
+    for (let i = 0; i < wanted; i++) {
+      let worker;
+      try {
+        worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+      } catch (e) {
+        message ||= String((e && e.message) || e);
+        settle();
+        continue;
+      }
+      const fail = text => { clearTimeout(timer); message ||= text; worker.terminate(); settle(); };
+      const timer = setTimeout(() => fail(`no answer in ${StartTimeoutMs / 1000} s`), StartTimeoutMs);
+      worker.onerror = e => { e.preventDefault(); fail(e.message || 'the worker did not load'); };
+      worker.onmessage = e => {
+        if (e.data.type === 'failed') { fail(e.data.message); return; }
+        if (e.data.type !== 'ready') return;
+        clearTimeout(timer);
+        const w = { worker, id: i, busy: 0 };
+        worker.onmessage = m => received(w, m.data);
+        worker.onerror = ev => { ev.preventDefault(); lost(w, ev.message || 'a worker stopped'); };
+        pool.workers.push(w);
+        settle();
+      };
+    }
+  });
+}
+
+// Renders the picture of a state (its query) on the workers as picture number id (one more than the last), painting
+// each band onto the view canvas when paint is true. Resolves with { rows, primaryRays, renderMs, kernel, workers,
+// bands, pageMs, late, dropped }, or { cancelled } when a newer picture or a move took over, or { failed, message }
+// when a worker refused a band or stopped; each with left, the workers up. takeRows then copies the bytes.
+export function renderOnWorkers(id, query, exact, width, height, method, paint) {
+  if (pool.current) cancelWorkers(pool.current.id);
+  const job = {
+    id, query, exact, width, height, method: `${method}|${width}|${exact}`, paint,
+    next: 0, done: 0, rgb: new Uint8Array(width * height * 3), rays: new Float32Array(width * height),
+    primaryRays: 0, renderMs: 0, kernel: 0, bands: new Map(), pageMs: 0, started: performance.now(),
+  };
+  return new Promise(resolve => {
+    job.resolve = resolve;
+    pool.current = job;
+    globalThis.raylabWorkerRows = 0;
+    if (pool.workers.length === 0) { end(job, { failed: true, message: 'no workers' }); return; }
+    feed();
+  });
+}
+
+// Cancels picture number id if it is under way: its bands still to come are dropped here, and the workers drop those
+// they hold.
+export function cancelWorkers(id) {
+  const job = pool.current;
+  if (!job || job.id !== id) return;
+  for (const w of pool.workers) w.worker.postMessage({ type: 'cancel', job: job.id });
+  end(job, { cancelled: true });
+}
+
+// Copies the last finished picture's RGB24 bytes and its rays per pixel (as bytes) into .NET's memory views.
+export function takeRows(rgb, rays) {
+  const job = pool.last;
+  if (!job) return false;
+  rgb.set(job.rgb);
+  rays.set(new Uint8Array(job.rays.buffer));
+  pool.last = null;
+  return true;
+}
+
+// Ends the workers (the page is closed).
+export function stopWorkers() {
+  if (pool.current) cancelWorkers(pool.current.id);
+  for (const w of pool.workers) w.worker.terminate();
+  pool.workers = [];
+}
+
+function end(job, result) {
+  if (pool.current === job) pool.current = null;
+  globalThis.raylabWorkerRows = 0;
+  result.left = pool.workers.length;
+  job.resolve(result);
+}
+
+function bandRows(job) {
+  const left = job.height - job.next;
+  const last = pool.speed.get(job.method);
+  const aimed = last ? Math.min(Math.floor(BandMs / Math.max(last.msPerRow, 0.01)), 2 * last.rows) : 2;
+  return Math.max(1, Math.min(aimed, Math.ceil(left / (InFlight * pool.workers.length)), left));
+}
+
+function feed() {
+  const job = pool.current;
+  if (!job) return;
+  // The least busy worker first, so that bands spread over the workers before any gets a second one.
+  for (let sent = true; sent && job.next < job.height;) {
+    sent = false;
+    const w = pool.workers.reduce((a, b) => (b.busy < a.busy ? b : a));
+    if (w.busy >= InFlight) break;
+    const count = bandRows(job);
+    w.worker.postMessage({ type: 'band', job: job.id, query: job.query, exact: job.exact, width: job.width, height: job.height, first: job.next, count });
+    w.busy++;
+    job.next += count;
+    sent = true;
+  }
+}
+
+function received(w, m) {
+  w.busy = Math.max(0, w.busy - 1);
+  const job = pool.current;
+  if (m.type === 'rows') {
+    if (job && m.job === job.id) {
+      const t0 = performance.now();
+      const pixels = m.count * job.width;
+      const bytes = new Uint8Array(m.bytes);
+      pool.speed.set(job.method, { msPerRow: m.renderMs / m.count, rows: m.count });
+      new Uint8Array(job.rays.buffer).set(bytes.subarray(0, pixels * 4), m.first * job.width * 4);
+      const rgb = bytes.subarray(pixels * 4);
+      job.rgb.set(rgb, m.first * job.width * 3);
+      if (job.paint) paintRows('view', rgb, job.width, m.first);
+      job.primaryRays += m.primaryRays;
+      job.renderMs += m.renderMs;
+      job.kernel = m.kernel;
+      job.bands.set(w.id, (job.bands.get(w.id) || 0) + 1);
+      job.done += m.count;
+      job.pageMs += performance.now() - t0;
+      globalThis.raylabWorkerRows = job.done; // the rows of the picture under way in so far (the tests wait on it)
+      if (job.done === job.height) {
+        pool.last = job;
+        // For the figures: the bands each worker rendered ("31+29"), and the page's own time on them (copy and paint).
+        const bands = [...job.bands.entries()].sort((a, b) => a[0] - b[0]).map(e => e[1]).join('+');
+        // And the bands of cancelled pictures since the last picture: come back late and dropped here, dropped by the workers.
+        end(job, { rows: job.height, primaryRays: job.primaryRays, renderMs: job.renderMs, kernel: job.kernel, workers: job.bands.size, bands, pageMs: job.pageMs, late: pool.late, dropped: pool.dropped });
+        pool.late = 0;
+        pool.dropped = 0;
+        return;
+      }
+    } else {
+      pool.late++;
+    }
+  } else if (m.type === 'dropped') {
+    pool.dropped++;
+  } else if (m.type === 'error' && job && m.job === job.id) {
+    for (const other of pool.workers) other.worker.postMessage({ type: 'cancel', job: job.id });
+    end(job, { failed: true, message: m.message });
+    return;
+  }
+
+  feed();
+}
+
+function lost(w, message) {
+  w.worker.terminate();
+  pool.workers = pool.workers.filter(x => x !== w);
+  if (pool.current) end(pool.current, { failed: true, message });
+}
