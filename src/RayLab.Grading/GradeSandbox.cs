@@ -95,8 +95,9 @@ public sealed partial class GradeSandbox : IDisposable
     private readonly HashSet<string> _mounted = new(StringComparer.Ordinal);
     private readonly Lock _gate = new();
 
-    private GradeSandbox(string? bwrap, IReadOnlyList<string> hidden, string packages, GradeLimits limits)
+    private GradeSandbox(string? bwrap, IReadOnlyList<string> hidden, string packages, GradeLimits limits, SandboxHost? host = null)
     {
+        host ??= SandboxHost.This;
         _bwrap = bwrap;
         _hidden = hidden;
         _packages = packages;
@@ -122,7 +123,7 @@ public sealed partial class GradeSandbox : IDisposable
         }
 
         // cgroup v2 with a systemd that makes scopes: the memory and process limits hold for a step's processes together.
-        if (File.Exists("/sys/fs/cgroup/cgroup.controllers") && FindOnPath("systemd-run") is { } systemdRun && (limits.MemoryMegabytes is not null || limits.Processes is not null))
+        if (host.CgroupV2 && host.SystemdRun is { } systemdRun && (limits.MemoryMegabytes is not null || limits.Processes is not null))
         {
             bool user = !Environment.IsPrivilegedProcess;
             List<string> probe = user ? ["--user"] : [];
@@ -205,8 +206,18 @@ public sealed partial class GradeSandbox : IDisposable
     /// <param name="packages">The NuGet package folder, bound read-only.</param>
     /// <param name="limits">The limits; null for none (the instructor's own, trusted restore).</param>
     /// <returns>The sandbox; dispose it to unmount the copies' file systems.</returns>
+    public static GradeSandbox Create(bool unsafeNoSandbox, IReadOnlyList<string> hidden, string packages, GradeLimits? limits = null) =>
+        Create(unsafeNoSandbox, hidden, packages, limits, SandboxHost.This);
+
+    /// <summary><see cref="Create(bool, IReadOnlyList{string}, string, GradeLimits?)"/> with <paramref name="host"/>'s cgroup v2 and systemd-run.</summary>
+    /// <param name="unsafeNoSandbox">Run unsandboxed.</param>
+    /// <param name="hidden">Folders the submission must not see.</param>
+    /// <param name="packages">The NuGet package folder, bound read-only.</param>
+    /// <param name="limits">The limits; null for none.</param>
+    /// <param name="host">What the machine offers for cgroup v2 limits.</param>
+    /// <returns>The sandbox.</returns>
     // Long: one check per mechanism (bubblewrap, setpriv, each limit), each refusal with its own message and option, in the order raylab grade prints them.
-    public static GradeSandbox Create(bool unsafeNoSandbox, IReadOnlyList<string> hidden, string packages, GradeLimits? limits = null)
+    internal static GradeSandbox Create(bool unsafeNoSandbox, IReadOnlyList<string> hidden, string packages, GradeLimits? limits, SandboxHost host)
     {
         ArgumentNullException.ThrowIfNull(hidden);
         ArgumentException.ThrowIfNullOrEmpty(packages);
@@ -221,7 +232,7 @@ public sealed partial class GradeSandbox : IDisposable
 
         if (unsafeNoSandbox)
         {
-            return new GradeSandbox(null, hidden, packages, limits);
+            return new GradeSandbox(null, hidden, packages, limits, host);
         }
 
         if (!OperatingSystem.IsLinux())
@@ -239,7 +250,7 @@ public sealed partial class GradeSandbox : IDisposable
                 + "install it (Debian/Ubuntu: sudo apt-get install bubblewrap), or pass --unsafe-no-sandbox (only for labs you trust)");
         }
 
-        var sandbox = new GradeSandbox(bwrap, hidden, packages, limits);
+        var sandbox = new GradeSandbox(bwrap, hidden, packages, limits, host);
         try
         {
             if (Environment.IsPrivilegedProcess && sandbox._setpriv is null)
@@ -1109,7 +1120,8 @@ public sealed partial class GradeSandbox : IDisposable
     private static string OneLine(string text) =>
         string.Join("; ", text.Split('\n', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries));
 
-    private static string? FindOnPath(string name)
+    /// <summary>The first <paramref name="name"/> on PATH or in the system's program folders, or null.</summary>
+    internal static string? FindOnPath(string name)
     {
         foreach (string folder in (Environment.GetEnvironmentVariable("PATH") ?? "").Split(Path.PathSeparator, StringSplitOptions.RemoveEmptyEntries).Concat(["/usr/sbin", "/usr/bin", "/sbin", "/bin"]))
         {
@@ -1134,4 +1146,16 @@ public sealed partial class GradeSandbox : IDisposable
 
     [GeneratedRegex(@"System\.OutOfMemoryException|^Out of memory\.\r?$|[Cc]annot allocate memory|xrealloc: cannot allocate|xmalloc: cannot allocate|std::bad_alloc|MemoryError", RegexOptions.Multiline)]
     private static partial Regex MemoryLine();
+}
+
+/// <summary>
+/// What the sandbox asks of the machine for its cgroup v2 limits: whether the machine mounts cgroup v2 at
+/// /sys/fs/cgroup, and the systemd-run that makes a step's scope.
+/// </summary>
+/// <param name="CgroupV2">Whether cgroup v2 is the machine's hierarchy (/sys/fs/cgroup/cgroup.controllers exists).</param>
+/// <param name="SystemdRun">systemd-run's path, or null where it is not installed.</param>
+internal sealed record SandboxHost(bool CgroupV2, string? SystemdRun)
+{
+    /// <summary>This machine.</summary>
+    public static SandboxHost This => new(File.Exists("/sys/fs/cgroup/cgroup.controllers"), GradeSandbox.FindOnPath("systemd-run"));
 }

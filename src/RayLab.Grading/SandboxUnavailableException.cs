@@ -1,7 +1,7 @@
 namespace RayLab.Grading;
 
 /// <summary>
-/// The sandbox, or one of its limits, cannot hold on this machine (<see cref="GradeSandbox.Create"/>), or a lab's copy
+/// The sandbox, or one of its limits, cannot hold on this machine (<see cref="GradeSandbox.Create(bool, IReadOnlyList{string}, string, GradeLimits?)"/>), or a lab's copy
 /// cannot be given its disk limit: the message says what is missing and the option that grades without it.
 /// </summary>
 public sealed class SandboxUnavailableException : Exception

@@ -142,6 +142,113 @@ public sealed class GradeSandboxTests : IDisposable
     }
 
     [Fact]
+    [System.Runtime.Versioning.SupportedOSPlatform("linux")]
+    public void UnderCgroupV2AStepRunsInASystemdScopeThatHoldsItsMemoryAndProcessesTogether()
+    {
+        // A machine with cgroup v2 and systemd-run, played by this one: a stand-in systemd-run that records its
+        // arguments and holds MemoryMax and TasksMax the way a scope does, in a cgroup of this kernel (v1's memory and
+        // pids controllers, for the stand-in's processes and every one they start), then runs the command.
+        if (!OperatingSystem.IsLinux() || !Environment.IsPrivilegedProcess || !Directory.Exists("/sys/fs/cgroup/memory") || !Directory.Exists("/sys/fs/cgroup/pids"))
+        {
+            Assert.Skip("the stand-in scope needs root and cgroup v1's memory and pids controllers");
+        }
+
+        string bin = Directory.CreateDirectory(_dir.File("bin")).FullName;
+        string calls = Path.Combine(bin, "calls.txt");
+        string scope = $"raylab-test-scope-{Guid.NewGuid():N}";
+        string systemdRun = Path.Combine(bin, "systemd-run");
+        File.WriteAllText(systemdRun, $$"""
+            #!/bin/bash
+            echo "$*" >> {{calls}}
+            memory=""; tasks=""
+            while [ $# -gt 0 ] && [ "$1" != "--" ]; do
+              if [ "$1" = "-p" ]; then
+                shift
+                case "$1" in MemoryMax=*M) memory=${1#MemoryMax=}; memory=${memory%M};; TasksMax=*) tasks=${1#TasksMax=};; esac
+              fi
+              shift
+            done
+            shift
+            group={{scope}}-$$
+            if [ -n "$memory" ]; then
+              mkdir /sys/fs/cgroup/memory/$group && echo $((memory << 20)) > /sys/fs/cgroup/memory/$group/memory.limit_in_bytes && echo $$ > /sys/fs/cgroup/memory/$group/cgroup.procs || exit 125
+            fi
+            if [ -n "$tasks" ]; then
+              mkdir /sys/fs/cgroup/pids/$group && echo $tasks > /sys/fs/cgroup/pids/$group/pids.max && echo $$ > /sys/fs/cgroup/pids/$group/cgroup.procs || exit 125
+            fi
+            exec "$@"
+            """.ReplaceLineEndings("\n"));
+        File.SetUnixFileMode(systemdRun, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute);
+        try
+        {
+            string lab = Directory.CreateDirectory(_dir.File("lab")).FullName;
+            GradeSandbox sandbox;
+            try
+            {
+                sandbox = GradeSandbox.Create(unsafeNoSandbox: false, [_dir.File("kit")], Directory.CreateDirectory(_dir.File("packages")).FullName,
+                    new GradeLimits { MemoryMegabytes = 256, Processes = 64 }, new SandboxHost(CgroupV2: true, SystemdRun: systemdRun));
+            }
+            catch (SandboxUnavailableException e)
+            {
+                Assert.Skip($"the sandbox cannot run here: {e.Message}");
+                throw;
+            }
+
+            using (sandbox)
+            {
+                Assert.Contains("memory limit: 256 MB for all of a step's processes together (cgroup v2: systemd-run --scope -p MemoryMax), and the GC heap of each .NET process", sandbox.Mechanisms);
+                Assert.Contains("process limit: 64 processes and threads for a step together (cgroup v2: TasksMax)", sandbox.Mechanisms);
+
+                // Native memory past the limit: the kernel stops the step (SIGKILL), and the run says which limit.
+                ChildRun hog = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "bash",
+                    ["-c", "x=$(head -c 600000000 /dev/zero | tr '\\0' a); echo \"held ${#x}\""], TestContext.Current.CancellationToken);
+                Assert.DoesNotContain("held 600000000", hog.Output, StringComparison.Ordinal);
+                Assert.True(hog.Limit == SandboxLimit.Memory, $"{hog.Limit}, exit {hog.ExitCode}: {hog.Output}");
+
+                // Within it, the same command runs; and 500 sleeping processes stop at the scope's 64.
+                ChildRun small = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "bash",
+                    ["-c", "x=$(head -c 6000000 /dev/zero | tr '\\0' a); echo \"held ${#x}\""], TestContext.Current.CancellationToken);
+                Assert.Contains("held 6000000", small.Output, StringComparison.Ordinal);
+                Assert.Equal(SandboxLimit.None, small.Limit);
+                ChildRun forks = sandbox.Run(lab, null, TimeSpan.FromMinutes(2), "sh",
+                    ["-c", "i=0; while [ $i -lt 500 ]; do sleep 600 & i=$((i+1)); done; echo \"started $i\""], TestContext.Current.CancellationToken);
+                Assert.DoesNotContain("started 500", forks.Output, StringComparison.Ordinal);
+                Assert.True(forks.Limit == SandboxLimit.Processes, $"{forks.Limit}, exit {forks.ExitCode}: {forks.Output}");
+            }
+
+            // Each step in its own scope with both limits, around the sandbox, and no per-process limit inside it: the
+            // scope holds the step's processes together.
+            string[] scopes = File.ReadAllLines(calls);
+            Assert.Equal("--quiet --scope -p MemoryMax=64M -p TasksMax=16 -- true", scopes[0]); // the probe
+            Assert.True(scopes.Length - 1 >= 3, string.Join('\n', scopes)); // the three runs, and the sandbox's own trial run
+            Assert.All(scopes.Skip(1), line =>
+            {
+                Assert.StartsWith("--quiet --scope -p MemoryMax=256M -p MemorySwapMax=0 -p TasksMax=64 -- ", line, StringComparison.Ordinal);
+                Assert.Contains("bwrap ", line, StringComparison.Ordinal);
+                Assert.DoesNotContain("--data=", line, StringComparison.Ordinal);
+                Assert.DoesNotContain("--nproc=", line, StringComparison.Ordinal);
+            });
+        }
+        finally
+        {
+            foreach (string controller in (string[])["memory", "pids"])
+            {
+                foreach (string group in Directory.GetDirectories($"/sys/fs/cgroup/{controller}", scope + "-*"))
+                {
+                    try
+                    {
+                        Directory.Delete(group);
+                    }
+                    catch (IOException)
+                    {
+                        // a process of the group still ending
+                    }
+                }
+            }
+        }
+    }
+
+    [Fact]
     public void WithoutTheSandboxTheLimitsSayNone()
     {
         using GradeSandbox sandbox = GradeSandbox.Create(unsafeNoSandbox: true, [], Directory.CreateDirectory(_dir.File("packages")).FullName, new GradeLimits { MemoryMegabytes = 512 });
