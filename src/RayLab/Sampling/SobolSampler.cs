@@ -44,9 +44,6 @@ public sealed class SobolSampler : PixelSampler, ILaneSampled
         return new SamplePoint(sx.Value, sy.Value);
     }
 
-    /// <summary>The salted seed the pixel keys are made with (the device form's input).</summary>
-    internal uint Salt => _salt;
-
     /// <summary>The scrambled Sobol' point formula, once, for the CPU lanes, the scalar path and the device.</summary>
     internal readonly struct Formula
     {
