@@ -12,18 +12,23 @@ namespace RayLab.Gpu;
 /// <summary>
 /// A GPU that renders RayLab's point-sampled images (<see cref="RenderDevice"/>): a CUDA device through ILGPU, or,
 /// for tests and for checking the bytes where no GPU is, ILGPU's CPU accelerator, which runs the same kernel's code.
-/// It renders the built-in regular, jittered, random and Hammersley samplers with both cameras into 8-bit images, with the
+/// It renders every built-in point sampler with both cameras into 8-bit images, with the
 /// bytes of the CPU kernel <see cref="Renderer.Kernel"/> chooses; every other render goes to the CPU renderers in the
 /// same call. Made once and kept: the kernel is compiled on the first render (for CUDA, PTX generation and load);
 /// <see cref="Dispose"/> frees the device.
 /// </summary>
 public sealed class GpuDevice : RenderDevice, IDisposable
 {
+    /// <summary>ZSobol's 24 packed permutations, one a entry, as the kernel's table.</summary>
+    private static readonly uint[] ZSobolPermutations = [.. ZSobolSampler.PermutationTable.ToArray().Select(packed => (uint)packed)];
+
     private readonly Context _context;
     private readonly Accelerator _accelerator;
     private readonly Lock _lock = new();
-    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<byte>>? _kernel;
+    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>>? _kernel;
     private bool _disposed;
+    private object? _tableSource;
+    private MemoryBuffer1D<uint, Stride1D.Dense>? _table;
 
     private GpuDevice(Context context, Accelerator accelerator, string name)
     {
@@ -115,18 +120,20 @@ public sealed class GpuDevice : RenderDevice, IDisposable
             }
 
             _disposed = true;
+            _table?.Dispose();
             _accelerator.Dispose();
             _context.Dispose();
         }
     }
 
-    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<byte>> Kernel =>
-        _kernel ??= _accelerator.LoadAutoGroupedStreamKernel<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<byte>>(PointKernel.Render);
+    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>> Kernel =>
+        _kernel ??= _accelerator.LoadAutoGroupedStreamKernel<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>>(PointKernel.Render);
 
     /// <summary>The kernel's sampler settings, or null when the device has no form of the sampler.</summary>
     internal static PointFrame? FrameOf(IPixelSampler sampler)
     {
-        var frame = new PointFrame { Samples = sampler.SamplesPerPixel };
+        // Every hashed sampler salts its pixel keys with PointHash.Salt of its seed.
+        var frame = new PointFrame { Samples = sampler.SamplesPerPixel, Salt = PointHash.Salt(sampler.Seed) };
         switch (sampler)
         {
             case RegularSampler regular:
@@ -136,22 +143,78 @@ public sealed class GpuDevice : RenderDevice, IDisposable
             case JitteredSampler jittered:
                 frame.Sampler = DeviceSampler.Jittered;
                 frame.GridSize = jittered.GridSize;
-                frame.Salt = jittered.Salt;
                 frame.JitterScale = jittered.Scale;
                 break;
-            case RandomSampler random:
+            case RandomSampler:
                 frame.Sampler = DeviceSampler.Random;
-                frame.Salt = random.Salt;
                 break;
-            case HammersleySampler hammersley:
+            case HammersleySampler:
                 frame.Sampler = DeviceSampler.Hammersley;
-                frame.Salt = hammersley.Salt;
+                break;
+            case NRooksSampler:
+                frame.Sampler = DeviceSampler.NRooks;
+                break;
+            case MultiJitteredSampler multiJittered:
+                frame.Sampler = DeviceSampler.MultiJittered;
+                frame.GridSize = multiJittered.GridSize;
+                break;
+            case CorrelatedMultiJitteredSampler cmj:
+                frame.Sampler = DeviceSampler.CorrelatedMultiJittered;
+                (frame.Columns, frame.Rows) = (cmj.Columns, cmj.Rows);
+                break;
+            case SobolSampler:
+                frame.Sampler = DeviceSampler.Sobol;
+                break;
+            case Pmj02Sampler or Pmj02BNSampler:
+                frame.Sampler = DeviceSampler.Pmj02;
+                frame.SetLength = ((uint[][])TableOf(sampler)!)[0].Length;
+                frame.Scramble = sampler is Pmj02Sampler ? 1 : 0;
+                break;
+            case ZSobolSampler zsobol:
+                frame.Sampler = DeviceSampler.ZSobol;
+                (frame.Log2Block, frame.DigitSalt, frame.XSeed, frame.YSeed) = (zsobol.Log2Block, zsobol.DigitSalt, zsobol.XSeed, zsobol.YSeed);
                 break;
             default:
                 return null;
         }
 
         return frame;
+    }
+
+    /// <summary>
+    /// What the kernel's table holds for <paramref name="sampler"/> (pmj02's and pmj02bn's sets, zsobol's permutations), or
+    /// null when it reads none; the same object while the sampler reads the same table.
+    /// </summary>
+    internal static object? TableOf(IPixelSampler sampler) => sampler switch
+    {
+        Pmj02Sampler pmj02 => pmj02.Sets,
+        Pmj02BNSampler pmj02bn => pmj02bn.Sets,
+        ZSobolSampler => ZSobolPermutations,
+        _ => null,
+    };
+
+    /// <summary>
+    /// The device's copy of <paramref name="source"/> (<see cref="TableOf"/>; pmj02's sets one after another), uploaded
+    /// once and kept while renders read the same table (a one-entry buffer where they read none). Called under the lock.
+    /// </summary>
+    private ArrayView<uint> TableView(object? source)
+    {
+        if (_table is not null && ReferenceEquals(source, _tableSource))
+        {
+            return _table.View;
+        }
+
+        _table?.Dispose();
+        _table = null;
+        uint[] flat = source switch
+        {
+            uint[][] sets => [.. sets.SelectMany(set => set)],
+            uint[] entries => entries,
+            _ => new uint[1],
+        };
+        _table = _accelerator.Allocate1D(flat);
+        _tableSource = source;
+        return _table.View;
     }
 
     internal override RenderStatistics? TryRender(Scene scene, ImagePlane plane, IPixelSampler sampler, PixelTarget image, RenderOptions options)
@@ -189,10 +252,11 @@ public sealed class GpuDevice : RenderDevice, IDisposable
             using MemoryBuffer1D<DeviceSphere, Stride1D.Dense> sphereBuffer = _accelerator.Allocate1D(spheres);
             using MemoryBuffer1D<byte, Stride1D.Dense> output = _accelerator.Allocate1D<byte>(bytes.LongLength);
             ArrayView<DeviceSphere> sphereView = sphereBuffer.View.SubView(0, scene.Spheres.Count);
-            Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<byte>> kernel = Kernel;
+            ArrayView<uint> table = TableView(TableOf(sampler));
+            Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>> kernel = Kernel;
             _accelerator.Synchronize();
             long launched = Stopwatch.GetTimestamp();
-            kernel(width * rows, settings, sphereView, output.View);
+            kernel(width * rows, settings, sphereView, table, output.View);
             _accelerator.Synchronize();
             LastKernelTime = Stopwatch.GetElapsedTime(launched);
             output.CopyToCPU(bytes);

@@ -19,6 +19,24 @@ internal enum DeviceSampler
 
     /// <summary><see cref="HammersleySampler"/>.</summary>
     Hammersley,
+
+    /// <summary><see cref="NRooksSampler"/>.</summary>
+    NRooks,
+
+    /// <summary><see cref="MultiJitteredSampler"/>.</summary>
+    MultiJittered,
+
+    /// <summary><see cref="CorrelatedMultiJitteredSampler"/>.</summary>
+    CorrelatedMultiJittered,
+
+    /// <summary><see cref="SobolSampler"/>.</summary>
+    Sobol,
+
+    /// <summary><see cref="Pmj02Sampler"/> and <see cref="Pmj02BNSampler"/> (their sets in the table, <see cref="PointFrame.Scramble"/> pmj02's shift).</summary>
+    Pmj02,
+
+    /// <summary><see cref="ZSobolSampler"/> (its 24 digit permutations in the table).</summary>
+    ZSobol,
 }
 
 /// <summary>A sphere as the kernel reads it: centre, radius and its flat colour (<see cref="Scene.ColourOf"/>).</summary>
@@ -61,6 +79,30 @@ internal struct PointFrame
     /// <summary>The jitter's scale in float (<see cref="JitteredSampler"/>).</summary>
     public float JitterScale;
 
+    /// <summary>The columns m of <see cref="CorrelatedMultiJitteredSampler"/>'s grid.</summary>
+    public int Columns;
+
+    /// <summary>The rows n of <see cref="CorrelatedMultiJitteredSampler"/>'s grid.</summary>
+    public int Rows;
+
+    /// <summary>The entries of one pmj02 set in the table (two per point).</summary>
+    public int SetLength;
+
+    /// <summary>1: pmj02's digital shift; 0: none (pmj02bn). An int, as <see cref="Lanes"/>.</summary>
+    public int Scramble;
+
+    /// <summary>m of <see cref="ZSobolSampler"/>: a pixel's block of 2ᵐ Sobol' indices.</summary>
+    public int Log2Block;
+
+    /// <summary><see cref="ZSobolSampler"/>'s salt of the digit permutations.</summary>
+    public ulong DigitSalt;
+
+    /// <summary><see cref="ZSobolSampler"/>'s seed of the first coordinate's scramble.</summary>
+    public uint XSeed;
+
+    /// <summary><see cref="ZSobolSampler"/>'s seed of the second coordinate's scramble.</summary>
+    public uint YSeed;
+
     /// <summary>
     /// 1: the packet kernels' bytes (points in float, the sum in float, the lanes' 8-bit rule); 0: the scalar double
     /// loop's (<see cref="RenderKernel.Scalar"/>). An int: a kernel parameter holds no bool (not blittable).
@@ -84,8 +126,9 @@ internal static class PointKernel
     /// <param name="index">The pixel's index in the band.</param>
     /// <param name="frame">The launch's settings.</param>
     /// <param name="spheres">The scene's spheres, in the scene's order.</param>
+    /// <param name="table">The sampler's table (pmj02's sets one after another, zsobol's permutations), or one unused entry.</param>
     /// <param name="rgb">The band's bytes, R G B per pixel, row by row.</param>
-    public static void Render(Index1D index, PointFrame frame, ArrayView<DeviceSphere> spheres, ArrayView<byte> rgb)
+    public static void Render(Index1D index, PointFrame frame, ArrayView<DeviceSphere> spheres, ArrayView<uint> table, ArrayView<byte> rgb)
     {
         int width = frame.Basis.Width;
         int x = index % width;
@@ -93,7 +136,7 @@ internal static class PointKernel
         long at = 3L * index;
         if (frame.Lanes != 0)
         {
-            LaneMean(frame, spheres, x, row, out float r, out float g, out float b);
+            LaneMean(frame, spheres, table, x, row, out float r, out float g, out float b);
             float scale = 256f / frame.Samples;
             rgb[at] = EightBit.LaneLevel(r, scale);
             rgb[at + 1] = EightBit.LaneLevel(g, scale);
@@ -101,7 +144,7 @@ internal static class PointKernel
         }
         else
         {
-            Intensity mean = ScalarMean(frame, spheres, x, row);
+            Intensity mean = ScalarMean(frame, spheres, table, x, row);
             rgb[at] = Intensity.ToLevel(mean.R);
             rgb[at + 1] = Intensity.ToLevel(mean.G);
             rgb[at + 2] = Intensity.ToLevel(mean.B);
@@ -109,9 +152,10 @@ internal static class PointKernel
     }
 
     /// <summary>The packet kernels' sum of a pixel's samples: points in float, each colour in float, summed in order.</summary>
-    private static void LaneMean(in PointFrame frame, ArrayView<DeviceSphere> spheres, int x, int row, out float r, out float g, out float b)
+    private static void LaneMean(in PointFrame frame, ArrayView<DeviceSphere> spheres, ArrayView<uint> table, int x, int row, out float r, out float g, out float b)
     {
-        FloatLane keys = PointHash.PixelKeys<FloatLane, FloatLaneMath>(x, row, frame.Salt);
+        uint key = PointHash.PixelKeys<ScalarLane, ScalarMath>(x, row, frame.Salt).Bits;
+        var pattern = new PixelPattern(frame, key);
         r = g = b = 0f;
         for (int i = 0; i < frame.Samples; i++)
         {
@@ -121,21 +165,10 @@ internal static class PointKernel
                 SamplePoint p = RegularSampler.Formula.Point(i, frame.GridSize);
                 (sx, sy) = ((float)p.X, (float)p.Y);
             }
-            else if (frame.Sampler == DeviceSampler.Jittered)
-            {
-                JitteredSampler.Formula.Point<FloatLane, FloatLaneMath>(keys, i, JitteredSampler.Formula.CellOf(i, frame.GridSize), frame.GridSize, frame.JitterScale, out FloatLane px, out FloatLane py);
-                (sx, sy) = (px.Value, py.Value);
-            }
-            else if (frame.Sampler == DeviceSampler.Random)
-            {
-                RandomSampler.Formula.Point<FloatLane, FloatLaneMath>(keys, i, out FloatLane px, out FloatLane py);
-                (sx, sy) = (px.Value, py.Value);
-            }
             else
             {
-                HammersleySampler.Formula.Shift<FloatLane, FloatLaneMath>(keys, out FloatLane shiftX, out FloatLane shiftY);
-                SamplePoint p = HammersleySampler.Formula.Unshifted(i, frame.Samples);
-                (sx, sy) = (FloatLaneMath.Shifted(p.X, shiftX).Value, FloatLaneMath.Shifted(p.Y, shiftY).Value);
+                Point<FloatLane, FloatLaneMath>(frame, pattern, table, key, x, row, i, out FloatLane px, out FloatLane py);
+                (sx, sy) = (px.Value, py.Value);
             }
 
             Intensity colour = Trace(frame, spheres, frame.Basis.GetPixelRay(x, row, sx, sy));
@@ -146,9 +179,10 @@ internal static class PointKernel
     }
 
     /// <summary>The scalar loop's mean of a pixel's samples, in double.</summary>
-    private static Intensity ScalarMean(in PointFrame frame, ArrayView<DeviceSphere> spheres, int x, int row)
+    private static Intensity ScalarMean(in PointFrame frame, ArrayView<DeviceSphere> spheres, ArrayView<uint> table, int x, int row)
     {
-        ScalarLane keys = PointHash.PixelKeys<ScalarLane, ScalarMath>(x, row, frame.Salt);
+        uint key = PointHash.PixelKeys<ScalarLane, ScalarMath>(x, row, frame.Salt).Bits;
+        var pattern = new PixelPattern(frame, key);
         int n = frame.Samples;
         double r = 0, g = 0, b = 0;
         for (int i = 0; i < n; i++)
@@ -159,21 +193,10 @@ internal static class PointKernel
                 SamplePoint p = RegularSampler.Formula.Point(i, frame.GridSize);
                 (sx, sy) = (p.X, p.Y);
             }
-            else if (frame.Sampler == DeviceSampler.Jittered)
-            {
-                JitteredSampler.Formula.Point<ScalarLane, ScalarMath>(keys, i, JitteredSampler.Formula.CellOf(i, frame.GridSize), frame.GridSize, frame.JitterScale, out ScalarLane px, out ScalarLane py);
-                (sx, sy) = (px.Value, py.Value);
-            }
-            else if (frame.Sampler == DeviceSampler.Random)
-            {
-                RandomSampler.Formula.Point<ScalarLane, ScalarMath>(keys, i, out ScalarLane px, out ScalarLane py);
-                (sx, sy) = (px.Value, py.Value);
-            }
             else
             {
-                HammersleySampler.Formula.Shift<ScalarLane, ScalarMath>(keys, out ScalarLane shiftX, out ScalarLane shiftY);
-                SamplePoint p = HammersleySampler.Formula.Unshifted(i, n);
-                (sx, sy) = (ScalarMath.Shifted(p.X, shiftX).Value, ScalarMath.Shifted(p.Y, shiftY).Value);
+                Point<ScalarLane, ScalarMath>(frame, pattern, table, key, x, row, i, out ScalarLane px, out ScalarLane py);
+                (sx, sy) = (px.Value, py.Value);
             }
 
             Intensity value = Trace(frame, spheres, frame.Basis.GetPixelRay(x, row, sx, sy));
@@ -183,6 +206,52 @@ internal static class PointKernel
         }
 
         return new Intensity(r / n, g / n, b / n);
+    }
+
+    /// <summary>
+    /// Sample <paramref name="i"/> of the pixel whose key is <paramref name="key"/>, by the sampler's own formula: in the
+    /// lanes' float (<see cref="FloatLaneMath"/>) or the scalar double (<see cref="ScalarMath"/>). Not the regular
+    /// grid, whose point needs no arithmetic of either.
+    /// </summary>
+    private static void Point<TV, TM>(in PointFrame frame, in PixelPattern pattern, ArrayView<uint> table, uint key, int x, int row, int i, out TV sx, out TV sy)
+        where TV : struct
+        where TM : IPointMath<TV>
+    {
+        TV keys = TM.BroadcastBits(key);
+        switch (frame.Sampler)
+        {
+            case DeviceSampler.Jittered:
+                JitteredSampler.Formula.Point<TV, TM>(keys, i, JitteredSampler.Formula.CellOf(i, frame.GridSize), frame.GridSize, frame.JitterScale, out sx, out sy);
+                break;
+            case DeviceSampler.Random:
+                RandomSampler.Formula.Point<TV, TM>(keys, i, out sx, out sy);
+                break;
+            case DeviceSampler.Hammersley:
+                HammersleySampler.Formula.Shift<TV, TM>(keys, out TV shiftX, out TV shiftY);
+                SamplePoint p = HammersleySampler.Formula.Unshifted(i, frame.Samples);
+                (sx, sy) = (TM.Shifted(p.X, shiftX), TM.Shifted(p.Y, shiftY));
+                break;
+            case DeviceSampler.NRooks:
+                NRooksSampler.Formula.Point<TV, TM>(key, i, frame.Samples, pattern.Divisor, out sx, out sy);
+                break;
+            case DeviceSampler.MultiJittered:
+                MultiJitteredSampler.Formula.Point<TV, TM>(key, i, frame.GridSize, pattern.Divisor, out sx, out sy);
+                break;
+            case DeviceSampler.CorrelatedMultiJittered:
+                CorrelatedMultiJitteredSampler.Formula.Point<TV, TM>(key, i, frame.Samples, frame.Columns, frame.Rows, pattern.X, pattern.Y, out sx, out sy);
+                break;
+            case DeviceSampler.Sobol:
+                SobolSampler.Formula.Point<TV, TM>(keys, i, out sx, out sy);
+                break;
+            case DeviceSampler.ZSobol:
+                uint sobolIndex = ZSobolSampler.Formula.SobolIndex(new DevicePermutations(table), frame.Log2Block, frame.DigitSalt, x, row, i);
+                ZSobolSampler.Formula.Point<TV, TM>(sobolIndex, frame.XSeed, frame.YSeed, out sx, out sy);
+                break;
+            default:
+                long at = ((long)pattern.Set * frame.SetLength) + (2L * i);
+                Pmj02Sampler.Shift<TV, TM>(TM.BroadcastBits(table[at]), TM.BroadcastBits(table[at + 1]), TM.BroadcastBits(pattern.ShiftX), TM.BroadcastBits(pattern.ShiftY), out sx, out sy);
+                break;
+        }
     }
 
     /// <summary>The colour of the nearest sphere the ray meets in the visible range, or the background (the scene's loop over every sphere in order).</summary>
@@ -202,4 +271,60 @@ internal static class PointKernel
 
         return nearest < 0 ? frame.Background : spheres[nearest].Colour;
     }
+}
+
+/// <summary>What a pixel's samples share, made once per pixel: the divisors and cell formulas of its sampler, pmj02's set and shift.</summary>
+internal readonly struct PixelPattern
+{
+    /// <summary>The n-rooks and multi-jittered divisors.</summary>
+    public readonly CellDivisor Divisor;
+
+    /// <summary>cmj's cell formula across.</summary>
+    public readonly WholeCell X;
+
+    /// <summary>cmj's cell formula down.</summary>
+    public readonly WholeCell Y;
+
+    /// <summary>The pmj02 set the pixel reads.</summary>
+    public readonly int Set;
+
+    /// <summary>pmj02's digital shift across (0 for pmj02bn).</summary>
+    public readonly uint ShiftX;
+
+    /// <summary>pmj02's digital shift down (0 for pmj02bn).</summary>
+    public readonly uint ShiftY;
+
+    /// <summary>The pattern of the pixel whose key is <paramref name="key"/> under <paramref name="frame"/>'s sampler.</summary>
+    /// <param name="frame">The launch's settings.</param>
+    /// <param name="key">The pixel's key.</param>
+    public PixelPattern(in PointFrame frame, uint key)
+    {
+        if (frame.Sampler == DeviceSampler.NRooks)
+        {
+            Divisor = new CellDivisor(frame.Samples, 1);
+        }
+        else if (frame.Sampler == DeviceSampler.MultiJittered)
+        {
+            Divisor = new CellDivisor(frame.GridSize, frame.GridSize);
+        }
+        else if (frame.Sampler == DeviceSampler.CorrelatedMultiJittered)
+        {
+            X = CorrelatedMultiJitteredSampler.XCell(frame.Columns, frame.Rows);
+            Y = CorrelatedMultiJitteredSampler.YCell(frame.Samples);
+        }
+        else if (frame.Sampler == DeviceSampler.Pmj02)
+        {
+            (Set, ShiftX, ShiftY) = Pmj02Tables.Pixel(key, frame.Scramble != 0);
+        }
+    }
+}
+
+/// <summary>ZSobol's packed digit permutations in a device buffer (<see cref="IPackedPermutations"/>).</summary>
+/// <param name="table">The 24 packed permutations, one a entry.</param>
+internal readonly struct DevicePermutations(ArrayView<uint> table) : IPackedPermutations
+{
+    private readonly ArrayView<uint> _table = table;
+
+    /// <inheritdoc />
+    public uint Packed(int number) => _table[number];
 }

@@ -4,25 +4,35 @@ using RayLab.Sampling;
 namespace RayLab.Gpu.Tests;
 
 /// <summary>
-/// The device path's bytes (the kernel's code on ILGPU's CPU accelerator) against the CPU renderer's: every ported
-/// sampler, both cameras, the packet kernels' bytes and the scalar loop's, and the golden set.
+/// The device path's bytes (the kernel's code on ILGPU's CPU accelerator) against the CPU renderer's: every built-in
+/// point sampler (the later-ported ones at two seeds), both cameras, the packet kernels' bytes and the scalar loop's, and the golden set.
 /// </summary>
 public class SameBytesTests(CpuAcceleratorFixture fixture) : IClassFixture<CpuAcceleratorFixture>
 {
     private const int Width = 64;
     private const int Height = 48;
 
-    public static TheoryData<string, string, int, RenderKernel> Cases()
+    public static TheoryData<string, string, int, uint, RenderKernel> Cases()
     {
-        var data = new TheoryData<string, string, int, RenderKernel>();
+        var data = new TheoryData<string, string, int, uint, RenderKernel>();
+        var samplers = new (string Name, int[] Counts, uint[] Seeds)[]
+        {
+            ("regular", [1, 9], [7]), ("jittered", [4, 16], [7]), ("random", [1, 6], [7]), ("hammersley", [6], [7]),
+            ("nrooks", [5, 16], [7, 1234567]), ("multijittered", [4, 9], [7, 1234567]), ("cmj", [6, 16], [7, 1234567]),
+            ("sobol", [6, 16], [7, 1234567]), ("pmj02", [6, 16], [7, 1234567]), ("pmj02bn", [5, 16], [7, 1234567]),
+            ("zsobol", [6, 16], [7, 1234567]),
+        };
         foreach (string camera in TestScenes.Cameras.Keys)
         {
-            foreach ((string sampler, int[] counts) in new[] { ("regular", new[] { 1, 9 }), ("jittered", new[] { 4, 16 }), ("random", new[] { 1, 6 }), ("hammersley", new[] { 6 }) })
+            foreach ((string sampler, int[] counts, uint[] seeds) in samplers)
             {
                 foreach (int n in counts)
                 {
-                    data.Add(camera, sampler, n, RenderKernel.Auto);
-                    data.Add(camera, sampler, n, RenderKernel.Scalar);
+                    foreach (uint seed in seeds)
+                    {
+                        data.Add(camera, sampler, n, seed, RenderKernel.Auto);
+                        data.Add(camera, sampler, n, seed, RenderKernel.Scalar);
+                    }
                 }
             }
         }
@@ -32,10 +42,10 @@ public class SameBytesTests(CpuAcceleratorFixture fixture) : IClassFixture<CpuAc
 
     [Theory]
     [MemberData(nameof(Cases))]
-    public void TheDeviceGivesTheCpuRenderersBytes(string camera, string sampler, int samples, RenderKernel kernel)
+    public void TheDeviceGivesTheCpuRenderersBytes(string camera, string sampler, int samples, uint seed, RenderKernel kernel)
     {
         Scene scene = TestScenes.TwoSpheres();
-        IPixelSampler points = Samplers.Create(sampler, samples, 7);
+        IPixelSampler points = Samplers.Create(sampler, samples, seed);
         var cpu = new Image(Width, Height);
         var device = new Image(Width, Height);
         RenderStatistics cpuStats = new Renderer { Kernel = kernel }.Render(scene, TestScenes.Cameras[camera], RenderMethod.Sampled(points), cpu);
@@ -53,6 +63,13 @@ public class SameBytesTests(CpuAcceleratorFixture fixture) : IClassFixture<CpuAc
     [InlineData("jittered")]
     [InlineData("random")]
     [InlineData("hammersley")]
+    [InlineData("nrooks")]
+    [InlineData("multijittered")]
+    [InlineData("cmj")]
+    [InlineData("sobol")]
+    [InlineData("pmj02")]
+    [InlineData("pmj02bn")]
+    [InlineData("zsobol")]
     public void TheDeviceKeepsTheGoldenSetsBytes(string sampler)
     {
         // The golden set (tests/RayLab.Tests/Golden) pins 37×23 renders of each sampler, camera and kernel: the device's
@@ -64,7 +81,7 @@ public class SameBytesTests(CpuAcceleratorFixture fixture) : IClassFixture<CpuAc
         int checkedCount = 0;
         foreach ((string cameraName, Camera camera) in TestScenes.Cameras)
         {
-            foreach (int n in sampler is "regular" or "jittered" ? new[] { 1, 9, 16 } : [1, 6, 16])
+            foreach (int n in sampler is "regular" or "jittered" or "multijittered" ? new[] { 1, 9, 16 } : [1, 6, 16])
             {
                 foreach ((RenderKernel kernel, string pinned) in new[] { (RenderKernel.Auto, "Vector512"), (RenderKernel.Scalar, "Scalar") })
                 {

@@ -82,15 +82,10 @@ internal readonly partial struct PowerOfTwoCellFormula : IDoubleFormula
 
     /// <summary>The formula with jitter scale <paramref name="scale"/> and divisors d₁ = <paramref name="inner"/>, d₂ = <paramref name="outer"/>.</summary>
     /// <param name="scale">The jitter's scale.</param>
-    /// <param name="inner">d₁, a power of two.</param>
+    /// <param name="inner">d₁, a power of two (the caller checks: <see cref="WholeCell.IsPowerOfTwo"/>; no throw, so a device kernel can make it).</param>
     /// <param name="outer">d₂, a power of two.</param>
     public PowerOfTwoCellFormula(double scale, int inner, int outer)
     {
-        if (!int.IsPow2(inner) || !int.IsPow2(outer))
-        {
-            throw new ArgumentException($"The divisors {inner} and {outer} must be powers of two.", nameof(inner));
-        }
-
         _scale = scale;
         _inner = 1.0 / inner;
         _outer = 1.0 / outer;

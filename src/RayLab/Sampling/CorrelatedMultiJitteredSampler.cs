@@ -60,62 +60,78 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
 
     private static SamplePoint Sample(int index, int count, int m, int n, uint p, in WholeCell x, in WholeCell y)
     {
-        int s = Permutation.PermutationElement(index, count, p * Kensler.IndexSalt);
-        int column = Permutation.PermutationElement(s % m, m, p * Kensler.ColumnSalt);
-        int row = Permutation.PermutationElement(s / m, n, p * Kensler.RowSalt);
-        var pattern = new ScalarLane(p, 0);
-        JitterKey<ScalarLane, ScalarMath>(pattern, Kensler.JitterXSalt, out ScalarLane jx, out ScalarLane jxMultiplier);
-        JitterKey<ScalarLane, ScalarMath>(pattern, Kensler.JitterYSalt, out ScalarLane jy, out ScalarLane jyMultiplier);
-        Point<ScalarLane, ScalarMath>(
-            new ScalarLane((uint)s, 0), new ScalarLane((uint)column, 0), new ScalarLane((uint)row, 0), jx, jxMultiplier, jy, jyMultiplier, x, y, out ScalarLane sx, out ScalarLane sy);
+        Formula.Point<ScalarLane, ScalarMath>(p, index, count, m, n, x, y, out ScalarLane sx, out ScalarLane sy);
         return new SamplePoint(sx.Value, sy.Value);
     }
 
     /// <summary>The x cell formula (column + (row + jx)/n)/m.</summary>
-    private static WholeCell XCell(int m, int n) => new(Kensler.RandFloatScale, n, m);
+    internal static WholeCell XCell(int m, int n) => new(Kensler.RandFloatScale, n, m);
 
     /// <summary>The y cell formula (s + jy)/N.</summary>
-    private static WholeCell YCell(int count) => new(Kensler.RandFloatScale, count, 1);
+    internal static WholeCell YCell(int count) => new(Kensler.RandFloatScale, count, 1);
 
-    /// <summary>
-    /// The point of permuted index <paramref name="s"/> in its column and row (each permuted):
-    /// ((column + (row + jx)/n)/m, (s + jy)/N), jx and jy Kensler's <c>randfloat</c> of s under the pattern's two
-    /// jitter keys (<see cref="JitterKey"/>).
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void Point<TV, TM>(TV s, TV column, TV row, TV jx, TV jxMultiplier, TV jy, TV jyMultiplier, in WholeCell x, in WholeCell y, out TV sx, out TV sy)
-        where TV : struct
-        where TM : IPointMath<TV>
+    /// <summary>Kensler's cmj point formula, once, for the CPU lanes, the scalar path and the device.</summary>
+    internal readonly struct Formula
     {
-        TM.InWholeCells(column, row, RandomBits<TV, TM>(s, jx, jxMultiplier), x, TM.BroadcastBits(0), s, RandomBits<TV, TM>(s, jy, jyMultiplier), y, out sx, out sy);
-    }
+        /// <summary>
+        /// Kensler's <c>cmj(s, N, p)</c>: sample <paramref name="index"/> of the pattern <paramref name="p"/> with
+        /// <paramref name="count"/> samples on an <paramref name="m"/> × <paramref name="n"/> grid, the cell formulas
+        /// <paramref name="x"/> (<see cref="XCell"/>) and <paramref name="y"/> (<see cref="YCell"/>).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Point<TV, TM>(uint p, int index, int count, int m, int n, in WholeCell x, in WholeCell y, out TV sx, out TV sy)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            int s = Permutation.PermutationElement(index, count, p * Kensler.IndexSalt);
+            int column = Permutation.PermutationElement(s % m, m, p * Kensler.ColumnSalt);
+            int row = Permutation.PermutationElement(s / m, n, p * Kensler.RowSalt);
+            TV pattern = TM.BroadcastBits(p);
+            JitterKey<TV, TM>(pattern, Kensler.JitterXSalt, out TV jx, out TV jxMultiplier);
+            JitterKey<TV, TM>(pattern, Kensler.JitterYSalt, out TV jy, out TV jyMultiplier);
+            Place<TV, TM>(TM.BroadcastBits((uint)s), TM.BroadcastBits((uint)column), TM.BroadcastBits((uint)row), jx, jxMultiplier, jy, jyMultiplier, x, y, out sx, out sy);
+        }
 
-    /// <summary>A jitter's key p·salt for <c>randfloat</c>, and its final multiplier 1 | (key ≫ 18).</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void JitterKey<TV, TM>(TV pattern, uint salt, out TV key, out TV multiplier)
-        where TV : struct
-        where TM : IPointMath<TV>
-    {
-        key = TM.MultiplyBits(pattern, TM.BroadcastBits(salt));
-        multiplier = TM.Or(TM.ShiftRightBits(key, 18), TM.BroadcastBits(1));
-    }
+        /// <summary>
+        /// The point of permuted index <paramref name="s"/> in its column and row (each permuted):
+        /// ((column + (row + jx)/n)/m, (s + jy)/N), jx and jy Kensler's <c>randfloat</c> of s under the pattern's two
+        /// jitter keys (<see cref="JitterKey"/>).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Place<TV, TM>(TV s, TV column, TV row, TV jx, TV jxMultiplier, TV jy, TV jyMultiplier, in WholeCell x, in WholeCell y, out TV sx, out TV sy)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            TM.InWholeCells(column, row, RandomBits<TV, TM>(s, jx, jxMultiplier), x, TM.BroadcastBits(0), s, RandomBits<TV, TM>(s, jy, jyMultiplier), y, out sx, out sy);
+        }
 
-    /// <summary>Kensler's <c>randfloat(i, p)</c> before its scaling by <see cref="Kensler.RandFloatScale"/>: a hash of (i, p).</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static TV RandomBits<TV, TM>(TV i, TV p, TV multiplier)
-        where TV : struct
-        where TM : IPointMath<TV>
-    {
-        i = TM.Xor(i, p);
-        i = TM.Xor(i, TM.ShiftRightBits(i, 17));
-        i = TM.Xor(i, TM.ShiftRightBits(i, 10));
-        i = TM.MultiplyBits(i, TM.BroadcastBits(Kensler.RandFloatMultiplier1));
-        i = TM.Xor(i, TM.ShiftRightBits(i, 12));
-        i = TM.Xor(i, TM.ShiftRightBits(i, 21));
-        i = TM.MultiplyBits(i, TM.BroadcastBits(Kensler.RandFloatMultiplier2));
-        i = TM.Xor(i, TM.BroadcastBits(Kensler.RandFloatXor));
-        i = TM.Xor(i, TM.ShiftRightBits(i, 17));
-        return TM.MultiplyBits(i, multiplier);
+        /// <summary>A jitter's key p·salt for <c>randfloat</c>, and its final multiplier 1 | (key ≫ 18).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void JitterKey<TV, TM>(TV pattern, uint salt, out TV key, out TV multiplier)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            key = TM.MultiplyBits(pattern, TM.BroadcastBits(salt));
+            multiplier = TM.Or(TM.ShiftRightBits(key, 18), TM.BroadcastBits(1));
+        }
+
+        /// <summary>Kensler's <c>randfloat(i, p)</c> before its scaling by <see cref="Kensler.RandFloatScale"/>: a hash of (i, p).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static TV RandomBits<TV, TM>(TV i, TV p, TV multiplier)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            i = TM.Xor(i, p);
+            i = TM.Xor(i, TM.ShiftRightBits(i, 17));
+            i = TM.Xor(i, TM.ShiftRightBits(i, 10));
+            i = TM.MultiplyBits(i, TM.BroadcastBits(Kensler.RandFloatMultiplier1));
+            i = TM.Xor(i, TM.ShiftRightBits(i, 12));
+            i = TM.Xor(i, TM.ShiftRightBits(i, 21));
+            i = TM.MultiplyBits(i, TM.BroadcastBits(Kensler.RandFloatMultiplier2));
+            i = TM.Xor(i, TM.BroadcastBits(Kensler.RandFloatXor));
+            i = TM.Xor(i, TM.ShiftRightBits(i, 17));
+            return TM.MultiplyBits(i, multiplier);
+        }
     }
 
     /// <inheritdoc />
@@ -127,7 +143,7 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
 
     /// <summary>
     /// The points in lanes: Kensler's three permutations walk in SIMD, made a block ahead (<see cref="PointBlock"/>),
-    /// and <see cref="Point"/> runs in lanes, its cell formulas in double (the jitter is a rounded double, so only
+    /// and <see cref="Formula.Place"/> runs in lanes, its cell formulas in double (the jitter is a rounded double, so only
     /// double arithmetic gives the scalar sampler's floats).
     /// </summary>
     private struct LaneForm<TL> : ILaneSampler<TL>, IStagedPoints<TL>
@@ -187,8 +203,8 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
                 (_rowsLow, _rowsHigh) = Tabulate(_row, _rows, _n);
             }
 
-            JitterKey<TL, LaneMath<TL>>(p, Kensler.JitterXSalt, out _jx, out _jxMultiplier);
-            JitterKey<TL, LaneMath<TL>>(p, Kensler.JitterYSalt, out _jy, out _jyMultiplier);
+            Formula.JitterKey<TL, LaneMath<TL>>(p, Kensler.JitterXSalt, out _jx, out _jxMultiplier);
+            Formula.JitterKey<TL, LaneMath<TL>>(p, Kensler.JitterYSalt, out _jy, out _jyMultiplier);
         }
 
         /// <inheritdoc />
@@ -272,7 +288,7 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
         /// <inheritdoc />
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy) =>
-            Point<TL, LaneMath<TL>>(a, b, c, _jx, _jxMultiplier, _jy, _jyMultiplier, _x, _y, out sx, out sy);
+            Formula.Place<TL, LaneMath<TL>>(a, b, c, _jx, _jxMultiplier, _jy, _jyMultiplier, _x, _y, out sx, out sy);
 
         /// <summary>s div m and s mod m: a float quotient (s &lt; 2²⁴ is exact) truncated, then corrected by one either way.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

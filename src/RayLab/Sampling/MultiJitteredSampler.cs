@@ -38,33 +38,48 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index)
     {
-        int n = GridSize;
-        int column = index % n, row = index / n;
-        uint key = CounterHash.PixelKey(x, y, Seed);
-
-        // Fine column of this sample inside its coarse column: a permutation (over rows) of that column.
-        int subColumn = Permutation.PermutationElement(row, n, CounterHash.SampleHash(key ^ ColumnSalt, column));
-
-        // Fine row of this sample inside its coarse row: a permutation (over columns) of that row.
-        int subRow = Permutation.PermutationElement(column, n, CounterHash.SampleHash(key ^ RowSalt, row));
-
-        InSubCells<ScalarLane, ScalarMath>(new ScalarLane(key, 0), index, column, row, new ScalarLane((uint)subColumn, 0), new ScalarLane((uint)subRow, 0), _divisor, out ScalarLane sx, out ScalarLane sy);
+        Formula.Point<ScalarLane, ScalarMath>(CounterHash.PixelKey(x, y, Seed), index, GridSize, _divisor, out ScalarLane sx, out ScalarLane sy);
         return new SamplePoint(sx.Value, sy.Value);
     }
 
-    /// <summary>
-    /// Sample <paramref name="index"/> in fine cell (subColumn, subRow) of its coarse cell (column, row):
-    /// ((column + (subColumn + u)/n)/n, (row + (subRow + v)/n)/n), u and v two hashes of the sample.
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void InSubCells<TV, TM>(TV keys, int index, int column, int row, TV subColumn, TV subRow, in CellDivisor divisor, out TV sx, out TV sy)
-        where TV : struct
-        where TM : IPointMath<TV>
+    /// <summary>The multi-jittered point formula, once, for the CPU lanes, the scalar path and the device.</summary>
+    internal readonly struct Formula
     {
-        TV h1 = PointHash.SampleHash<TV, TM>(keys, index);
-        TV h2 = TM.Hash(h1);
-        sx = TM.InSubCell(column, subColumn, h1, divisor);
-        sy = TM.InSubCell(row, subRow, h2, divisor);
+        /// <summary>
+        /// Sample <paramref name="index"/> of the n × n pattern of the pixel whose key is <paramref name="key"/>: its
+        /// coarse cell (i mod n, i div n), its fine column and fine row from the hash permutations of that coarse column
+        /// and coarse row, then <see cref="InSubCells"/>.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Point<TV, TM>(uint key, int index, int n, in CellDivisor divisor, out TV sx, out TV sy)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            int column = index % n, row = index / n;
+
+            // Fine column of this sample inside its coarse column: a permutation (over rows) of that column.
+            int subColumn = Permutation.PermutationElement(row, n, CounterHash.SampleHash(key ^ ColumnSalt, column));
+
+            // Fine row of this sample inside its coarse row: a permutation (over columns) of that row.
+            int subRow = Permutation.PermutationElement(column, n, CounterHash.SampleHash(key ^ RowSalt, row));
+
+            InSubCells<TV, TM>(TM.BroadcastBits(key), index, column, row, TM.BroadcastBits((uint)subColumn), TM.BroadcastBits((uint)subRow), divisor, out sx, out sy);
+        }
+
+        /// <summary>
+        /// Sample <paramref name="index"/> in fine cell (subColumn, subRow) of its coarse cell (column, row):
+        /// ((column + (subColumn + u)/n)/n, (row + (subRow + v)/n)/n), u and v two hashes of the sample.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void InSubCells<TV, TM>(TV keys, int index, int column, int row, TV subColumn, TV subRow, in CellDivisor divisor, out TV sx, out TV sy)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            TV h1 = PointHash.SampleHash<TV, TM>(keys, index);
+            TV h2 = TM.Hash(h1);
+            sx = TM.InSubCell(column, subColumn, h1, divisor);
+            sy = TM.InSubCell(row, subRow, h2, divisor);
+        }
     }
 
     /// <inheritdoc />
@@ -144,7 +159,7 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
         public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy)
         {
             (int column, int row) = _cells[index];
-            InSubCells<TL, LaneMath<TL>>(_keys, index, column, row, a, b, _divisor, out sx, out sy);
+            Formula.InSubCells<TL, LaneMath<TL>>(_keys, index, column, row, a, b, _divisor, out sx, out sy);
         }
     }
 }

@@ -36,27 +36,41 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index)
     {
-        int count = SamplesPerPixel;
-        uint key = CounterHash.PixelKey(x, y, Seed);
-        int column = Permutation.PermutationElement(index, count, key * ColumnSalt);
-        int row = Permutation.PermutationElement(index, count, key * RowSalt);
-        InCells<ScalarLane, ScalarMath>(new ScalarLane(key, 0), index, new ScalarLane((uint)column, 0), new ScalarLane((uint)row, 0), _divisor, out ScalarLane sx, out ScalarLane sy);
+        Formula.Point<ScalarLane, ScalarMath>(CounterHash.PixelKey(x, y, Seed), index, SamplesPerPixel, _divisor, out ScalarLane sx, out ScalarLane sy);
         return new SamplePoint(sx.Value, sy.Value);
     }
 
-    /// <summary>
-    /// Sample <paramref name="index"/> in its cell (column, row) of the N × N grid: ((column + u)/N, (row + v)/N), u
-    /// and v two hashes of the sample.
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void InCells<TV, TM>(TV keys, int index, TV column, TV row, in CellDivisor divisor, out TV sx, out TV sy)
-        where TV : struct
-        where TM : IPointMath<TV>
+    /// <summary>The n-rooks point formula, once, for the CPU lanes, the scalar path and the device.</summary>
+    internal readonly struct Formula
     {
-        TV h1 = PointHash.SampleHash<TV, TM>(keys, index);
-        TV h2 = TM.Hash(h1);
-        sx = TM.InCellExactly(column, h1, divisor);
-        sy = TM.InCellExactly(row, h2, divisor);
+        /// <summary>
+        /// Sample <paramref name="index"/> of the pixel whose key is <paramref name="key"/>: column π_x(index) and row
+        /// π_y(index) of two hash permutations of 0 … N − 1, then <see cref="InCells"/>.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Point<TV, TM>(uint key, int index, int count, in CellDivisor divisor, out TV sx, out TV sy)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            int column = Permutation.PermutationElement(index, count, key * ColumnSalt);
+            int row = Permutation.PermutationElement(index, count, key * RowSalt);
+            InCells<TV, TM>(TM.BroadcastBits(key), index, TM.BroadcastBits((uint)column), TM.BroadcastBits((uint)row), divisor, out sx, out sy);
+        }
+
+        /// <summary>
+        /// Sample <paramref name="index"/> in its cell (column, row) of the N × N grid: ((column + u)/N, (row + v)/N), u
+        /// and v two hashes of the sample.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void InCells<TV, TM>(TV keys, int index, TV column, TV row, in CellDivisor divisor, out TV sx, out TV sy)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            TV h1 = PointHash.SampleHash<TV, TM>(keys, index);
+            TV h2 = TM.Hash(h1);
+            sx = TM.InCellExactly(column, h1, divisor);
+            sy = TM.InCellExactly(row, h2, divisor);
+        }
     }
 
     /// <inheritdoc />
@@ -117,6 +131,6 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy) =>
-            InCells<TL, LaneMath<TL>>(_keys, index, a, b, _divisor, out sx, out sy);
+            Formula.InCells<TL, LaneMath<TL>>(_keys, index, a, b, _divisor, out sx, out sy);
     }
 }

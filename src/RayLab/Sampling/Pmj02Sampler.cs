@@ -59,7 +59,7 @@ public sealed class Pmj02Sampler : PixelSampler, ILaneSampled
     /// <see cref="CounterHash.ToUnit"/>(y ⊕ ky)), the digital shift (keys 0 for pmj02bn) and the conversion.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void Shift<TV, TM>(TV x, TV y, TV kx, TV ky, out TV sx, out TV sy)
+    internal static void Shift<TV, TM>(TV x, TV y, TV kx, TV ky, out TV sx, out TV sy)
         where TV : struct
         where TM : IPointMath<TV>
     {

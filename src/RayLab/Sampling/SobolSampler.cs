@@ -40,9 +40,22 @@ public sealed class SobolSampler : PixelSampler, ILaneSampled
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index)
     {
-        Seeds<ScalarLane, ScalarMath>(PointHash.PixelKeys<ScalarLane, ScalarMath>(x, y, _salt), out ScalarLane indexSeed, out ScalarLane xSeed, out ScalarLane ySeed);
-        Coordinates<ScalarLane, ScalarMath>(ScrambledIndex<ScalarLane, ScalarMath>(index, indexSeed), xSeed, ySeed, out ScalarLane sx, out ScalarLane sy);
+        Formula.Point<ScalarLane, ScalarMath>(PointHash.PixelKeys<ScalarLane, ScalarMath>(x, y, _salt), index, out ScalarLane sx, out ScalarLane sy);
         return new SamplePoint(sx.Value, sy.Value);
+    }
+
+    /// <summary>The scrambled Sobol' point formula, once, for the CPU lanes, the scalar path and the device.</summary>
+    internal readonly struct Formula
+    {
+        /// <summary>Sample <paramref name="index"/> of the pixels whose keys are <paramref name="keys"/>: the seeds, the scrambled index, its point.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Point<TV, TM>(TV keys, int index, out TV sx, out TV sy)
+            where TV : struct
+            where TM : IPointMath<TV>
+        {
+            Seeds<TV, TM>(keys, out TV indexSeed, out TV xSeed, out TV ySeed);
+            Coordinates<TV, TM>(ScrambledIndex<TV, TM>(index, indexSeed), xSeed, ySeed, out sx, out sy);
+        }
     }
 
     /// <inheritdoc />

@@ -55,12 +55,14 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
     internal uint YSeed { get; }
 
     /// <inheritdoc />
-    public override SamplePoint GetSample(int x, int y, int index) => Point(SobolIndex(x, y, index));
+    public override SamplePoint GetSample(int x, int y, int index)
+    {
+        Formula.Point<ScalarLane, ScalarMath>(SobolIndex(x, y, index), XSeed, YSeed, out ScalarLane sx, out ScalarLane sy);
+        return new SamplePoint(sx.Value, sy.Value);
+    }
 
-    /// <summary>The point of Sobol' index <paramref name="i"/>: both coordinates through their Owen scrambles.</summary>
-    private SamplePoint Point(uint i) => new(
-        CounterHash.ToUnit(LowDiscrepancy.NestedUniformScramble(LowDiscrepancy.ReverseBits(i), XSeed)),
-        CounterHash.ToUnit(LowDiscrepancy.NestedUniformScramble(LowDiscrepancy.SobolDimension1(i), YSeed)));
+    /// <summary>The 24 packed permutations of four (the device form's table).</summary>
+    internal static ReadOnlySpan<byte> PermutationTable => Permutations;
 
     /// <summary>
     /// The Sobol' index of sample <paramref name="index"/> of pixel (x, y): the digits of (Morton code · 2ᵐ + index),
@@ -69,26 +71,45 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
     /// <param name="x">The pixel column, below 65 536.</param>
     /// <param name="y">The pixel row, below 65 536.</param>
     /// <param name="index">The sample index.</param>
-    internal uint SobolIndex(int x, int y, int index)
+    internal uint SobolIndex(int x, int y, int index) =>
+        Formula.SobolIndex(new PackedPermutations(Permutations), Log2Block, DigitSalt, x, y, index);
+
+    /// <summary>The ZSobol point formula, once, for the scalar path and the device (the lanes assemble the same indices a packet at a time).</summary>
+    internal readonly struct Formula
     {
-        int m = Log2Block;
-        ulong code = (Morton(x, y) << m) | (uint)index;
-        int low = m & 1;
-        var result = new ScalarLane(0, 0);
-
-        // Digits from bit 32 up fall outside the 32-bit index; they only pick the permutations below them.
-        for (int shift = 30 + low; shift >= low; shift -= 2)
+        /// <summary>
+        /// The Sobol' index of sample <paramref name="index"/> of pixel (x, y) with 2^<paramref name="m"/> indices a
+        /// pixel: the digits of (Morton code · 2ᵐ + index), base 4 from the top (and, for odd m, the last binary
+        /// digit), each permuted by the digits above it (<paramref name="permutations"/>, <paramref name="digitSalt"/>).
+        /// </summary>
+        public static uint SobolIndex<TP>(in TP permutations, int m, ulong digitSalt, int x, int y, int index)
+            where TP : struct, IPackedPermutations
         {
-            var permutation = new ScalarLane(Permutations[PermutationOf(code >> (shift + 2))], 0);
-            result = PlaceDigit<ScalarLane, ScalarMath>(result, permutation, (int)(code >> shift) & 3, shift);
+            ulong code = (Morton(x, y) << m) | (uint)index;
+            int low = m & 1;
+            var result = new ScalarLane(0, 0);
+
+            // Digits from bit 32 up fall outside the 32-bit index; they only pick the permutations below them.
+            for (int shift = 30 + low; shift >= low; shift -= 2)
+            {
+                var permutation = new ScalarLane(permutations.Packed(PermutationOf(code >> (shift + 2), digitSalt)), 0);
+                result = PlaceDigit<ScalarLane, ScalarMath>(result, permutation, (int)(code >> shift) & 3, shift);
+            }
+
+            if (low == 1)
+            {
+                result = PlaceFlip<ScalarLane, ScalarMath>(result, new ScalarLane((uint)FlipBit(code >> 1, digitSalt), 0), index);
+            }
+
+            return result.Bits;
         }
 
-        if (low == 1)
-        {
-            result = PlaceFlip<ScalarLane, ScalarMath>(result, new ScalarLane((uint)FlipBit(code >> 1), 0), index);
-        }
-
-        return result.Bits;
+        /// <summary>The point of Sobol' index <paramref name="i"/>: both coordinates through their Owen scrambles (<c>SobolSampler.Coordinates</c>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Point<TV, TM>(uint i, uint xSeed, uint ySeed, out TV sx, out TV sy)
+            where TV : struct
+            where TM : IPointMath<TV> =>
+            SobolSampler.Coordinates<TV, TM>(TM.BroadcastBits(i), TM.BroadcastBits(xSeed), TM.BroadcastBits(ySeed), out sx, out sy);
     }
 
     /// <summary>
@@ -129,7 +150,7 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
             for (int t = count - 1; t >= 0; t--)
             {
                 uint start = block[t];
-                byte permutation = Permutations[PermutationOf((pixel >> (shift + 2)) | (uint)t)];
+                byte permutation = Permutations[PermutationOf((pixel >> (shift + 2)) | (uint)t, DigitSalt)];
                 for (int d = 3; d >= 0; d--)
                 {
                     block[(4 * t) + d] = start | (((uint)(permutation >> (2 * d)) & 3u) << shift);
@@ -141,7 +162,7 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
         {
             for (int t = count - 1; t >= 0; t--)
             {
-                uint start = block[t], flip = (uint)FlipBit((pixel >> 1) | (uint)t);
+                uint start = block[t], flip = (uint)FlipBit((pixel >> 1) | (uint)t, DigitSalt);
                 block[(2 * t) + 1] = start | (1u ^ flip);
                 block[2 * t] = start | flip;
             }
@@ -193,7 +214,7 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
 
         for (; j < higher.Length; j++)
         {
-            higher[j] = (ulong)PermutationOf(higher[j]);
+            higher[j] = (ulong)PermutationOf(higher[j], DigitSalt);
         }
 
         for (j = 0; j < higher.Length; j++)
@@ -208,19 +229,19 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
     {
         for (int j = 0; j < higher.Length; j++)
         {
-            flips[j] = (uint)FlipBit(higher[j]);
+            flips[j] = (uint)FlipBit(higher[j], DigitSalt);
         }
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private int PermuteDigit(int digit, ulong higher) => (Permutations[PermutationOf(higher)] >> (2 * digit)) & 3;
+    private int PermuteDigit(int digit, ulong higher) => (Permutations[PermutationOf(higher, DigitSalt)] >> (2 * digit)) & 3;
 
-    /// <summary>Which of the 24 permutations the digits <paramref name="higher"/> above a digit pick.</summary>
+    /// <summary>Which of the 24 permutations the digits <paramref name="higher"/> above a digit pick under <paramref name="salt"/> (<see cref="DigitSalt"/>).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private int PermutationOf(ulong higher) => (int)(((Mix(higher ^ DigitSalt) >> 40) * 24) >> 24);
+    private static int PermutationOf(ulong higher, ulong salt) => (int)(((Mix(higher ^ salt) >> 40) * 24) >> 24);
 
     /// <summary>The last binary digit's flip (odd m), from the digits above it.</summary>
-    private ulong FlipBit(ulong higher) => Mix(higher ^ DigitSalt ^ 0x9e3779b97f4a7c15ul) >> 63;
+    private static ulong FlipBit(ulong higher, ulong salt) => Mix(higher ^ salt ^ 0x9e3779b97f4a7c15ul) >> 63;
 
     /// <summary><see cref="Mix(ulong)"/> in every lane.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -504,4 +525,22 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
         public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy) =>
             SobolSampler.Coordinates<TL, LaneMath<TL>>(a, _xSeed, _ySeed, out sx, out sy);
     }
+}
+
+/// <summary>The 24 packed permutations of four that the ZSobol index formula reads: an array on the CPU, a device buffer in a kernel.</summary>
+internal interface IPackedPermutations
+{
+    /// <summary>Permutation <paramref name="number"/> (0 … 23), its four 2-bit images packed.</summary>
+    /// <param name="number">The permutation's number.</param>
+    /// <returns>The packed permutation.</returns>
+    uint Packed(int number);
+}
+
+/// <summary><see cref="IPackedPermutations"/> over the CPU's array.</summary>
+/// <param name="table">The packed permutations.</param>
+internal readonly struct PackedPermutations(byte[] table) : IPackedPermutations
+{
+    /// <inheritdoc />
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public uint Packed(int number) => table[number];
 }
