@@ -396,13 +396,15 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
             Assert.Equal(lab, rows["solution"].GetProperty("labReport").GetProperty(camera).GetProperty("raysPerPixel").GetDouble(), 0.01);
         }
 
-        // Two mistakes: each fails its own section, the row is still ok, and every other check has its result (as
-        // many as the solution's, all passed outside 2.2 and 4.1.1), the checks after the sampler's stopped run too:
-        // its check failed with the lab's own result, not the grader's timeout.
+        // Two mistakes: each fails its own section (and 5, whose pictures go through the same ToByte), the row is still
+        // ok, and every other check has its result (as many as the solution's, all passed in the other sections), the
+        // checks after the sampler's stopped run too: its check failed with the lab's own result, not the grader's
+        // timeout.
         Assert.Equal("ok", rows["rounded"].GetProperty("status").GetString());
         Assert.Equal("fail", Section(rows["rounded"], "2.2"));
         Assert.Equal("fail", Section(rows["rounded"], "4.1.1"));
-        Assert.All(sections.Where(s => s is not "2.2" and not "4.1.1"), s => Assert.Equal("pass", Section(rows["rounded"], s)));
+        Assert.Equal("fail", Section(rows["rounded"], "5"));
+        Assert.All(sections.Where(s => s is not "2.2" and not "4.1.1" and not "5"), s => Assert.Equal("pass", Section(rows["rounded"], s)));
         Assert.Equal(Checks(rows["solution"]).Order(StringComparer.Ordinal), Checks(rows["rounded"]).Order(StringComparer.Ordinal));
         Assert.DoesNotContain(rows["rounded"].GetProperty("checks").EnumerateArray(), c => c.GetProperty("outcome").GetString() is "Timeout" or "Crashed" or "NotRun");
 
