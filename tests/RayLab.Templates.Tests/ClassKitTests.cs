@@ -323,11 +323,17 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
     [Fact]
     public async Task GradingExerciseLabsGivesEachSectionOfTheStudentsClassesItsOwnResult()
     {
-        // The exercise lab: the reference solution, and the solution with the 8-bit rule rounded instead of cut (2.2).
+        // The exercise lab: the reference solution; and the solution with two mistakes in two sections, each of which
+        // must fail only its own: the 8-bit rule rounded instead of cut (2.2), and a regular sampler whose loop never
+        // ends for n = 1 and calls nothing of the checks' code (4.1.1; it sleeps, so as not to take a core from the
+        // labs graded beside it): its check fails at the lab's limit with its own message and ends the run, and the
+        // grader runs the checks left without a result again.
         string submissions = Directory.CreateDirectory(Path.Combine(kit.Root, "exercise-submissions")).FullName;
         await kit.NewLabAsync(submissions, "solution", restore: false, "exercise", "raylab-lab-solution");
         string rounded = await kit.NewLabAsync(submissions, "rounded", restore: false, "exercise", "raylab-lab-solution");
         Edit(rounded, "src/Lab/LabImage.cs", "(byte)(int)scaled", "(byte)Math.Round(scaled)");
+        Edit(rounded, "src/Lab/LabRegularSampler.cs", "            for (int i = 0; i < K; i++)",
+            "            while (K == 1)\n            {\n                Thread.Sleep(100);\n            }\n\n            for (int i = 0; i < K; i++)");
         // The orthographic camera handed to RayLab's: one line, which gives RayLab's own rays.
         string delegating = await kit.NewLabAsync(submissions, "delegating", restore: false, "exercise", "raylab-lab-solution");
         Edit(delegating, "src/Lab/LabOrthoCamera.cs", OrthoRay,
@@ -357,25 +363,19 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
                 }
             }
             """);
-        // The solution with a regular sampler whose loop never ends for n = 1 and calls nothing of the checks' code:
-        // its check fails at the lab's limit with its own message and ends the run; the grader runs the checks left
-        // without a result again.
-        string spinning = await kit.NewLabAsync(submissions, "spinning", restore: false, "exercise", "raylab-lab-solution");
-        Edit(spinning, "src/Lab/LabRegularSampler.cs", "for (int i = 0; i < K; i++)", "for (int i = 0; i < K; i += Math.Min(1, K - 1))");
-        // The skeleton, nothing written, whose project edits the checks at build time so that every check returns at
-        // once (ContinueOnError: where the checks are not in its copy, the build goes on).
-        string editor = await kit.NewLabAsync(submissions, "editor", restore: false, "exercise");
-        Edit(editor, "src/Lab/Lab.csproj", "</Project>", """
+        // The skeleton, nothing written, which attacks the checks two ways. Its project edits the checks at build time so
+        // that every check returns at once (ContinueOnError: where the checks are not in its copy, the build goes on).
+        // And its intensity writes, while the checks run, a TRX with one passing check per section where the grader
+        // reads the run's results, and makes it read-only so that the test platform cannot write its own. Either attack
+        // that worked would pass sections.
+        string forger = await kit.NewLabAsync(submissions, "forger", restore: false, "exercise");
+        Edit(forger, "src/Lab/Lab.csproj", "</Project>", """
               <Target Name="PassEveryCheck" BeforeTargets="CoreCompile">
                 <Exec Command="sed -i 's/var clock = Stopwatch.StartNew();/if (work is not null) { return TimeSpan.Zero; } var clock = Stopwatch.StartNew();/' ../../tests/Lab.Tests/Check.cs" ContinueOnError="true" />
               </Target>
             </Project>
             """);
 
-        // The skeleton, nothing written, whose intensity writes, while the checks run, a TRX with one passing check per
-        // section where the grader reads the run's results, and makes it read-only so that the test platform cannot
-        // write its own.
-        string forger = await kit.NewLabAsync(submissions, "forger", restore: false, "exercise");
         Edit(forger, "src/Lab/LightIntensity.cs", "public readonly struct LightIntensity\n{", "public readonly struct LightIntensity\n{\n    static LightIntensity() => Forger.Forge();\n");
         File.WriteAllText(Path.Combine(forger, "src", "Lab", "Forger.cs"), ForgerSource);
 
@@ -396,10 +396,17 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
             Assert.Equal(lab, rows["solution"].GetProperty("labReport").GetProperty(camera).GetProperty("raysPerPixel").GetDouble(), 0.01);
         }
 
+        // Two mistakes: each fails its own section (and 5, whose pictures go through the same ToByte), the row is still
+        // ok, and every other check has its result (as many as the solution's, all passed in the other sections), the
+        // checks after the sampler's stopped run too: its check failed with the lab's own result, not the grader's
+        // timeout.
         Assert.Equal("ok", rows["rounded"].GetProperty("status").GetString());
         Assert.Equal("fail", Section(rows["rounded"], "2.2"));
-        Assert.Equal("pass", Section(rows["rounded"], "2.1"));
-        Assert.Equal("pass", Section(rows["rounded"], "3.2"));
+        Assert.Equal("fail", Section(rows["rounded"], "4.1.1"));
+        Assert.Equal("fail", Section(rows["rounded"], "5"));
+        Assert.All(sections.Where(s => s is not "2.2" and not "4.1.1" and not "5"), s => Assert.Equal("pass", Section(rows["rounded"], s)));
+        Assert.Equal(Checks(rows["solution"]).Order(StringComparer.Ordinal), Checks(rows["rounded"]).Order(StringComparer.Ordinal));
+        Assert.DoesNotContain(rows["rounded"].GetProperty("checks").EnumerateArray(), c => c.GetProperty("outcome").GetString() is "Timeout" or "Crashed" or "NotRun");
 
         // Handed to RayLab, directly or through reflection: the camera's checks pass (RayLab's rays are right), but the
         // section fails, and the row names what the lab used; every other section passes.
@@ -416,22 +423,10 @@ public sealed partial class ClassKitTests(ClassKit kit) : IClassFixture<ClassKit
             Assert.All(sections.Where(s => s != "3.1"), s => Assert.Equal("pass", Section(row, s)));
         }
 
-        // The sampler that never returns: its check failed (the lab's own result, not the grader's timeout), and every
-        // other check has its result, as many as the solution's, all of them passed outside 4.1.1.
-        Assert.Equal("ok", rows["spinning"].GetProperty("status").GetString());
-        Assert.Equal("fail", Section(rows["spinning"], "4.1.1"));
-        Assert.All(sections.Where(s => s != "4.1.1"), s => Assert.Equal("pass", Section(rows["spinning"], s)));
-        Assert.Equal(Checks(rows["solution"]).Order(StringComparer.Ordinal), Checks(rows["spinning"]).Order(StringComparer.Ordinal));
-        Assert.DoesNotContain(rows["spinning"].GetProperty("checks").EnumerateArray(), c => c.GetProperty("outcome").GetString() is "Timeout" or "Crashed" or "NotRun");
-
-        // The project that edits the checks: the checks it runs are the instructor's, built where it cannot write, so
-        // the skeleton's sections are all still to write, as they are: not written, which earns nothing.
-        Assert.All(sections, s => Assert.Equal("not written", Section(rows["editor"], s)));
-        Assert.Equal(0, rows["editor"].GetProperty("grade").GetDouble());
-
-        // The lab that forges the results: where the checks run its code sees them read-only, so no section passes
-        // (each is not written, or fails where its checks meet the intensity's failing static constructor), it earns
-        // nothing, and no check the forgery names is in its row.
+        // The lab that attacks the checks: the checks it runs are the instructor's, built where it cannot write, and
+        // where they run its code sees their results read-only, so no section passes (each is not written, as the
+        // skeleton's are, or fails where its checks meet the intensity's failing static constructor), it earns nothing,
+        // and no check the forgery names is in its row.
         Assert.All(sections, s => Assert.Contains(Section(rows["forger"], s), (string[])["not written", "fail"]));
         Assert.Equal(0, rows["forger"].GetProperty("grade").GetDouble());
         Assert.DoesNotContain(rows["forger"].GetProperty("checks").EnumerateArray(), c => c.GetProperty("name").GetString()!.EndsWith(" forged", StringComparison.Ordinal));

@@ -205,17 +205,21 @@ public sealed partial class LabTemplateTests
 
         TestContext.Current.TestOutputHelper?.WriteLine($"five sabotages: {clock.Elapsed.TotalSeconds:F0} s");
 
-        // A loop that never ends: past the lab's limit (45 s, below the grader's 60 s) the check fails with its own
-        // message, and the loop is stopped at its next call into the checks' camera or sampler.
+        // A loop that never ends: past the lab's limit the check fails with its own message, and the loop is stopped at
+        // its next call into the checks' camera or sampler. The limit is 45 s, below the grader's default 60 s
+        // (--check-timeout); here LAB_TIME_LIMIT_S makes it 10 s, so that each of the two endless loops takes 10 s.
+        Assert.Contains("TimeSpan.FromSeconds(45)", File.ReadAllText(Path.Combine(lab, "tests", "Lab.Tests", "Check.cs")), StringComparison.Ordinal);
+        Assert.Contains("DefaultValueFactory = _ => 60,", File.ReadAllText(Path.Combine(RepoPaths.Root(), "samples", "RayLab.Console", "GradeCommand.cs")), StringComparison.Ordinal);
+        var shortLimit = new Dictionary<string, string?> { ["LAB_TIME_LIMIT_S"] = "10" };
         string renderer = Path.Combine(lab, "src", "Lab", "LabRenderer.cs");
         string rendererSource = File.ReadAllText(renderer);
         const string row = "for (int x = 0; x < nx; x++)\n            {\n                (double X, double Y)[] points";
         Assert.Contains(row, rendererSource, StringComparison.Ordinal);
         File.WriteAllText(renderer, rendererSource.Replace(row, row.Replace("x++", "x = x * 1", StringComparison.Ordinal), StringComparison.Ordinal));
-        (int hangExit, string hang) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-restore", "--filter", "FullyQualifiedName~SameSeedSamePicture");
+        (int hangExit, string hang) = await feed.RunUncheckedAsync(lab, shortLimit, "dotnet", "test", "--no-restore", "--filter", "FullyQualifiedName~SameSeedSamePicture");
         File.WriteAllText(renderer, rendererSource);
         Assert.True(hangExit != 0, $"5 passed with a render loop that never ends:\n{hang}");
-        Assert.Matches(@"Przekroczony limit czasu 45 s: metoda się nie skończyła \(zapętlenie\?\)\. Ostatnio: piksel \(0, \d+\)\. Twoja metoda została zatrzymana\.", hang);
+        Assert.Matches(@"Przekroczony limit czasu 10 s: metoda się nie skończyła \(zapętlenie\?\)\. Ostatnio: piksel \(0, \d+\)\. Twoja metoda została zatrzymana\.", hang);
 
         // A loop that calls nothing of the checks' code (an endless for in the regular sampler, for every n): nothing
         // inside the process can stop it, so its check fails at the limit with its own message and ends the run after
@@ -226,10 +230,10 @@ public sealed partial class LabTemplateTests
         const string step = "for (int i = 0; i < K; i++)";
         Assert.Contains(step, regularSource, StringComparison.Ordinal);
         File.WriteAllText(regular, regularSource.Replace(step, "for (int i = 0; i < K; i *= 1)", StringComparison.Ordinal));
-        (int spinExit, string spin) = await feed.RunUncheckedAsync(lab, "dotnet", "test", "--no-restore", "--filter", "Section=4.1.1");
+        (int spinExit, string spin) = await feed.RunUncheckedAsync(lab, shortLimit, "dotnet", "test", "--no-restore", "--filter", "Section=4.1.1");
         File.WriteAllText(regular, regularSource);
         Assert.True(spinExit != 0, $"4.1.1 passed with a sampler that never returns:\n{spin}");
-        Assert.Matches(@"Przekroczony limit czasu 45 s: metoda się nie skończyła \(zapętlenie\?\)\. Ostatnio: —\. Twojej metody nie dało się zatrzymać \(jej pętla nie woła niczego z kodu sprawdzeń\), więc dotnet test kończy się na tym sprawdzeniu razem z nią \(Check\.StopRun\)", spin);
+        Assert.Matches(@"Przekroczony limit czasu 10 s: metoda się nie skończyła \(zapętlenie\?\)\. Ostatnio: —\. Twojej metody nie dało się zatrzymać \(jej pętla nie woła niczego z kodu sprawdzeń\), więc dotnet test kończy się na tym sprawdzeniu razem z nią \(Check\.StopRun\)", spin);
         Assert.True(Regex.Count(spin, @"(?m)^\s+Failed 4\.1\.1 ") == 1, $"not one 4.1.1 check failed, and the run ended:\n{spin}");
         Assert.Empty(TestProcesses(lab));
 

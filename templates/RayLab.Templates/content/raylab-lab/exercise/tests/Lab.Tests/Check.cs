@@ -34,16 +34,28 @@ internal static class Check
     /// <summary>
     /// How long one check may take; a method that runs longer is taken as hanging. 45 s, below the 60 s that
     /// <c>raylab grade</c> gives one check by default (<c>--check-timeout</c>): the check stops first, so its own
-    /// message is the one you and the instructor read.
+    /// message is the one you and the instructor read. <see cref="Variable"/> sets another number of seconds (e.g. a
+    /// smaller one for a quick try).
     /// </summary>
 #else
     /// <summary>
     /// Ile może trwać jedno sprawdzenie; metoda, która trwa dłużej, uchodzi za zapętloną. 45 s, mniej niż 60 s, które
     /// <c>raylab grade</c> domyślnie daje jednemu sprawdzeniu (<c>--check-timeout</c>): sprawdzenie kończy się
-    /// pierwsze, więc jego komunikat czytasz Ty i prowadzący.
+    /// pierwsze, więc jego komunikat czytasz Ty i prowadzący. <see cref="Variable"/> ustawia inną liczbę sekund (np.
+    /// mniejszą, do szybkiej próby).
     /// </summary>
 #endif
-    public static readonly TimeSpan Limit = TimeSpan.FromSeconds(45);
+    public static readonly TimeSpan Limit =
+        double.TryParse(Environment.GetEnvironmentVariable(Variable), NumberStyles.Float, CultureInfo.InvariantCulture, out double seconds) && seconds > 0
+            ? TimeSpan.FromSeconds(seconds)
+            : TimeSpan.FromSeconds(45);
+
+#if (en)
+    /// <summary>The environment variable that sets <see cref="Limit"/> in seconds.</summary>
+#else
+    /// <summary>Zmienna środowiskowa, która ustawia <see cref="Limit"/> w sekundach.</summary>
+#endif
+    public const string Variable = "LAB_TIME_LIMIT_S";
 
 #if (en)
     /// <summary>How long a method past the limit has to stop, once the checks' own objects refuse to go on.</summary>
