@@ -14,7 +14,9 @@
 #   4. the whole command, `raylab render bench-1080.json --device gpu` (jittered 16 spp) and `--device cpu`,
 #      5 runs each, alternating, wall time (start-up, scene, compile, render, PNG) and the stats file's renderMs (--warmup:
 #      without the first launch);
-#   5. the anchor once more, last, so a drift of the machine during the sitting shows.
+#   5. every built-in point sampler at 1080p 16 spp once on each device, and whether the PNGs' bytes are the same (cmj's
+#      jitter is the one product a GPU compiler may fuse into a multiply-add: docs/gpu.md);
+#   6. the anchor once more, last, so a drift of the machine during the sitting shows.
 # Nothing here is timed by a test: the figures go into docs/performance.md with this command.
 set -euo pipefail
 results=${1:-gpu-results}
@@ -53,6 +55,14 @@ for run in 1 2 3 4 5; do
   done
 done | tee "$results/raylab-command.txt"
 cmp "$results/out-gpu.png" "$results/out-cpu.png" && echo "gpu and cpu PNGs: same bytes" | tee -a "$results/raylab-command.txt"
+
+for sampler in regular jittered random hammersley nrooks multijittered cmj sobol zsobol pmj02 pmj02bn; do
+  for device in gpu cpu; do
+    "${raylab[@]}" render benchmarks/anchors/bench-1080.json --sampler "$sampler" --samples 16 --device "$device" \
+      -o "$results/$sampler-$device.png" >/dev/null
+  done
+  if cmp -s "$results/$sampler-gpu.png" "$results/$sampler-cpu.png"; then echo "$sampler: same bytes"; else echo "$sampler: bytes differ"; fi
+done | tee "$results/samplers.txt"
 
 anchor_all | tee "$results/anchor-last.txt"
 echo "measure.sh: results in $results/"
