@@ -142,6 +142,20 @@ public sealed partial class LabTemplateTests
     }
 
     [Fact]
+    public async Task TheEnglishExerciseLabHasNoPolishLetterInAnyFile()
+    {
+        string root = TrappedFolder("english");
+        string en = Path.Combine(root, "en"), pl = Path.Combine(root, "pl");
+        await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "-o", en, "--lang", "en", "--feed", feed.Feed, "--skipRestore");
+        await feed.RunAsync(feed.Root, "dotnet", "new", "raylab-lab", "-o", pl, "--feed", feed.Feed, "--skipRestore");
+        string[] polish = [.. PolishLines(en)];
+        Assert.True(polish.Length == 0, $"the English exercise lab holds {polish.Length} lines with a Polish letter:\n{string.Join("\n", polish)}");
+
+        // The search finds Polish where it is: the Polish lab's files are full of it.
+        Assert.True(PolishLines(pl).Count() > 20, "no Polish letter found in the Polish lab");
+    }
+
+    [Fact]
     public async Task TheSolutionPassesEveryCheckRendersThePicturesAndEachSabotageFailsItsOwnSection()
     {
         string lab = Path.Combine(TrappedFolder("solution"), "Lab2");
@@ -343,12 +357,11 @@ public sealed partial class LabTemplateTests
 
     /// <summary>
     /// The English sentences in what the student writes in and reads in a lab: the comments and string literals of
-    /// src/Lab's sources, the comments of the checks' sources, the comments of the project and configuration files,
+    /// src/Lab's sources and of the checks' sources, the comments of the project and configuration files,
     /// and the README's prose (outside code). A sentence is English when it holds two of a few common English words
     /// ("the", "is", "of", …), none of them Polish; code identifiers, <c>&lt;c&gt;</c> and <c>&lt;see/&gt;</c>
-    /// elements, interpolation holes and backticks are left out first. The checks' string literals are not searched:
-    /// they hold each message in both languages (<c>T(pl, en)</c>); what the checks print is searched in the lab's
-    /// output instead (<see cref="EnglishLines"/>).
+    /// elements, interpolation holes and backticks are left out first. The checks' string literals are searched as
+    /// src/Lab's are: each lab holds its own language's messages only (tests/Lab.Tests/Messages.cs).
     /// </summary>
     private static IEnumerable<string> EnglishSentences(string lab)
     {
@@ -361,12 +374,11 @@ public sealed partial class LabTemplateTests
                 continue;
             }
 
-            bool check = relative.StartsWith("tests/", StringComparison.Ordinal) && name.EndsWith(".cs", StringComparison.Ordinal);
             string text = File.ReadAllText(file);
             IEnumerable<string> parts = name.EndsWith(".md", StringComparison.Ordinal)
                 ? Regex.Split(Regex.Replace(text, "(?s)```.*?```", ""), @"\n\s*\n").Select(p => Regex.Replace(p, "`[^`]*`", ""))
                 : Regex.Matches(text, @"(?s)//[^\n]*|/\*.*?\*/|<!--.*?-->|""(?:[^""\\\n]|\\.)*""").Select(m => m.Value);
-            foreach (string part in parts.Where(p => !check || !p.StartsWith('"')))
+            foreach (string part in parts)
             {
                 if (IsEnglish(Regex.Replace(part, @"(?s)<c>.*?</c>|<see [^>]*/>|\{[^{}]*\}", "")))
                 {
@@ -375,6 +387,14 @@ public sealed partial class LabTemplateTests
             }
         }
     }
+
+    /// <summary>The lines of a lab's files (its build output left out) that hold a Polish letter (ą, ć, ę, ł, ń, ó, ś, ź, ż).</summary>
+    private static IEnumerable<string> PolishLines(string lab) =>
+        Directory.GetFiles(lab, "*", SearchOption.AllDirectories).Where(f => !IsBuildOutput(lab, f)).SelectMany(f =>
+            File.ReadLines(f).Where(l => PolishLetter().IsMatch(l)).Select(l => $"{Path.GetRelativePath(lab, f).Replace('\\', '/')}: {l.Trim()}"));
+
+    [GeneratedRegex("[ąćęłńóśźżĄĆĘŁŃÓŚŹŻ]")]
+    private static partial Regex PolishLetter();
 
     /// <summary>The lines of a lab's output, other than the test platform's and the build's own, that read as English.</summary>
     private static IEnumerable<string> EnglishLines(string output) =>

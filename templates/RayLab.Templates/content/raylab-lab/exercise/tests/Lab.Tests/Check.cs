@@ -7,29 +7,24 @@ namespace MyLab.Tests;
 
 #if (en)
 /// <summary>
-/// What every check shares: the language of its messages, a time limit that names the pixel a hanging method was
-/// working on, a NotImplementedException turned into a skipped check (still to write, which is not wrong), and the
-/// figures written where dotnet test shows them (the test's output, and the failure message). Its own frames are
-/// hidden from stack traces (<see cref="StackTraceHiddenAttribute"/>): a failure's stack starts in your code or in
-/// the check.
+/// What every check shares: a time limit that names the pixel a hanging method was working on, a
+/// NotImplementedException turned into a skipped check (still to write, which is not wrong), and the figures written
+/// where dotnet test shows them (the test's output, and the failure message). Its own frames are hidden from stack
+/// traces (<see cref="StackTraceHiddenAttribute"/>): a failure's stack starts in your code or in the check. The
+/// checks' names and messages are in <see cref="Msg"/>.
 /// </summary>
 #else
 /// <summary>
-/// Co mają wspólnego wszystkie sprawdzenia: język komunikatów, limit czasu, który wskazuje piksel zapętlonej metody,
-/// NotImplementedException zamieniony na pominięte sprawdzenie (jeszcze do napisania, co nie jest błędem) i liczby
-/// wypisane tam, gdzie pokazuje je dotnet test (wyjście testu i komunikat błędu). Jego własne ramki są ukryte w stosie
-/// (<see cref="StackTraceHiddenAttribute"/>): stos błędu zaczyna się w Twoim kodzie albo w sprawdzeniu.
+/// Co mają wspólnego wszystkie sprawdzenia: limit czasu, który wskazuje piksel zapętlonej metody, NotImplementedException
+/// zamieniony na pominięte sprawdzenie (jeszcze do napisania, co nie jest błędem) i liczby wypisane tam, gdzie pokazuje
+/// je dotnet test (wyjście testu i komunikat błędu). Jego własne ramki są ukryte w stosie
+/// (<see cref="StackTraceHiddenAttribute"/>): stos błędu zaczyna się w Twoim kodzie albo w sprawdzeniu. Nazwy i
+/// komunikaty sprawdzeń są w <see cref="Msg"/>.
 /// </summary>
 #endif
 [StackTraceHidden]
 internal static class Check
 {
-#if (en)
-    public const bool English = true;
-#else
-    public const bool English = false;
-#endif
-
 #if (en)
     /// <summary>
     /// How long one check may take; a method that runs longer is taken as hanging. 45 s, below the 60 s that
@@ -71,8 +66,6 @@ internal static class Check
 #endif
     private static readonly AsyncLocal<CancellationToken> Stopping = new();
 
-    public static string T(string pl, string en) => English ? en : pl;
-
     public static string F(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
 
 #if (en)
@@ -91,7 +84,7 @@ internal static class Check
     {
         if (Stopping.Value.IsCancellationRequested)
         {
-            throw new OperationCanceledException(T("Przekroczony limit czasu sprawdzenia.", "The check's time limit passed."), Stopping.Value);
+            throw new OperationCanceledException(Msg.TimeLimitPassed, Stopping.Value);
         }
     }
 
@@ -130,13 +123,7 @@ internal static class Check
                 StopRun();
             }
 
-            throw new Xunit.Sdk.CheckFailure(T(
-                $"Przekroczony limit czasu {Limit.TotalSeconds:F0} s: metoda się nie skończyła (zapętlenie?). Ostatnio: {last}. "
-                    + (stopped ? "Twoja metoda została zatrzymana."
-                        : $"Twojej metody nie dało się zatrzymać (jej pętla nie woła niczego z kodu sprawdzeń), więc dotnet test kończy się na tym sprawdzeniu razem z nią ({RunStopped}): sprawdzenia, które się jeszcze nie zaczęły, nie są wykonane. Popraw pętlę i uruchom dotnet test ponownie."),
-                $"Time limit of {Limit.TotalSeconds:F0} s passed: the method did not finish (an endless loop?). Last: {last}. "
-                    + (stopped ? "Your method was stopped."
-                        : $"Your method could not be stopped (its loop calls nothing of the checks' code), so dotnet test ends at this check, and the loop with it ({RunStopped}): the checks not yet started are not run. Fix the loop and run dotnet test again.")), null);
+            throw new Xunit.Sdk.CheckFailure(Msg.PastLimit(Limit.TotalSeconds, last, stopped), null);
         }
 
         if (task.Exception?.InnerException is { } wrapped)
@@ -161,18 +148,16 @@ internal static class Check
                 // Jeszcze nienapisane to nie błąd: sprawdzenie jest pominięte, z jednym wierszem szkieletu (sekcja i co
                 // napisać), bez stosu. LabProgress raz wypisuje sekcje jeszcze do napisania.
 #endif
-                Assert.Skip(char.IsAsciiDigit(e.Message[0]) ? e.Message : T($"Jeszcze nie napisane: {e.Message}", $"Not written yet: {e.Message}"));
+                Assert.Skip(char.IsAsciiDigit(e.Message[0]) ? e.Message : Msg.NotWrittenYet(e.Message));
             }
 
             string at = WhereInYourCode(e);
             string position = where();
             string context = position == "—" ? at : $"{at}; {position}";
-            throw new Xunit.Sdk.CheckFailure(
-                T($"Twój kod rzucił {e.GetType().Name}: {e.Message} ({context})", $"Your code threw {e.GetType().Name}: {e.Message} ({context})"),
-                e);
+            throw new Xunit.Sdk.CheckFailure(Msg.YourCodeThrew(e.GetType().Name, e.Message, context), e);
         }
 
-        output.WriteLine(F($"{T("czas", "time")}: {clock.Elapsed.TotalMilliseconds:F1} ms"));
+        output.WriteLine(Msg.Time(clock.Elapsed.TotalMilliseconds));
         return clock.Elapsed;
     }
 
@@ -300,7 +285,7 @@ internal static class Check
             return F($"{path}:{frame.GetFileLineNumber()}, {type.Name}.{name}");
         }
 
-        return T("poza Twoim kodem", "outside your code");
+        return Msg.OutsideYourCode;
     }
 
 #if (en)
@@ -431,7 +416,7 @@ internal static class Check
         {
             Position = p.Position, Target = p.Target, Up = p.Up, NearPlane = p.NearPlane, FarPlane = p.FarPlane, Fov = p.Fov, Distance = p.S, Window = p.Window,
         },
-        _ => throw new ArgumentException($"No RayLab camera for {camera.GetType().Name}.", nameof(camera)),
+        _ => throw new ArgumentException(Msg.NoRayLabCamera(camera.GetType().Name), nameof(camera)),
     };
 
 #if (en)

@@ -13,18 +13,18 @@ public sealed class IntensityChecks(ITestOutputHelper output)
     private static readonly double[][] Inputs = [[0.5, 0.25, 0.125], [-0.5, 0.3, 2], [0, 0, 0], [1, 1, 1], [0.9, 0.2, 0.2]];
 
     [Trait("Section", "2.1")]
-    [Fact(DisplayName = English ? "2.1 Intensity: constructors with 3, 2, 1 and 0 components, negative → 0" : "2.1 Natężenie: konstruktory z 3, 2, 1 i 0 składowymi, ujemne → 0")]
+    [Fact(DisplayName = Msg.Constructors)]
     public void Constructors() => Run(output, () =>
     {
         Same("LightIntensity(-0.5, 0.3, 2)", new Intensity(-0.5, 0.3, 2), new LightIntensity(-0.5, 0.3, 2), Constructor("r, g, b", typeof(double), typeof(double), typeof(double)));
         Same("LightIntensity(0.7, -0.1)", new Intensity(0.7, -0.1), new LightIntensity(0.7, -0.1), Constructor("r, g", typeof(double), typeof(double)));
         Same("LightIntensity(0.4)", new Intensity(0.4), new LightIntensity(0.4), Constructor("r", typeof(double)));
         Same("LightIntensity()", new Intensity(), new LightIntensity(), Constructor(""));
-        output.WriteLine(T("5 konstruktorów jak w RayLab", "5 constructors as RayLab's"));
+        output.WriteLine(Msg.ConstructorsAsRayLab);
     });
 
     [Trait("Section", "2.1")]
-    [Fact(DisplayName = English ? "2.1 Intensity: +, −, × and ÷ a number, as RayLab's Intensity" : "2.1 Natężenie: +, −, × i ÷ przez skalar, jak Intensity z RayLab")]
+    [Fact(DisplayName = Msg.Operators)]
     public void Operators() => Run(output, () =>
     {
         int compared = 0;
@@ -35,7 +35,7 @@ public sealed class IntensityChecks(ITestOutputHelper output)
                 Intensity a = new(p[0], p[1], p[2]), b = new(q[0], q[1], q[2]);
                 LightIntensity la = new(p[0], p[1], p[2]), lb = new(q[0], q[1], q[2]);
                 Same($"{I(la)} + {I(lb)}", a + b, la + lb, Operator("op_Addition", "+", typeof(LightIntensity), typeof(LightIntensity)));
-                Same($"{I(la)} − {I(lb)} ({T("ujemne → 0", "negative → 0")})", a - b, la - lb, Operator("op_Subtraction", "−", typeof(LightIntensity), typeof(LightIntensity)));
+                Same($"{I(la)} − {I(lb)} ({Msg.NegativeToZero})", a - b, la - lb, Operator("op_Subtraction", "−", typeof(LightIntensity), typeof(LightIntensity)));
                 Same($"{I(la)} × 3", a * 3, la * 3, Operator("op_Multiply", "* (I × s)", typeof(LightIntensity), typeof(double)));
                 Same($"3 × {I(la)}", 3 * a, 3 * la, Operator("op_Multiply", "* (s × I)", typeof(double), typeof(LightIntensity)));
                 Same($"{I(la)} ÷ 4", a / 4, la / 4, Operator("op_Division", "/", typeof(LightIntensity), typeof(double)));
@@ -49,11 +49,11 @@ public sealed class IntensityChecks(ITestOutputHelper output)
             }
         }
 
-        output.WriteLine(F($"{compared} {T("działań jak w RayLab", "operations as RayLab's")}"));
+        output.WriteLine(Msg.OperationsAsRayLab(compared));
     });
 
     [Trait("Section", "2.1")]
-    [Fact(DisplayName = English ? "2.1 Intensity: printing shows R, G and B" : "2.1 Natężenie: wypisanie pokazuje R, G i B")]
+    [Fact(DisplayName = Msg.Printing)]
     public void Printing() => Run(output, () =>
     {
         string text = new LightIntensity(0.25, 0.5, 0.75).ToString() ?? "";
@@ -61,8 +61,7 @@ public sealed class IntensityChecks(ITestOutputHelper output)
         {
             string local = part.Replace(".", ",", StringComparison.Ordinal);
             Assert.True(text.Contains(part, StringComparison.Ordinal) || text.Contains(local, StringComparison.Ordinal),
-                T($"Instrukcja: natężenie da się wypisać (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() dało \"{text}\", bez {part} ({Source(typeof(LightIntensity), nameof(LightIntensity.ToString))}).",
-                  $"The lab: an intensity can be printed (operator <<). LightIntensity(0.25, 0.5, 0.75).ToString() gave \"{text}\", without {part} ({Source(typeof(LightIntensity), nameof(LightIntensity.ToString))})."));
+                Msg.PrintingMisses(text, part, Source(typeof(LightIntensity), nameof(LightIntensity.ToString))));
         }
 
         output.WriteLine($"ToString(): {text}");
@@ -84,9 +83,7 @@ public sealed class IntensityChecks(ITestOutputHelper output)
         if (expected.R != actual.R || expected.G != actual.G || expected.B != actual.B)
         {
             string at = source is null ? "" : $" ({source()})";
-            Assert.Fail(T(
-                $"2.1 Natężenie: {what} powinno dać {I(expected)} (każda składowa osobno; ujemna → 0), a dało {I(actual)}{at}.",
-                $"2.1 Intensity: {what} should give {I(expected)} (each component on its own; negative → 0), got {I(actual)}{at}."));
+            Assert.Fail(Msg.IntensityShouldGive(what, expected, actual, at));
         }
     }
 

@@ -1,5 +1,3 @@
-using static MyLab.Tests.Check;
-
 namespace MyLab.Tests;
 
 #if (en)
@@ -20,19 +18,17 @@ namespace MyLab.Tests;
 #endif
 public sealed class LabProgress(ITestOutputHelper output)
 {
-    [Fact(DisplayName = English ? "The lab: which parts are written" : "Laboratorium: które części są napisane")]
+    [Fact(DisplayName = Msg.PartsWrittenName)]
     public void PartsWritten()
     {
         var states = Progress.Probe();
         var left = states.Where(s => s.State == Progress.State.ToWrite).ToList();
-        string counted = T($"{states.Count - left.Count} z {states.Count} części napisane", $"{states.Count - left.Count} of {states.Count} parts written");
+        string counted = Msg.PartsWritten(states.Count - left.Count, states.Count);
         output.WriteLine(counted);
         if (left.Count > 0)
         {
             string list = string.Join("\n", left.Select(s => $"  {s.Id} {s.Title} ({s.Classes}): {s.Detail}"));
-            throw new Xunit.Sdk.ProgressReport(T(
-                $"{counted}; jeszcze do napisania:\n{list}\nNastępna: {left[0].Id} {left[0].Title}, src/Lab/{left[0].Classes.Split(',')[0]}.cs (jej testy są pominięte, dopóki rzuca NotImplementedException).",
-                $"{counted}; still to write:\n{list}\nNext: {left[0].Id} {left[0].Title}, src/Lab/{left[0].Classes.Split(',')[0]}.cs (its checks are skipped while it throws NotImplementedException)."));
+            throw new Xunit.Sdk.ProgressReport(Msg.StillToWrite(counted, list, left[0].Id, left[0].Title, left[0].Classes.Split(',')[0]));
         }
     }
 }

@@ -41,7 +41,7 @@ internal static class Pictures
     {
         ImageError error = ImageError.Measure(image, reference);
         double flip = Flip.Compute(reference, image).Mean;
-        return (error.Rmse, flip, F($"RMSE {error.Rmse:F3} {T("poziomu", "levels")}, max {error.Max}, FLIP {flip:F4}"));
+        return (error.Rmse, flip, Msg.Figures(error.Rmse, error.Max, flip));
     }
 
 #if (en)
@@ -112,7 +112,7 @@ internal sealed class OracleCamera : LabCamera
         get
         {
             long last = Interlocked.Read(ref _last);
-            return last >= 0 ? $"{T("piksel", "pixel")} ({last % _plane.Width}, {last / _plane.Width})" : T("żaden piksel", "no pixel yet");
+            return last >= 0 ? Msg.Pixel(last % _plane.Width, last / _plane.Width) : Msg.NoPixelYet;
         }
     }
 

@@ -27,7 +27,7 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
     public static TheoryData<string> CameraNames => ["orthographic", "perspective"];
 
     [Trait("Section", "5")]
-    [Theory(DisplayName = English ? "5 Task: the render loop, one ray through each pixel's centre, gives RayLab's picture" : "5 Zadanie: pętla renderowania, jeden promień przez środek piksela, daje obraz RayLab")]
+    [Theory(DisplayName = Msg.RenderLoop)]
     [MemberData(nameof(CameraNames))]
     public void RenderLoop(string cameraName)
     {
@@ -47,17 +47,13 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
         Image actual = Pictures.ToRayLab(image);
         (int count, int x, int y, RayLab.Rgb24 e, RayLab.Rgb24 a) = Pictures.Differences(expected, actual, 0);
         (_, _, string figures) = Pictures.Measure(actual, Pictures.Exact(Oracle(settings), width, height));
-        output.WriteLine(F($"{cameraName} {width}×{height}: {rays} {T("promieni", "rays")}, {time.TotalMilliseconds:F1} ms, {count} {T("pikseli innych niż w RayLab", "pixels unlike RayLab's")}; {T("względem dokładnego obrazu", "against the exact image")}: {figures}"));
-        Assert.True(rays == (long)width * height, T(
-            $"5 Zadanie: jeden punkt na piksel daje {width * height} promieni, a pętla zwróciła {rays}.",
-            $"5 Task: one point per pixel makes {width * height} rays, the loop returned {rays}."));
-        Assert.True(count == 0, T(
-            $"5 Zadanie ({cameraName}): pętla renderowania powinna dać obraz RayLab (te same promienie, kolor z Scene.Trace, średnia, SetPixel). {count} pikseli się różni; pierwszy ({x}, {y}): RayLab {e}, Twoja pętla {a}.",
-            $"5 Task ({cameraName}): the render loop should give RayLab's picture (the same rays, colour from Scene.Trace, the mean, SetPixel). {count} pixels differ; the first ({x}, {y}): RayLab {e}, your loop {a}."));
+        output.WriteLine(Msg.RenderLoopLine(cameraName, width, height, rays, time.TotalMilliseconds, count, figures));
+        Assert.True(rays == (long)width * height, Msg.RenderLoopRays(width * height, rays));
+        Assert.True(count == 0, Msg.RenderLoopPicture(cameraName, count, x, y, e, a));
     }
 
     [Trait("Section", "5")]
-    [Fact(DisplayName = English ? "5 Task: the same picture on every run (a random sampler with the same seed)" : "5 Zadanie: ten sam obraz przy każdym uruchomieniu (losowe próbki z tym samym ziarnem)")]
+    [Fact(DisplayName = Msg.SameSeedSamePicture)]
     public void SameSeedSamePicture()
     {
         const int width = 160, height = 120;
@@ -70,14 +66,12 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
             LabRenderer.Render(TwoSpheresFile.Scene, camera, new DrawingSampler(4), second, seed: 5);
         });
         (int count, int x, int y, RayLab.Rgb24 a, RayLab.Rgb24 b) = Pictures.Differences(Pictures.ToRayLab(first), Pictures.ToRayLab(second), 0);
-        output.WriteLine(F($"{width}×{height}, 4 {T("próbki losowe na piksel, dwa razy", "random samples per pixel, twice")}: {count} {T("pikseli różnych", "pixels differ")}"));
-        Assert.True(count == 0, T(
-            $"5 Zadanie: to samo ziarno powinno dać ten sam obraz przy dowolnej liczbie wątków (jeden generator Random na wiersz, z ziarna i numeru wiersza). {count} pikseli się różni; pierwszy ({x}, {y}): {a}, potem {b}.",
-            $"5 Task: the same seed should give the same picture at any thread count (one Random per row, from the seed and the row). {count} pixels differ; the first ({x}, {y}): {a}, then {b}."));
+        output.WriteLine(Msg.SameSeedLine(width, height, count));
+        Assert.True(count == 0, Msg.SameSeedPicture(count, x, y, a, b));
     }
 
     [Trait("Section", "5")]
-    [Theory(DisplayName = English ? "5 Task: two spheres with your camera and your adaptive sampling, close to the exact image (RMSE, FLIP)" : "5 Zadanie: dwie kule Twoją kamerą i Twoim próbkowaniem adaptacyjnym, blisko dokładnego obrazu (RMSE, FLIP)")]
+    [Theory(DisplayName = Msg.TwoSpheres)]
     [MemberData(nameof(CameraNames))]
     public void TwoSpheres(string cameraName)
     {
@@ -98,11 +92,9 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
         RenderStatistics stats = new Renderer().Render(TwoSpheresFile.Scene, oracle, new AdaptiveSampler(minDepth: 0, maxDepth: 3, contrast: 0.05, quincunx: true), reference);
         (double rmse, double flip, string yours) = Pictures.Measure(Pictures.ToRayLab(image), exact);
         (double oracleRmse, double oracleFlip, string theirs) = Pictures.Measure(reference, exact);
-        output.WriteLine(F($"{cameraName} {width}×{height}: {rays} {T("promieni", "rays")} ({(double)rays / (width * height):F2} {T("na piksel", "per pixel")}), {time.TotalMilliseconds:F1} ms; {T("względem dokładnego obrazu", "against the exact image")}: {yours}"));
-        output.WriteLine(F($"RayLab ({T("to samo adaptacyjne", "the same adaptive")}): {stats.PrimaryRays} {T("promieni (rogi wspólne dla sąsiednich pikseli)", "rays (corners shared by neighbouring pixels)")}: {theirs}"));
-        Assert.True(rmse <= oracleRmse + RmseMargin && flip <= oracleFlip + FlipMargin, T(
-            F($"5 Zadanie ({cameraName}): obraz dwóch kul jest za daleko od dokładnego: {yours}; próbkowanie adaptacyjne RayLab z tymi samymi ustawieniami: {theirs}; dopuszczalne RMSE ≤ {oracleRmse + RmseMargin:F3}, FLIP ≤ {oracleFlip + FlipMargin:F4}. Zobacz najpierw sprawdzenia 3.x i 4.1.4."),
-            F($"5 Task ({cameraName}): the two-sphere picture is too far from the exact one: {yours}; RayLab's adaptive at the same settings: {theirs}; allowed RMSE ≤ {oracleRmse + RmseMargin:F3}, FLIP ≤ {oracleFlip + FlipMargin:F4}. See the checks of 3.x and 4.1.4 first.")));
+        output.WriteLine(Msg.TwoSpheresLine(cameraName, width, height, rays, (double)rays / (width * height), time.TotalMilliseconds, yours));
+        output.WriteLine(Msg.TwoSpheresOracleLine(stats.PrimaryRays, theirs));
+        Assert.True(rmse <= oracleRmse + RmseMargin && flip <= oracleFlip + FlipMargin, Msg.TwoSpheresTooFar(cameraName, yours, theirs, oracleRmse + RmseMargin, oracleFlip + FlipMargin));
     }
 
 #if (en)
@@ -159,7 +151,7 @@ public sealed class TwoSpheresChecks(ITestOutputHelper output)
             get
             {
                 long last = Interlocked.Read(ref _last);
-                return last >= 0 ? $"{T("piksel", "pixel")} ({last % _width}, {last / _width})" : T("żaden piksel", "no pixel yet");
+                return last >= 0 ? Msg.Pixel(last % _width, last / _width) : Msg.NoPixelYet;
             }
         }
 

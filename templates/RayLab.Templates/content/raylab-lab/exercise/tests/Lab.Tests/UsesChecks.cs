@@ -33,7 +33,7 @@ public sealed class UsesChecks(ITestOutputHelper output)
     public static IEnumerable<TheoryDataRow<string>> Sections =>
         List.Sections.Values.Distinct(StringComparer.Ordinal).Select(id => new TheoryDataRow<string>(id)
         {
-            TestDisplayName = $"{id} {T("Twój własny kod: sekcja używa tylko tego, na co laboratorium pozwala", "Your own code: the section uses only what the lab allows")}",
+            TestDisplayName = $"{id} {Msg.OwnCode}",
             Traits = new Dictionary<string, HashSet<string>> { ["Section"] = [id] },
         });
 
@@ -41,8 +41,8 @@ public sealed class UsesChecks(ITestOutputHelper output)
     [MemberData(nameof(Sections))]
     public void OnlyWhatTheLabAllows(string section) => Run(output, () =>
     {
-        string[] lines = [.. Findings.Value.Where(f => f.Sections.Contains(section)).Select(f => f.Message(polish: !English))];
+        string[] lines = [.. Findings.Value.Where(f => f.Sections.Contains(section)).Select(Msg.Finding)];
         Assert.True(lines.Length == 0, string.Join("\n", lines));
-        output.WriteLine(T($"sekcja {section}: nic spoza listy", $"section {section}: nothing off the list"));
+        output.WriteLine(Msg.NothingOffTheList(section));
     });
 }
