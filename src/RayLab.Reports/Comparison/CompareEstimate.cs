@@ -71,8 +71,10 @@ internal sealed class CompareEstimate(IReadOnlyList<CompareCase> cases, int repe
             return render;
         }
 
+        // the repeats, and at least three for the median where they add up to less than the floor; more only
+        // where renders disagree, which an estimate cannot know
         double floor = CompareRunner.MinimumMeasured.TotalSeconds;
-        int count = Math.Max(repeats, render > 0 ? (int)Math.Min(CompareRunner.MaximumRenders, Math.Ceiling(floor / render)) : 1);
+        int count = Math.Max(repeats, render > 0 ? (int)Math.Min(3, Math.Ceiling(floor / render)) : 3);
         return render * count;
     }
 }

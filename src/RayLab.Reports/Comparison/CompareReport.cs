@@ -169,7 +169,7 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         int once = results.Count(r => r.TimedOnce);
         if (once > 0)
         {
-            md.Append(Invariant($"\n{once} of {results.Count} settings took {CompareRunner.LongRender.TotalSeconds:0.#} s or more in their first render, which is their time (no repeats: at that length timer noise is below a part in a thousand; load on the machine is not, as it is not for the medians).\n"));
+            md.Append(Invariant($"\n{once} of {results.Count} settings took {CompareRunner.LongRender.TotalSeconds:0.##} s or more in their first render, which is their time (no repeats: at that length the timer's error is a part in a million and a preemption about one per cent; load on the machine is not, as it is not for the medians).\n"));
         }
 
         int retimed = results.Count(r => r.Retimed);
@@ -177,7 +177,7 @@ public sealed class CompareReport(string heading, string command, IReadOnlyList<
         {
             double minimum = CompareRunner.MinimumMeasured.TotalMilliseconds;
             int most = results.Max(r => r.Renders);
-            md.Append(Invariant($"\nEach time is the median of its setting's renders. {retimed} of {results.Count} settings rendered in less than {minimum:F0} ms in all over the repeats were rendered again until they reached it (at most {CompareRunner.MaximumRenders} renders; up to {most} here): a time of a few milliseconds is timer noise.\n"));
+            md.Append(Invariant($"\nEach time is the median of its setting's renders. {retimed} of {results.Count} settings whose quick renders disagreed (the renders beside the median more than {CompareRunner.AgreeWithin:P0} apart) were rendered again until they agreed or added up to {minimum:F0} ms (at most {CompareRunner.MaximumRenders} renders; up to {most} here).\n"));
         }
     }
 

@@ -12,20 +12,27 @@ namespace RayLab.Reports.Comparison;
 public static class CompareRunner
 {
     /// <summary>
-    /// The least total render time a setting's time is taken from: a setting whose repeats add up to less is rendered
-    /// again until they reach it (or <see cref="MaximumRenders"/>).
+    /// The most render time a setting's repeats are extended to: a quick setting whose renders disagree
+    /// (<see cref="AgreeWithin"/>) is rendered again until they agree, they add up to this, or <see cref="MaximumRenders"/>.
     /// </summary>
     public static readonly TimeSpan MinimumMeasured = TimeSpan.FromMilliseconds(250);
 
-    /// <summary>The most renders of one setting taken to reach <see cref="MinimumMeasured"/>.</summary>
+    /// <summary>The most renders of one setting.</summary>
     public const int MaximumRenders = 64;
 
     /// <summary>
-    /// A render at least this long is its setting's time on its own: the repeats are for renders short enough for
-    /// timer and scheduler noise to matter; a second-long render is not repeated (at 1920×1080 the 256 and 1024 spp
-    /// renders, most of a comparison's time).
+    /// A render at least this long is its setting's time on its own: at a quarter of a second the timer's error is a
+    /// part in a million and a preemption of the scheduler's slice (a few milliseconds) about one per cent; the repeats
+    /// are for renders short enough for those to matter (at 1920×1080 the renders of 64 samples per pixel and more, most
+    /// of a comparison's render time, are timed once).
     /// </summary>
-    public static readonly TimeSpan LongRender = TimeSpan.FromSeconds(1);
+    public static readonly TimeSpan LongRender = TimeSpan.FromMilliseconds(250);
+
+    /// <summary>
+    /// How closely a quick setting's renders must agree for their median to be its time: the renders on either side of
+    /// the median (the middle three of three or five, …) within this share of it; renders that do not are repeated.
+    /// </summary>
+    internal const double AgreeWithin = 0.05;
 
     /// <summary>
     /// Compares <paramref name="cases"/> on the scene and writes the whole report into <paramref name="folder"/>
@@ -141,8 +148,11 @@ public static class CompareRunner
         float[] perPixel = clock.Time(EightBitError, () => ImageError.PerPixel(image, exact));
         FlipResult flip = clock.Time(FlipStage, () => Flip.Compute(exact, image, flipOptions));
         int threads = flipOptions.MaxDegreeOfParallelism;
-        (double low1, double low2) = clock.Time(LowPass, () => (ErrorLocation.LowPassRmse(image, exact, 1, threads), ErrorLocation.LowPassRmse(image, exact, 2, threads)));
-        ErrorSpectrum spectrum = clock.Time(SpectrumStage, () => ErrorLocation.Spectrum(image, exact, threads));
+        double[][] planes = clock.Time(LowPass, () => ErrorLocation.Planes(image, exact));
+        (double low1, double low2) = clock.Time(LowPass, () => (
+            ErrorLocation.LowPassRmse(planes, image.Width, image.Height, 1, threads),
+            ErrorLocation.LowPassRmse(planes, image.Width, image.Height, 2, threads)));
+        ErrorSpectrum spectrum = clock.Time(SpectrumStage, () => ErrorLocation.Spectrum(planes, image.Width, image.Height, threads));
         Image heat = clock.Time(ErrorImages, () => HeatMap.Render(perPixel, image.Width, image.Height, "levels"));
         Image flipMap = clock.Time(ErrorImages, () => FlipMap.RenderWithLegend(flip));
         clock.Time(ImageFiles, () =>
@@ -205,10 +215,11 @@ public static class CompareRunner
             }
         }
 
-        // A render of a few milliseconds is timer and scheduler noise: render again (outside the progress
-        // count) until the renders add up to a time worth measuring; the report says which were.
+        // Quick renders that disagree (a preemption, a tier of the JIT arriving) are rendered again (outside the
+        // progress count) until the median's neighbours agree with it or the renders add up to a time worth
+        // measuring; the report says which were.
         TimeSpan measured = times.Aggregate(TimeSpan.Zero, (sum, t) => sum + t);
-        while (measured < MinimumMeasured && times.Count < MaximumRenders)
+        while (times[0] < LongRender && measured < MinimumMeasured && times.Count < MaximumRenders && !Agree(times))
         {
             cancellation.ThrowIfCancellationRequested();
             TimeSpan again = clock.Time(CompareClock.Renders, () => c.Render(renderer, scene, camera, image)).RenderTime;
@@ -219,11 +230,31 @@ public static class CompareRunner
         return (stats, times);
     }
 
-    /// <summary>How the report's times were taken, for its heading: <c>time = median of 3 renders (1 for a render of 1 s or more)</c>.</summary>
+    /// <summary>
+    /// Whether a setting's renders so far pin their median: at least three, and the renders on either side of the
+    /// median within <see cref="AgreeWithin"/> of it.
+    /// </summary>
+    /// <param name="times">The setting's render times, in any order.</param>
+    internal static bool Agree(IReadOnlyList<TimeSpan> times)
+    {
+        if (times.Count < 3)
+        {
+            return false;
+        }
+
+        TimeSpan[] sorted = [.. times];
+        Array.Sort(sorted);
+        int n = sorted.Length;
+        double median = Median(sorted).TotalSeconds;
+        double below = sorted[((n - 1) / 2) - 1].TotalSeconds, above = sorted[(n / 2) + 1].TotalSeconds;
+        return above - below <= AgreeWithin * median;
+    }
+
+    /// <summary>How the report's times were taken, for its heading: <c>time = median of 3 renders (1 for a render of 0.25 s or more)</c>.</summary>
     /// <param name="repeats">The repeats asked for.</param>
     public static string TimeRule(int repeats) => repeats == 1
         ? "time = one render"
-        : string.Create(CultureInfo.InvariantCulture, $"time = median of {repeats} renders (1 for a render of {LongRender.TotalSeconds:0.#} s or more)");
+        : string.Create(CultureInfo.InvariantCulture, $"time = median of {repeats} renders (1 for a render of {LongRender.TotalSeconds:0.##} s or more)");
 
     private static TimeSpan Median(TimeSpan[] times)
     {

@@ -1,3 +1,4 @@
+using System.Buffers;
 using System.Numerics;
 
 namespace RayLab.Metrics;
@@ -106,10 +107,20 @@ public static class ErrorLocation
 
         double[][] planes = Planes(image, exact);
         int width = image.Width, height = image.Height;
-        double[] lowPass = [.. sigmas.Select(sigma =>
-            Math.Sqrt(planes.Sum(plane => SquaredAfterBlur(plane, width, height, sigma, maxDegreeOfParallelism)) / (3.0 * width * height)))];
+        double[] lowPass = [.. sigmas.Select(sigma => LowPassRmse(planes, width, height, sigma, maxDegreeOfParallelism))];
         return (lowPass, spectrum ? ErrorSpectrumTransform.Of(planes, width, height, maxDegreeOfParallelism) : null);
     }
+
+    /// <summary>The low-pass error of the three channels' error planes (<see cref="Planes"/>), for a caller that measures several σ and the spectrum from one set of planes.</summary>
+    internal static double LowPassRmse(double[][] planes, int width, int height, double sigma, int maxDegreeOfParallelism)
+    {
+        CheckSigma(sigma);
+        return Math.Sqrt(planes.Sum(plane => SquaredAfterBlur(plane, width, height, sigma, maxDegreeOfParallelism)) / (3.0 * width * height));
+    }
+
+    /// <summary>The error spectrum of the three channels' error planes (<see cref="Planes"/>).</summary>
+    internal static ErrorSpectrum Spectrum(double[][] planes, int width, int height, int maxDegreeOfParallelism) =>
+        ErrorSpectrumTransform.Of(planes, width, height, maxDegreeOfParallelism);
 
     private static void CheckSigma(double sigma)
     {
@@ -130,7 +141,7 @@ public static class ErrorLocation
     }
 
     /// <summary>The three channels' signed errors in levels, one plane each.</summary>
-    private static double[][] Planes(Image image, Image exact)
+    internal static double[][] Planes(Image image, Image exact)
     {
         ArgumentNullException.ThrowIfNull(image);
         ArgumentNullException.ThrowIfNull(exact);
@@ -168,7 +179,20 @@ public static class ErrorLocation
             weights[d + radius] = Math.Exp(-(d * d) / (2 * sigma * sigma));
         }
 
-        var rows = new double[plane.Length];
+        double[] rows = ArrayPool<double>.Shared.Rent(plane.Length);
+        try
+        {
+            return SquaredAfterBlur(plane, rows, width, height, weights, radius, threads);
+        }
+        finally
+        {
+            ArrayPool<double>.Shared.Return(rows);
+        }
+    }
+
+    /// <summary>The blur's two passes, the rows' pass into <paramref name="rows"/> (at least the plane's length).</summary>
+    private static double SquaredAfterBlur(double[] plane, double[] rows, int width, int height, double[] weights, int radius, int threads)
+    {
         var options = new ParallelOptions { MaxDegreeOfParallelism = threads };
         Parallel.For(0, height, options, y => BlurRow(plane.AsSpan(y * width, width), rows.AsSpan(y * width, width), weights, radius));
         var rowSums = new double[height];

@@ -1,3 +1,4 @@
+using System.Buffers;
 using System.Numerics;
 
 namespace RayLab.Metrics;
@@ -7,66 +8,113 @@ namespace RayLab.Metrics;
 /// error planes, averaged, then averaged over rings. Two real planes go through one complex transform, as a + ib:
 /// the ring sums need only |A(k)|² + |B(k)|², which is (|Z(k)|² + |Z(−k)|²)/2 for Z = A + iB, and every ring holds
 /// −k with k, so a ring's sum of |Z|² is its sum of |A|² + |B|². The rows are transformed in parallel, then the
-/// columns (in blocks, each column gathered once); each frequency's power is written by one task and the rings are
+/// columns, each task a vector's lanes of them at a time (<see cref="Fourier.Transform(Span{double}, Span{double})"/>:
+/// a lane's result does not depend on its neighbours); each frequency's power is written by one task and the rings are
 /// summed in one fixed order, so the spectrum is the same at any thread count.
 /// </summary>
 internal static class ErrorSpectrumTransform
 {
-    /// <summary>Columns a task gathers and transforms at a time.</summary>
-    private const int ColumnBlock = 8;
-
     /// <summary>The spectrum of <paramref name="planes"/> (each width·height, row 0 first), the planes' periodograms averaged.</summary>
     public static ErrorSpectrum Of(IReadOnlyList<double[]> planes, int width, int height, int threads)
     {
         var options = new ParallelOptions { MaxDegreeOfParallelism = threads };
-        var power = new double[width * height];
-        var data = new Complex[width * height];
-        for (int first = 0; first < planes.Count; first += 2)
+        int lanes = Vector<double>.Count, pixels = width * height;
+        double[] power = ArrayPool<double>.Shared.Rent(pixels);
+        double[] dataRe = ArrayPool<double>.Shared.Rent(pixels);
+        double[] dataIm = ArrayPool<double>.Shared.Rent(pixels);
+        try
         {
-            double[] re = planes[first];
-            double[]? im = first + 1 < planes.Count ? planes[first + 1] : null;
-            Parallel.For(0, height, options, () => new Fourier(width), (y, _, fourier) =>
+            Array.Clear(power, 0, pixels);
+            for (int first = 0; first < planes.Count; first += 2)
             {
-                Span<Complex> row = data.AsSpan(y * width, width);
-                for (int x = 0; x < width; x++)
-                {
-                    int i = (y * width) + x;
-                    row[x] = new Complex(re[i], im is null ? 0 : im[i]);
-                }
+                double[] re = planes[first];
+                double[]? im = first + 1 < planes.Count ? planes[first + 1] : null;
 
-                fourier.Transform(row);
-                return fourier;
-            }, _ => { });
-
-            int blocks = (width + ColumnBlock - 1) / ColumnBlock;
-            Parallel.For(0, blocks, options, () => (new Fourier(height), new Complex[ColumnBlock * height]), (block, _, local) =>
-            {
-                (Fourier fourier, Complex[] columns) = local;
-                int x0 = block * ColumnBlock, count = Math.Min(ColumnBlock, width - x0);
-                for (int y = 0; y < height; y++)
+                // Rows, a vector's lanes at a time: lane l holds row y0 + l.
+                Parallel.For(0, (height + lanes - 1) / lanes, options, () => new LaneBuffers(width), (block, _, buffers) =>
                 {
-                    for (int c = 0; c < count; c++)
+                    int y0 = block * lanes, count = Math.Min(lanes, height - y0);
+                    Span<double> bufferRe = buffers.Re, bufferIm = buffers.Im;
+                    if (count < lanes)
                     {
-                        columns[(c * height) + y] = data[(y * width) + x0 + c];
+                        bufferRe.Clear();
+                        bufferIm.Clear();
                     }
-                }
 
-                for (int c = 0; c < count; c++)
+                    for (int l = 0; l < count; l++)
+                    {
+                        int row = (y0 + l) * width;
+                        for (int x = 0; x < width; x++)
+                        {
+                            bufferRe[(x * lanes) + l] = re[row + x];
+                            bufferIm[(x * lanes) + l] = im is null ? 0 : im[row + x];
+                        }
+                    }
+
+                    buffers.Fourier.Transform(bufferRe, bufferIm);
+                    for (int l = 0; l < count; l++)
+                    {
+                        int row = (y0 + l) * width;
+                        for (int x = 0; x < width; x++)
+                        {
+                            dataRe[row + x] = bufferRe[(x * lanes) + l];
+                            dataIm[row + x] = bufferIm[(x * lanes) + l];
+                        }
+                    }
+
+                    return buffers;
+                }, _ => { });
+
+                // Columns, a vector's lanes at a time: lane l holds column x0 + l, a vector load per row.
+                Parallel.For(0, (width + lanes - 1) / lanes, options, () => new LaneBuffers(height), (block, _, buffers) =>
                 {
-                    Span<Complex> column = columns.AsSpan(c * height, height);
-                    fourier.Transform(column);
+                    int x0 = block * lanes, count = Math.Min(lanes, width - x0);
+                    Span<double> bufferRe = buffers.Re, bufferIm = buffers.Im;
+                    if (count < lanes)
+                    {
+                        bufferRe.Clear();
+                        bufferIm.Clear();
+                    }
+
                     for (int y = 0; y < height; y++)
                     {
-                        double m = column[y].Magnitude;
-                        power[(y * width) + x0 + c] += m * m;
+                        dataRe.AsSpan((y * width) + x0, count).CopyTo(bufferRe.Slice(y * lanes, count));
+                        dataIm.AsSpan((y * width) + x0, count).CopyTo(bufferIm.Slice(y * lanes, count));
                     }
-                }
 
-                return local;
-            }, _ => { });
+                    buffers.Fourier.Transform(bufferRe, bufferIm);
+                    for (int y = 0; y < height; y++)
+                    {
+                        Span<double> target = power.AsSpan((y * width) + x0, count);
+                        for (int l = 0; l < count; l++)
+                        {
+                            double a = bufferRe[(y * lanes) + l], b = bufferIm[(y * lanes) + l];
+                            target[l] += (a * a) + (b * b);
+                        }
+                    }
+
+                    return buffers;
+                }, _ => { });
+            }
+
+            return Rings(power, width, height, planes.Count);
         }
+        finally
+        {
+            ArrayPool<double>.Shared.Return(power);
+            ArrayPool<double>.Shared.Return(dataRe);
+            ArrayPool<double>.Shared.Return(dataIm);
+        }
+    }
 
-        return Rings(power, width, height, planes.Count);
+    /// <summary>A task's transform of one length and its lanes' buffers (length · <see cref="Vector{T}.Count"/> values each).</summary>
+    private sealed class LaneBuffers(int length)
+    {
+        public Fourier Fourier { get; } = new(length);
+
+        public double[] Re { get; } = new double[length * Vector<double>.Count];
+
+        public double[] Im { get; } = new double[length * Vector<double>.Count];
     }
 
     /// <summary>The periodogram's ring means, mean and low share from the summed |X|² of <paramref name="planeCount"/> planes.</summary>

