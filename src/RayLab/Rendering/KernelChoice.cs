@@ -18,7 +18,8 @@ internal static class KernelChoice
     /// <param name="plane">The camera's image plane.</param>
     /// <param name="frame">The packet constants, or null for the scalar kernel.</param>
     /// <param name="reason">Why the frame needs the scalar kernel, when float cannot serve it.</param>
-    public static RenderKernel Choose(RenderKernel requested, Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
+    /// <param name="withHierarchy">Whether the frame needs <see cref="PacketFrame.Hierarchy"/> (see <see cref="PacketFrame.TryCreate"/>).</param>
+    public static RenderKernel Choose(RenderKernel requested, Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason, bool withHierarchy = true)
     {
         frame = null;
         reason = null;
@@ -27,7 +28,7 @@ internal static class KernelChoice
             return RenderKernel.Scalar;
         }
 
-        if (!PacketFrame.TryCreate(scene, plane, out frame, out reason))
+        if (!PacketFrame.TryCreate(scene, plane, out frame, out reason, withHierarchy))
         {
             return RenderKernel.Scalar;
         }

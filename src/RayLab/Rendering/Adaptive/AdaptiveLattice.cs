@@ -56,7 +56,9 @@ internal sealed class AdaptiveLattice
         _palette = [.. Enumerable.Range(-1, scene.Spheres.Count + 1).Select(scene.ColourOf)];
         _levels = [.. _palette.Select(Rgb24.FromIntensity)];
         _options = options;
-        Kernel = KernelChoice.Choose(options.Kernel, scene, plane, out PacketFrame? frame, out _);
+        // The frame decides the kernel and whether depth order needs checking; the lattice traverses its own copy of
+        // the hierarchy (LatticeHits), so the frame's is not built.
+        Kernel = KernelChoice.Choose(options.Kernel, scene, plane, out PacketFrame? frame, out _, withHierarchy: false);
         _hits = Kernel == RenderKernel.Scalar ? null : LatticeHits.TryCreate(scene, plane, _size, frame);
         if (minDepth > 0)
         {

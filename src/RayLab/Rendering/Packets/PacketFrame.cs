@@ -38,7 +38,7 @@ internal sealed class PacketFrame
     /// <summary>The most (in pixels) that float rounding may move a ray's direction or origin: 1/50 pixel.</summary>
     private const double Resolution = 0.02;
 
-    private PacketFrame(ImagePlane plane, Scene scene, int[] kept)
+    private PacketFrame(ImagePlane plane, Scene scene, int[] kept, bool withHierarchy)
     {
         Plane = plane;
         Scene = scene;
@@ -73,7 +73,7 @@ internal sealed class PacketFrame
             DepthTolerance = (float)(2 * largestReach);
         }
 
-        if (hierarchy is not null)
+        if (hierarchy is not null && withHierarchy)
         {
             double largestRadius = spheres.Length == 0 ? 0 : spheres.Max(sphere => sphere.Radius);
             Hierarchy = PacketHierarchy.Create(hierarchy, plane, index => (Spheres[position[index]], depthBounds[position[index]]), largestRadius);
@@ -157,7 +157,7 @@ internal sealed class PacketFrame
     /// <summary>The spheres the kernel tests (radius 0 left out: never hit).</summary>
     public SphereConstants[] Spheres { get; }
 
-    /// <summary>The scene's hierarchy in float for this frame, when the scene uses one; the kernel then traverses it instead of testing <see cref="Spheres"/>.</summary>
+    /// <summary>The scene's hierarchy in float for this frame, when the scene uses one and the frame was made with it; the kernel then traverses it instead of testing <see cref="Spheres"/>.</summary>
     public PacketHierarchy? Hierarchy { get; }
 
     /// <summary>True when two spheres are close enough that float could order their hits wrongly.</summary>
@@ -171,7 +171,8 @@ internal sealed class PacketFrame
     /// <param name="plane">The camera's image plane for the frame.</param>
     /// <param name="frame">The frame constants.</param>
     /// <param name="reason">Why the frame needs the double path.</param>
-    public static bool TryCreate(Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason)
+    /// <param name="withHierarchy">Whether to build <see cref="Hierarchy"/>: false for a caller that traverses its own (the adaptive lattice), which spares each frame the copy.</param>
+    public static bool TryCreate(Scene scene, ImagePlane plane, out PacketFrame? frame, out string? reason, bool withHierarchy = true)
     {
         frame = null;
         double pixel = Math.Min(plane.A.Length / plane.Width, plane.B.Length / plane.Height);
@@ -213,7 +214,7 @@ internal sealed class PacketFrame
         }
 
         reason = null;
-        frame = new PacketFrame(plane, scene, [.. kept]);
+        frame = new PacketFrame(plane, scene, [.. kept], withHierarchy);
         return true;
     }
 
