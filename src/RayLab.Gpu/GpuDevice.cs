@@ -4,6 +4,7 @@ using ILGPU.Runtime;
 using ILGPU.Runtime.CPU;
 using ILGPU.Runtime.Cuda;
 using RayLab.Cameras;
+using RayLab.Geometry;
 using RayLab.Rendering;
 using RayLab.Sampling;
 
@@ -25,10 +26,11 @@ public sealed class GpuDevice : RenderDevice, IDisposable
     private readonly Context _context;
     private readonly Accelerator _accelerator;
     private readonly Lock _lock = new();
-    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>>? _kernel;
+    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>, ArrayView<HierarchyNode>, ArrayView<int>>? _kernel;
     private bool _disposed;
     private object? _tableSource;
     private MemoryBuffer1D<uint, Stride1D.Dense>? _table;
+    private DeviceSceneBuffers? _scene;
 
     private GpuDevice(Context context, Accelerator accelerator, string name)
     {
@@ -99,6 +101,9 @@ public sealed class GpuDevice : RenderDevice, IDisposable
     /// <summary>The last render's kernel alone, launch to finish, without the uploads and the copy back (the measuring test).</summary>
     internal TimeSpan LastKernelTime { get; private set; }
 
+    /// <summary>True when the scene last uploaded is traced through its hierarchy on the device (the tests).</summary>
+    internal bool TracesThroughHierarchy => _scene?.UsesHierarchy ?? false;
+
     /// <summary>Compiles and loads the kernel now, so that the first render's time does not include it.</summary>
     public void Warm()
     {
@@ -121,13 +126,14 @@ public sealed class GpuDevice : RenderDevice, IDisposable
 
             _disposed = true;
             _table?.Dispose();
+            _scene?.Dispose();
             _accelerator.Dispose();
             _context.Dispose();
         }
     }
 
-    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>> Kernel =>
-        _kernel ??= _accelerator.LoadAutoGroupedStreamKernel<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>>(PointKernel.Render);
+    private Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>, ArrayView<HierarchyNode>, ArrayView<int>> Kernel =>
+        _kernel ??= _accelerator.LoadAutoGroupedStreamKernel<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>, ArrayView<HierarchyNode>, ArrayView<int>>(PointKernel.Render);
 
     /// <summary>The kernel's sampler settings, or null when the device has no form of the sampler.</summary>
     internal static PointFrame? FrameOf(IPixelSampler sampler)
@@ -217,6 +223,24 @@ public sealed class GpuDevice : RenderDevice, IDisposable
         return _table.View;
     }
 
+    /// <summary>
+    /// The device's copy of <paramref name="scene"/>: its spheres, and its hierarchy's nodes and order when it traces
+    /// through one (<see cref="Scene.Hierarchy"/>, no deeper than <see cref="DeviceScene.MaxDepth"/>), uploaded once
+    /// and kept while renders draw the same scene. Called under the lock.
+    /// </summary>
+    private DeviceSceneBuffers SceneBuffers(Scene scene)
+    {
+        if (_scene is not null && ReferenceEquals(_scene.Source, scene))
+        {
+            return _scene;
+        }
+
+        _scene?.Dispose();
+        _scene = null;
+        _scene = new DeviceSceneBuffers(_accelerator, scene);
+        return _scene;
+    }
+
     internal override RenderStatistics? TryRender(Scene scene, ImagePlane plane, IPixelSampler sampler, PixelTarget image, RenderOptions options)
     {
         (int first, int end) = options.Rows(image.Height);
@@ -237,26 +261,19 @@ public sealed class GpuDevice : RenderDevice, IDisposable
         settings.Lanes = cpuKernel != RenderKernel.Scalar ? 1 : 0;
         settings.FirstRow = first;
         int width = image.Width, rows = end - first;
-        var spheres = new DeviceSphere[Math.Max(1, scene.Spheres.Count)];
-        for (int k = 0; k < scene.Spheres.Count; k++)
-        {
-            Sphere s = scene.Spheres[k];
-            spheres[k] = new DeviceSphere(s.Center, s.Radius, scene.ColourOf(k));
-        }
-
         var bytes = new byte[3L * width * rows];
         var clock = Stopwatch.StartNew();
         lock (_lock)
         {
             ObjectDisposedException.ThrowIf(_disposed, this);
-            using MemoryBuffer1D<DeviceSphere, Stride1D.Dense> sphereBuffer = _accelerator.Allocate1D(spheres);
+            DeviceSceneBuffers sceneBuffers = SceneBuffers(scene);
+            (settings.Hierarchy, settings.HierarchyScale) = (sceneBuffers.UsesHierarchy ? 1 : 0, sceneBuffers.Scale);
             using MemoryBuffer1D<byte, Stride1D.Dense> output = _accelerator.Allocate1D<byte>(bytes.LongLength);
-            ArrayView<DeviceSphere> sphereView = sphereBuffer.View.SubView(0, scene.Spheres.Count);
             ArrayView<uint> table = TableView(TableOf(sampler));
-            Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>> kernel = Kernel;
+            Action<Index1D, PointFrame, ArrayView<DeviceSphere>, ArrayView<uint>, ArrayView<byte>, ArrayView<HierarchyNode>, ArrayView<int>> kernel = Kernel;
             _accelerator.Synchronize();
             long launched = Stopwatch.GetTimestamp();
-            kernel(width * rows, settings, sphereView, table, output.View);
+            kernel(width * rows, settings, sceneBuffers.Spheres, table, output.View, sceneBuffers.Nodes, sceneBuffers.Order);
             _accelerator.Synchronize();
             LastKernelTime = Stopwatch.GetElapsedTime(launched);
             output.CopyToCPU(bytes);
@@ -274,5 +291,63 @@ public sealed class GpuDevice : RenderDevice, IDisposable
             Device = Name,
             ScalarReason = reason,
         };
+    }
+}
+
+/// <summary>A scene uploaded to a device: its spheres (with their colours), its hierarchy's nodes and order.</summary>
+internal sealed class DeviceSceneBuffers : IDisposable
+{
+    private readonly MemoryBuffer1D<DeviceSphere, Stride1D.Dense> _spheres;
+    private readonly MemoryBuffer1D<HierarchyNode, Stride1D.Dense> _nodes;
+    private readonly MemoryBuffer1D<int, Stride1D.Dense> _order;
+
+    /// <summary>Uploads <paramref name="scene"/> to <paramref name="accelerator"/>.</summary>
+    /// <param name="accelerator">The device.</param>
+    /// <param name="scene">The scene.</param>
+    public DeviceSceneBuffers(Accelerator accelerator, Scene scene)
+    {
+        Source = scene;
+        var spheres = new DeviceSphere[Math.Max(1, scene.Spheres.Count)];
+        for (int k = 0; k < scene.Spheres.Count; k++)
+        {
+            Sphere s = scene.Spheres[k];
+            spheres[k] = new DeviceSphere(s.Center, s.Radius, scene.ColourOf(k));
+        }
+
+        SphereHierarchy? hierarchy = scene.Hierarchy;
+        UsesHierarchy = hierarchy is not null && hierarchy.Depth <= DeviceScene.MaxDepth;
+        HierarchyNode[] nodes = UsesHierarchy ? hierarchy!.Nodes.ToArray() : new HierarchyNode[1];
+        int[] order = UsesHierarchy ? hierarchy!.Order.ToArray() : new int[1];
+        Scale = UsesHierarchy ? hierarchy!.Scale : 0;
+        _spheres = accelerator.Allocate1D(spheres);
+        _nodes = accelerator.Allocate1D(nodes);
+        _order = accelerator.Allocate1D(order);
+        Spheres = _spheres.View.SubView(0, scene.Spheres.Count);
+    }
+
+    /// <summary>The scene uploaded.</summary>
+    public Scene Source { get; }
+
+    /// <summary>True when the device traces through the hierarchy.</summary>
+    public bool UsesHierarchy { get; }
+
+    /// <summary>The hierarchy's scale.</summary>
+    public double Scale { get; }
+
+    /// <summary>The spheres, in the scene's order.</summary>
+    public ArrayView<DeviceSphere> Spheres { get; }
+
+    /// <summary>The hierarchy's nodes.</summary>
+    public ArrayView<HierarchyNode> Nodes => _nodes.View;
+
+    /// <summary>The hierarchy's sphere order.</summary>
+    public ArrayView<int> Order => _order.View;
+
+    /// <inheritdoc />
+    public void Dispose()
+    {
+        _spheres.Dispose();
+        _nodes.Dispose();
+        _order.Dispose();
     }
 }
