@@ -14,9 +14,9 @@ namespace RayLab.Gpu;
 /// <summary>
 /// A GPU that renders RayLab's point-sampled images (<see cref="RenderDevice"/>): a CUDA device through ILGPU, or,
 /// for tests and for checking the bytes where no GPU is, ILGPU's CPU accelerator, which runs the same kernel's code.
-/// It renders every built-in point sampler with both cameras into 8-bit images, with the
-/// bytes of the CPU kernel <see cref="Renderer.Kernel"/> chooses; every other render goes to the CPU renderers in the
-/// same call. Made once and kept: the kernel is compiled on the first render (for CUDA, PTX generation and load);
+/// It renders every built-in point sampler and the lab's adaptive rule (plain and guarded, with the rays-per-pixel
+/// map) with both cameras into 8-bit images, any scene (through its hierarchy where it has one), with the bytes of the
+/// CPU renderer; every other render goes to the CPU renderers in the same call. Made once and kept: the kernel is compiled on the first render (for CUDA, PTX generation and load);
 /// <see cref="Dispose"/> frees the device.
 /// </summary>
 public sealed class GpuDevice : RenderDevice, IDisposable
