@@ -5,7 +5,7 @@ namespace RayLab.Cli;
 
 /// <summary>
 /// <c>raylab compare SCENE.json --out DIR [--budgets 1,4,16,64,256,1024] [--repeats R] [--samplers …]
-/// [--max-depths …] [--contrasts …] [--seed S] [--threads T] [--width W] [--height H] [--stats FILE]</c>.
+/// [--max-depths …] [--contrasts …] [--seed S] [--threads T] [--width W] [--height H] [--device D] [--stats FILE]</c>.
 /// </summary>
 public static class CompareCommand
 {
@@ -26,10 +26,11 @@ public static class CompareCommand
         var samplers = new Option<string?>("--samplers") { Description = "The samplers to compare, comma-separated (default: all).", HelpName = string.Join(',', ComparePlan.Compared) };
         var maxDepths = new Option<string>("--max-depths") { Description = "Adaptive: the maximum depths, comma-separated.", DefaultValueFactory = _ => CompareRequest.DefaultMaxDepths };
         var contrasts = new Option<string>("--contrasts") { Description = "Adaptive: the contrasts, comma-separated (one chart line each).", DefaultValueFactory = _ => CompareRequest.DefaultContrasts };
+        var device = new Option<string?>("--device") { Description = "Where the renders run: cpu, gpu or auto (as raylab render --device). The device's kernels are compiled once, before the renders; that first launch's time is reported apart. Not in the native build. Default: cpu.", HelpName = "DEVICE" };
         var stats = new Option<string?>("--stats") { Description = "Also write where the time went (each stage's wall time) as JSON. Default: none.", HelpName = "STATS.json" };
         var compare = new Command("compare", "Render a scene with every sampler over a range of budgets, measure each against the exact image, and write a report (table, charts, images).")
         {
-            scene, output, budgets, repeats, samplers, maxDepths, contrasts, seed, threads, width, height, stats,
+            scene, output, budgets, repeats, samplers, maxDepths, contrasts, seed, threads, width, height, device, stats,
         };
         compare.SetAction(result => CompareJob.Run(
             new CompareRequest(
@@ -44,7 +45,8 @@ public static class CompareCommand
                 result.GetValue(threads),
                 result.GetValue(width),
                 result.GetValue(height),
-                StatsPath: result.GetValue(stats)),
+                StatsPath: result.GetValue(stats),
+                Device: result.GetValue(device)),
             stdout,
             stderr,
             cancellation));

@@ -40,6 +40,7 @@ public static class CompareJob
         int Work()
         {
             (PreparedScene scene, CompareCase[] cases, List<string> notes) = Plan(request);
+            RenderDevice device = DeviceChoice.Open(request.Device); // before anything is written: a missing GPU is a usage error
             created = MissingFolders(request.OutputFolder);
             string hidden = Path.Combine(request.OutputFolder, $".raylab-compare-{Guid.NewGuid():N}.tmp");
             try
@@ -54,15 +55,16 @@ public static class CompareJob
                 throw OutputFolders.CannotWrite("--out", request.OutputFolder, e, hidden);
             }
 
-            CompareMeasurement measured = Measure(request, stdout, scene, cases, staging, clock, cancellation);
-            var report = new CompareReport(Heading(request, scene, measured.Exact), Command(request), measured.Results, notes) { Clock = clock };
+            TimeSpan? firstLaunch = device.IsCpu ? null : clock.Time(FirstLaunchStage, () => DeviceChoice.FirstLaunch(device));
+            CompareMeasurement measured = Measure(request, stdout, scene, cases, staging, clock, device, cancellation);
+            var report = new CompareReport(Heading(request, scene, measured.Exact) + DeviceNote(device, firstLaunch), Command(request), measured.Results, notes) { Clock = clock };
             report.WriteTo(staging);
             cancellation.ThrowIfCancellationRequested(); // the last chance to leave the folder untouched
             clock.Time(PublishStage, () => ReportFolder.Publish(staging, request.OutputFolder));
             done = true;
             if (request.StatsPath is { } statsPath)
             {
-                WriteStats(statsPath, request, scene, measured.Results.Count, clock);
+                WriteStats(statsPath, request, scene, measured.Results.Count, clock, device, firstLaunch);
             }
 
             stdout.Write(report.Table());
@@ -95,6 +97,7 @@ public static class CompareJob
             throw new UsageException($"--threads: must be at least 1, got {r.Threads}");
         }
 
+        DeviceChoice.Check(r.Device);
         CheckOutputFolder(r.OutputFolder);
         if (r.StatsPath is not null)
         {
@@ -115,17 +118,25 @@ public static class CompareJob
     }
 
     private static CompareMeasurement Measure(
-        CompareRequest r, TextWriter stdout, PreparedScene scene, CompareCase[] cases, string staging, CompareClock clock, CancellationToken cancellation)
+        CompareRequest r, TextWriter stdout, PreparedScene scene, CompareCase[] cases, string staging, CompareClock clock, RenderDevice device, CancellationToken cancellation)
     {
         CompareMeasurement measured = null!;
         CompareProgress.Run(stdout, 1 + (cases.Length * r.Repeats), progress =>
         {
-            var renderer = new Renderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows, CancellationToken = cancellation };
+            var renderer = new Renderer { MaxDegreeOfParallelism = r.Threads ?? -1, Progress = progress.Rows, CancellationToken = cancellation, Device = device };
             measured = CompareRunner.Measure(scene.Scene, scene.Camera, scene.Description.Width, scene.Description.Height, cases, staging,
                 new CompareSettings(r.Repeats, renderer, progress) { Clock = clock }, cancellation);
         });
         return measured;
     }
+
+    /// <summary>The stage that compiles and loads a device's kernels, before the renders (none on the CPU).</summary>
+    private const string FirstLaunchStage = "device first launch";
+
+    /// <summary>The heading's words on the device: <c>; renders on cuda: NVIDIA …, its first launch (kernels compiled and loaded) 412 ms, in no render's time</c>.</summary>
+    private static string DeviceNote(RenderDevice device, TimeSpan? firstLaunch) => firstLaunch is { } first
+        ? string.Create(CultureInfo.InvariantCulture, $"; renders on {device.Name} (the exact image, and methods of your own, on the CPU), its first launch (kernels compiled and loaded) {first.TotalMilliseconds:F0} ms, in no render's time")
+        : $"; renders on {device.Name}";
 
     /// <summary>The stage that moves the finished report from its staging folder into place.</summary>
     private const string PublishStage = "report into place";
@@ -135,7 +146,7 @@ public static class CompareJob
         .Select(s => string.Create(CultureInfo.InvariantCulture, $"{s.Name} {s.Time.TotalSeconds:F1} s")));
 
     /// <summary>Writes <c>--stats</c>: where the time went, as JSON.</summary>
-    private static void WriteStats(string path, CompareRequest r, PreparedScene scene, int settings, CompareClock clock)
+    private static void WriteStats(string path, CompareRequest r, PreparedScene scene, int settings, CompareClock clock, RenderDevice device, TimeSpan? firstLaunch)
     {
         var stats = new CompareStatsFile
         {
@@ -146,6 +157,8 @@ public static class CompareJob
             ProcessorCount = Environment.ProcessorCount,
             Settings = settings,
             TimeRule = CompareRunner.TimeRule(r.Repeats),
+            Device = device.Name,
+            FirstLaunchMs = firstLaunch is { } first ? Math.Round(first.TotalMilliseconds, 1) : null,
             Stages = [.. clock.Stages.Select(s => new CompareStatsStage(s.Name, Math.Round(s.Time.TotalSeconds, 4), s.Calls))],
             TotalS = Math.Round(clock.Elapsed.TotalSeconds, 3),
         };
@@ -257,6 +270,11 @@ public static class CompareJob
         if (r.Threads is { } threads)
         {
             parts.AddRange(["--threads", threads.ToString(CultureInfo.InvariantCulture)]);
+        }
+
+        if (r.Device is { } device)
+        {
+            parts.AddRange(["--device", device]);
         }
 
         return string.Join(' ', parts);

@@ -15,6 +15,7 @@ namespace RayLab.Cli;
 /// <param name="Width">Width override.</param>
 /// <param name="Height">Height override.</param>
 /// <param name="StatsPath">Where to write where the time went, as JSON (<see cref="CompareStatsFile"/>); null for nowhere.</param>
+/// <param name="Device">Where the renders run, <c>cpu</c>, <c>gpu</c> or <c>auto</c> (as <c>raylab render --device</c>); null for the CPU.</param>
 /// <param name="Methods">
 /// Methods of your own, rendered and measured beside the built-in ones (<see cref="CompareCase.Sampled"/> for a point
 /// sampler, <see cref="CompareCase.Custom"/> for a pixel method); the console passes none.
@@ -23,7 +24,7 @@ public sealed record CompareRequest(
     string ScenePath, string OutputFolder, string Budgets = CompareRequest.DefaultBudgets, int Repeats = 3,
     string? Samplers = null, string MaxDepths = CompareRequest.DefaultMaxDepths, string Contrasts = CompareRequest.DefaultContrasts,
     uint? Seed = null, int? Threads = null, int? Width = null, int? Height = null, IReadOnlyList<CompareCase>? Methods = null,
-    string? StatsPath = null)
+    string? StatsPath = null, string? Device = null)
 {
     /// <summary>The default budgets: powers of 4 from 1 to 1024 (all perfect squares).</summary>
     public const string DefaultBudgets = "1,4,16,64,256,1024";

@@ -30,6 +30,12 @@ public sealed record CompareStatsFile
     /// <summary>How each setting's time was taken.</summary>
     public required string TimeRule { get; init; }
 
+    /// <summary>The device the renders ran on (<see cref="RenderDevice.Name"/>): <c>cpu</c>, <c>cuda: …</c>, <c>ilgpu-cpu</c>.</summary>
+    public string Device { get; init; } = "cpu";
+
+    /// <summary>The device's first launch (its kernels' compile and load), in ms, which no render's time includes; null on the CPU.</summary>
+    public double? FirstLaunchMs { get; init; }
+
     /// <summary>The run's wall time in seconds, from the command's start to the report in place.</summary>
     public double TotalS { get; init; }
 

@@ -12,8 +12,48 @@ namespace RayLab.Cli;
 /// </summary>
 internal static class DeviceChoice
 {
-    /// <summary>The device names the console accepts.</summary>
+    /// <summary>The device names the console lists.</summary>
     public static IReadOnlyList<string> Names { get; } = ["cpu", "gpu", "auto"];
+
+    /// <summary>
+    /// A name the console accepts without listing it: ILGPU's CPU accelerator, the device kernels' own code on the CPU
+    /// (slow; for checking the device path's bytes and reports where no GPU is).
+    /// </summary>
+    public const string CpuAccelerator = "ilgpu-cpu";
+
+#if RAYLAB_GPU
+    private static readonly Lazy<GpuDevice> Accelerator = new(GpuDevice.CpuAccelerator);
+#endif
+
+    /// <summary>Checks <c>--device</c>'s value: one of <see cref="Names"/>, <see cref="CpuAccelerator"/> or null.</summary>
+    /// <param name="name">The option's value.</param>
+    /// <exception cref="UsageException">Any other value.</exception>
+    public static void Check(string? name)
+    {
+        if (name != CpuAccelerator)
+        {
+            RenderJob.CheckChoice(name, "--device", "device", Names);
+        }
+    }
+
+    /// <summary>
+    /// Compiles and loads <paramref name="device"/>'s kernels now (its first launch's cost) and returns how long that
+    /// took; null for the CPU, whose renders need no such step.
+    /// </summary>
+    /// <param name="device">The device.</param>
+    /// <returns>The first launch's time, or null.</returns>
+    public static TimeSpan? FirstLaunch(RenderDevice device)
+    {
+#if RAYLAB_GPU
+        if (device is GpuDevice gpu)
+        {
+            long start = System.Diagnostics.Stopwatch.GetTimestamp();
+            gpu.Warm();
+            return System.Diagnostics.Stopwatch.GetElapsedTime(start);
+        }
+#endif
+        return null;
+    }
 
     /// <summary>What the native build says for <c>--device gpu</c>.</summary>
     public const string NativeHasNoGpu =
@@ -33,6 +73,8 @@ internal static class DeviceChoice
             case null or "cpu":
                 return RenderDevice.Cpu;
 #if RAYLAB_GPU
+            case CpuAccelerator:
+                return Accelerator.Value;
             case "gpu":
                 try
                 {
@@ -46,7 +88,7 @@ internal static class DeviceChoice
             default:
                 return RenderDevice.Best();
 #else
-            case "gpu":
+            case "gpu" or CpuAccelerator:
                 throw new UsageException(NativeHasNoGpu);
             default:
                 return RenderDevice.Cpu;

@@ -114,7 +114,7 @@ public static class RenderJob
         CheckChoice(request.Camera, "--camera", "camera", CameraSettings.Types);
         CheckChoice(request.Sampler, "--sampler", "sampler", SamplerSettings.Types);
         CheckChoice(request.Kernel, "--kernel", "kernel", Kernels);
-        CheckChoice(request.Device, "--device", "device", DeviceChoice.Names);
+        DeviceChoice.Check(request.Device);
 
         if (request.Threads is < 1)
         {
@@ -231,7 +231,7 @@ public static class RenderJob
     /// <summary>The least memory worth a thread of its own when committing the image: 1 MiB.</summary>
     private const long CommitSliceBytes = 1 << 20;
 
-    private static void CheckChoice(string? value, string option, string what, IReadOnlyList<string> allowed)
+    internal static void CheckChoice(string? value, string option, string what, IReadOnlyList<string> allowed)
     {
         if (value is not null && !allowed.Contains(value, StringComparer.Ordinal))
         {

@@ -111,6 +111,12 @@ internal struct PointFrame
 
     /// <summary>The scene's background.</summary>
     public Intensity Background;
+
+    /// <summary>1: the scene's spheres are traced through its hierarchy (<see cref="DeviceScene"/>); 0: every sphere in order.</summary>
+    public int Hierarchy;
+
+    /// <summary>The hierarchy's <see cref="SphereHierarchy.Scale"/>.</summary>
+    public double HierarchyScale;
 }
 
 /// <summary>
@@ -128,15 +134,18 @@ internal static class PointKernel
     /// <param name="spheres">The scene's spheres, in the scene's order.</param>
     /// <param name="table">The sampler's table (pmj02's sets one after another, zsobol's permutations), or one unused entry.</param>
     /// <param name="rgb">The band's bytes, R G B per pixel, row by row.</param>
-    public static void Render(Index1D index, PointFrame frame, ArrayView<DeviceSphere> spheres, ArrayView<uint> table, ArrayView<byte> rgb)
+    /// <param name="nodes">The scene's hierarchy's nodes (<see cref="SphereHierarchy.Nodes"/>), or one unused entry.</param>
+    /// <param name="order">The hierarchy's sphere order (<see cref="SphereHierarchy.Order"/>), or one unused entry.</param>
+    public static void Render(Index1D index, PointFrame frame, ArrayView<DeviceSphere> spheres, ArrayView<uint> table, ArrayView<byte> rgb, ArrayView<HierarchyNode> nodes, ArrayView<int> order)
     {
+        var scene = new DeviceScene(spheres, nodes, order, frame.HierarchyScale, frame.Hierarchy, frame.Background, frame.Hierarchy != 0 ? LocalMemory.Allocate1D<int>(DeviceScene.MaxDepth + 1) : default);
         int width = frame.Basis.Width;
         int x = index % width;
         int row = frame.FirstRow + (index / width);
         long at = 3L * index;
         if (frame.Lanes != 0)
         {
-            LaneMean(frame, spheres, table, x, row, out float r, out float g, out float b);
+            LaneMean(frame, scene, table, x, row, out float r, out float g, out float b);
             float scale = 256f / frame.Samples;
             rgb[at] = EightBit.LaneLevel(r, scale);
             rgb[at + 1] = EightBit.LaneLevel(g, scale);
@@ -144,7 +153,7 @@ internal static class PointKernel
         }
         else
         {
-            Intensity mean = ScalarMean(frame, spheres, table, x, row);
+            Intensity mean = ScalarMean(frame, scene, table, x, row);
             rgb[at] = Intensity.ToLevel(mean.R);
             rgb[at + 1] = Intensity.ToLevel(mean.G);
             rgb[at + 2] = Intensity.ToLevel(mean.B);
@@ -152,7 +161,7 @@ internal static class PointKernel
     }
 
     /// <summary>The packet kernels' sum of a pixel's samples: points in float, each colour in float, summed in order.</summary>
-    private static void LaneMean(in PointFrame frame, ArrayView<DeviceSphere> spheres, ArrayView<uint> table, int x, int row, out float r, out float g, out float b)
+    private static void LaneMean(in PointFrame frame, in DeviceScene scene, ArrayView<uint> table, int x, int row, out float r, out float g, out float b)
     {
         uint key = PointHash.PixelKeys<ScalarLane, ScalarMath>(x, row, frame.Salt).Bits;
         var pattern = new PixelPattern(frame, key);
@@ -171,7 +180,7 @@ internal static class PointKernel
                 (sx, sy) = (px.Value, py.Value);
             }
 
-            Intensity colour = Trace(frame, spheres, frame.Basis.GetPixelRay(x, row, sx, sy));
+            Intensity colour = scene.Trace(frame.Basis.GetPixelRay(x, row, sx, sy), frame.Basis.TMin, frame.Basis.TMax);
             r += (float)colour.R;
             g += (float)colour.G;
             b += (float)colour.B;
@@ -179,7 +188,7 @@ internal static class PointKernel
     }
 
     /// <summary>The scalar loop's mean of a pixel's samples, in double.</summary>
-    private static Intensity ScalarMean(in PointFrame frame, ArrayView<DeviceSphere> spheres, ArrayView<uint> table, int x, int row)
+    private static Intensity ScalarMean(in PointFrame frame, in DeviceScene scene, ArrayView<uint> table, int x, int row)
     {
         uint key = PointHash.PixelKeys<ScalarLane, ScalarMath>(x, row, frame.Salt).Bits;
         var pattern = new PixelPattern(frame, key);
@@ -199,7 +208,7 @@ internal static class PointKernel
                 (sx, sy) = (px.Value, py.Value);
             }
 
-            Intensity value = Trace(frame, spheres, frame.Basis.GetPixelRay(x, row, sx, sy));
+            Intensity value = scene.Trace(frame.Basis.GetPixelRay(x, row, sx, sy), frame.Basis.TMin, frame.Basis.TMax);
             r += value.R;
             g += value.G;
             b += value.B;
@@ -252,24 +261,6 @@ internal static class PointKernel
                 Pmj02Sampler.Shift<TV, TM>(TM.BroadcastBits(table[at]), TM.BroadcastBits(table[at + 1]), TM.BroadcastBits(pattern.ShiftX), TM.BroadcastBits(pattern.ShiftY), out sx, out sy);
                 break;
         }
-    }
-
-    /// <summary>The colour of the nearest sphere the ray meets in the visible range, or the background (the scene's loop over every sphere in order).</summary>
-    private static Intensity Trace(in PointFrame frame, ArrayView<DeviceSphere> spheres, Ray ray)
-    {
-        int nearest = -1;
-        double best = frame.Basis.TMax;
-        for (int k = 0; k < (int)spheres.Length; k++)
-        {
-            DeviceSphere sphere = spheres[k];
-            if (SphereHit.TryIntersect(sphere.Center, sphere.Radius, ray, frame.Basis.TMin, best, out double t))
-            {
-                best = t;
-                nearest = k;
-            }
-        }
-
-        return nearest < 0 ? frame.Background : spheres[nearest].Colour;
     }
 }
 
@@ -327,4 +318,86 @@ internal readonly struct DevicePermutations(ArrayView<uint> table) : IPackedPerm
 
     /// <inheritdoc />
     public uint Packed(int number) => _table[number];
+}
+
+/// <summary>
+/// A scene on the device: its spheres, and its hierarchy's nodes and order when it has one, traced by the CPU's own
+/// <see cref="SphereHierarchy.Traversal"/> (or its loop over every sphere) with <see cref="SphereHit.TryIntersect"/>.
+/// </summary>
+/// <param name="spheres">The spheres, in the scene's order.</param>
+/// <param name="nodes">The hierarchy's nodes.</param>
+/// <param name="order">The hierarchy's sphere order.</param>
+/// <param name="scale">The hierarchy's scale.</param>
+/// <param name="hierarchy">1: through the hierarchy; 0: every sphere in order.</param>
+/// <param name="background">The background's colour.</param>
+/// <param name="stack">The traversal's stack, <see cref="MaxDepth"/> + 1 entries in the thread's local memory (none without the hierarchy).</param>
+internal readonly struct DeviceScene(ArrayView<DeviceSphere> spheres, ArrayView<HierarchyNode> nodes, ArrayView<int> order, double scale, int hierarchy, Intensity background, ArrayView<int> stack) : IHierarchyView
+{
+    /// <summary>The most levels of a hierarchy the device traverses (its stack's entries, less one); a deeper one is traced sphere by sphere.</summary>
+    public const int MaxDepth = 63;
+
+    private readonly ArrayView<DeviceSphere> _spheres = spheres;
+    private readonly ArrayView<HierarchyNode> _nodes = nodes;
+    private readonly ArrayView<int> _order = order;
+    private readonly int _hierarchy = hierarchy;
+    private readonly Intensity _background = background;
+    private readonly ArrayView<int> _stack = stack;
+
+    /// <inheritdoc />
+    public double Scale { get; } = scale;
+
+    /// <inheritdoc />
+    public int SphereCount => (int)_spheres.Length;
+
+    /// <inheritdoc />
+    public HierarchyNode Node(int index) => _nodes[index];
+
+    /// <inheritdoc />
+    public int Order(int position) => _order[position];
+
+    /// <inheritdoc />
+    public bool TryIntersect(int sphere, in Ray ray, double tMin, double tMax, out double t)
+    {
+        DeviceSphere s = _spheres[sphere];
+        return SphereHit.TryIntersect(s.Center, s.Radius, ray, tMin, tMax, out t);
+    }
+
+    /// <summary>The index of the nearest sphere the ray meets in [<paramref name="tMin"/>, <paramref name="tMax"/>], or −1 (the scene's <c>Nearest</c>).</summary>
+    /// <param name="ray">The ray.</param>
+    /// <param name="tMin">The smallest visible t.</param>
+    /// <param name="tMax">The largest visible t.</param>
+    public int Nearest(in Ray ray, double tMin, double tMax)
+    {
+        if (_hierarchy == 0)
+        {
+            return SphereHierarchy.Traversal.NearestOfAll(this, ray, tMin, tMax);
+        }
+
+        var stack = new DeviceStack(_stack);
+        return SphereHierarchy.Traversal.Nearest(this, ref stack, ray, tMin, tMax);
+    }
+
+    /// <summary>The colour of the nearest sphere the ray meets in the visible range, or the background.</summary>
+    /// <param name="ray">The ray.</param>
+    /// <param name="tMin">The smallest visible t.</param>
+    /// <param name="tMax">The largest visible t.</param>
+    public Intensity Trace(in Ray ray, double tMin, double tMax)
+    {
+        int nearest = Nearest(ray, tMin, tMax);
+        return nearest < 0 ? _background : _spheres[nearest].Colour;
+    }
+}
+
+/// <summary>The hierarchy's traversal stack in the thread's local memory.</summary>
+/// <param name="entries">The entries.</param>
+internal readonly struct DeviceStack(ArrayView<int> entries) : ITraversalStack
+{
+    private readonly ArrayView<int> _entries = entries;
+
+    /// <inheritdoc />
+    public int this[int index]
+    {
+        get => _entries[index];
+        set => _entries[index] = value;
+    }
 }

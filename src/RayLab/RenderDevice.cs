@@ -35,6 +35,12 @@ public abstract class RenderDevice
     /// </summary>
     internal abstract RenderStatistics? TryRender(Scene scene, ImagePlane plane, IPixelSampler sampler, PixelTarget image, RenderOptions options);
 
+    /// <summary>
+    /// Renders <paramref name="sampler"/>'s adaptive image on this device, or returns null for the CPU renderer to
+    /// render it; <paramref name="raysPerPixel"/>, if given, receives each rendered pixel's rays.
+    /// </summary>
+    internal virtual RenderStatistics? TryRenderAdaptive(Scene scene, ImagePlane plane, AdaptiveSampler sampler, PixelTarget image, RenderOptions options, float[]? raysPerPixel) => null;
+
     private sealed class CpuDevice : RenderDevice
     {
         public override string Name => "cpu";

@@ -131,7 +131,8 @@ public abstract class RenderMethod
         public override string ToString() => sampler.ToString();
 
         internal override RenderStatistics Render(Scene scene, ImagePlane plane, PixelTarget image, RenderOptions options, float[]? raysPerPixel) =>
-            AdaptiveRenderer.Render(scene, plane, sampler, image, options, raysPerPixel);
+            options.Device?.TryRenderAdaptive(scene, plane, sampler, image, options, raysPerPixel)
+            ?? AdaptiveRenderer.Render(scene, plane, sampler, image, options, raysPerPixel);
 
         internal override PixelTrace TracePixel(Scene scene, ImagePlane plane, int x, int y)
         {

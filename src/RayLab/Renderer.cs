@@ -36,9 +36,9 @@ public sealed class Renderer
     public RenderKernel Kernel { get; init; } = RenderKernel.Auto;
 
     /// <summary>
-    /// Where point-sampled renders run: <see cref="RenderDevice.Cpu"/> (the default), or a device from another package
+    /// Where point-sampled and adaptive renders run: <see cref="RenderDevice.Cpu"/> (the default), or a device from another package
     /// (<c>RayLab.Gpu</c>). A device gives the bytes of the CPU kernel <see cref="Kernel"/> chooses; what it cannot
-    /// render (a sampler of your own, adaptive, exact, a pixel method) the CPU renders in the same call, and
+    /// render (a sampler of your own, exact, a pixel method) the CPU renders in the same call, and
     /// <see cref="RenderStatistics.Device"/> says which ran.
     /// </summary>
     /// <exception cref="ArgumentNullException">The value is null.</exception>

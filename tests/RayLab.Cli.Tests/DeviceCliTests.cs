@@ -44,4 +44,54 @@ public sealed class DeviceCliTests : IDisposable
         Assert.Equal(1, r.Code);
         Assert.Equal("raylab: error: --device: unknown device 'quantum'; expected one of: cpu, gpu, auto", r.Err.TrimEnd());
     }
+
+    [Fact]
+    public void CompareOnTheDeviceGivesTheCpusPicturesAndSaysWhichDeviceRanAndItsFirstLaunch()
+    {
+        // The device kernels' own code on ILGPU's CPU accelerator, at a tiny size: every picture's bytes are the CPU
+        // run's, the report's heading and --stats name the device, and the first launch is a stage of its own.
+        string[] common = ["--samplers", "jittered,sobol,adaptive", "--budgets", "1,4", "--max-depths", "1,2", "--contrasts", "0.1", "--repeats", "1", "--width", "24", "--height", "16"];
+        string cpuReport = Path.Combine(_dir, "cpu"), deviceReport = Path.Combine(_dir, "device"), stats = Path.Combine(_dir, "compare.json");
+        var cpu = ConsoleRunner.Run(["compare", Scene, "--out", cpuReport, .. common]);
+        var device = ConsoleRunner.Run(["compare", Scene, "--out", deviceReport, .. common, "--device", "ilgpu-cpu", "--stats", stats]);
+
+        Assert.True(cpu.Code == 0, cpu.Err);
+        Assert.True(device.Code == 0, device.Err);
+        string[] pictures = [.. Directory.GetFiles(Path.Combine(cpuReport, "images")).Select(Path.GetFileName).Order(StringComparer.Ordinal)!];
+        Assert.Equal(9, pictures.Length); // exact, 2 samplers × 2 budgets, adaptive and guarded adaptive at 2 depths each
+        foreach (string picture in pictures)
+        {
+            Assert.True(File.ReadAllBytes(Path.Combine(cpuReport, "images", picture)).AsSpan().SequenceEqual(File.ReadAllBytes(Path.Combine(deviceReport, "images", picture))), picture);
+        }
+
+        Assert.Contains("renders on ilgpu-cpu", File.ReadAllText(Path.Combine(deviceReport, "index.html")), StringComparison.Ordinal);
+        Assert.Contains("renders on cpu", File.ReadAllText(Path.Combine(cpuReport, "index.html")), StringComparison.Ordinal);
+        Assert.Contains("--device ilgpu-cpu", File.ReadAllText(Path.Combine(deviceReport, "index.html")), StringComparison.Ordinal);
+        JsonElement root = JsonDocument.Parse(File.ReadAllText(stats)).RootElement;
+        Assert.Equal("ilgpu-cpu", root.GetProperty("device").GetString());
+        Assert.True(root.GetProperty("firstLaunchMs").GetDouble() > 0);
+        Assert.Contains(root.GetProperty("stages").EnumerateArray(), stage => stage.GetProperty("name").GetString() == "device first launch");
+    }
+
+    [Fact]
+    public void CompareWithAnUnknownDeviceIsAOneLineErrorAndNoReport()
+    {
+        string report = Path.Combine(_dir, "report");
+        var r = ConsoleRunner.Run("compare", Scene, "--out", report, "--device", "quantum");
+        Assert.Equal(1, r.Code);
+        Assert.Equal("raylab: error: --device: unknown device 'quantum'; expected one of: cpu, gpu, auto", r.Err.TrimEnd());
+        Assert.False(Directory.Exists(report));
+    }
+
+    [Fact]
+    public void CompareWithoutAGpuOnTheGpuDeviceIsAOneLineErrorAndNoReport()
+    {
+        Assert.SkipWhen(GpuDevice.IsCudaAvailable(), "a CUDA GPU is present");
+        string report = Path.Combine(_dir, "report");
+        var r = ConsoleRunner.Run("compare", Scene, "--out", report, "--samplers", "jittered", "--budgets", "1", "--device", "gpu", "--width", "8", "--height", "6");
+        Assert.Equal(1, r.Code);
+        Assert.StartsWith("raylab: error: --device gpu: No CUDA GPU: ", r.Err, StringComparison.Ordinal);
+        Assert.Single(r.Err.TrimEnd().Split('\n'));
+        Assert.False(Directory.Exists(report));
+    }
 }

@@ -50,6 +50,54 @@ public class GpuFigures(ITestOutputHelper output)
         }
     }
 
+    [Fact]
+    [Trait("Category", "Figures")]
+    public void FieldAndAdaptiveTimes()
+    {
+        // The sphere field through its hierarchy (jittered 16 spp) and adaptive at max depth 3, plain and guarded, on the
+        // bench scene and the field, 1080p: the kernel alone and the whole device call, medians of 5 after a warm-up,
+        // the CPU's time once, and the bytes and rays per pixel that differ from the CPU renderer's.
+        Assert.SkipUnless(GpuDevice.IsCudaAvailable(), "no CUDA GPU here");
+        PreparedScene bench = SceneFile.Load(Environment.GetEnvironmentVariable("RAYLAB_BENCH_SCENE") ?? Path.Combine(AppContext.BaseDirectory, "scenes", "bench-1080.json")).Prepare();
+        PreparedScene field = SceneFile.Load(Path.Combine(AppContext.BaseDirectory, "scenes", "sphere-field.json")).Prepare();
+        using GpuDevice gpu = GpuDevice.Cuda();
+        gpu.Warm();
+        var work = new (string Name, PreparedScene Scene, RenderMethod Method)[]
+        {
+            ("field jittered 16 spp", field, RenderMethod.Sampled(new JitteredSampler(16, 1))),
+            ("bench adaptive d3", bench, RenderMethod.Adaptive(new AdaptiveSampler(0, 3, 0.1))),
+            ("bench adaptive d3 guard", bench, RenderMethod.Adaptive(new AdaptiveSampler(0, 3, 0.1, guard: true))),
+            ("field adaptive d3", field, RenderMethod.Adaptive(new AdaptiveSampler(0, 3, 0.1))),
+            ("field adaptive d3 guard", field, RenderMethod.Adaptive(new AdaptiveSampler(0, 3, 0.1, guard: true))),
+        };
+        foreach ((string name, PreparedScene prepared, RenderMethod method) in work)
+        {
+            var image = new Image(1920, 1080);
+            float[] rays = new float[1920 * 1080];
+            var renderer = new Renderer { Device = gpu };
+            var kernel = new List<double>();
+            var whole = new List<double>();
+            for (int run = 0; run < 6; run++)
+            {
+                RenderStatistics stats = renderer.Render(prepared.Description.Scene, prepared.Camera, method, image, rays);
+                Assert.Equal(gpu.Name, stats.Device);
+                if (run >= 1)
+                {
+                    kernel.Add(gpu.LastKernelTime.TotalMilliseconds);
+                    whole.Add(stats.RenderTime.TotalMilliseconds);
+                }
+            }
+
+            var cpu = new Image(1920, 1080);
+            float[] cpuRays = new float[1920 * 1080];
+            RenderStatistics cpuStats = new Renderer().Render(prepared.Description.Scene, prepared.Camera, method, cpu, cpuRays);
+            int differing = image.PixelBytes.ToArray().Zip(cpu.PixelBytes.ToArray()).Count(p => p.First != p.Second);
+            int raysDiffering = rays.Zip(cpuRays).Count(p => p.First != p.Second);
+            output.WriteLine($"{name} 1920x1080: kernel {Median(kernel):F3} ms, whole device call {Median(whole):F3} ms (median of 5), host pixels {gpu.LastHostPixels}; "
+                + $"CPU {cpuStats.RenderTime.TotalMilliseconds:F1} ms ({Environment.ProcessorCount} threads); bytes differing from the CPU's: {differing}, rays per pixel differing: {raysDiffering}");
+        }
+    }
+
     private static double Median(List<double> values)
     {
         values.Sort();

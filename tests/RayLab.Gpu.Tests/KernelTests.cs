@@ -27,6 +27,15 @@ public class KernelTests
         Assert.Contains(".extern .func", Ptx(typeof(KernelTests).GetMethod(nameof(FusedKernel), System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Static)!), StringComparison.Ordinal);
     }
 
+    [Fact]
+    public void TheAdaptiveKernelCompilesToPtxWithNoCallOutsideIt()
+    {
+        // The adaptive rule (its explicit stacks in local memory, the guard's asin and square roots) has a PTX form too.
+        string ptx = Ptx(typeof(AdaptiveKernel).GetMethod(nameof(AdaptiveKernel.Render)));
+        Assert.Contains(".entry", ptx, StringComparison.Ordinal);
+        Assert.DoesNotContain(".extern .func", ptx, StringComparison.Ordinal);
+    }
+
     private static void FusedKernel(Index1D index, ArrayView<float> values) => values[index] = MathF.FusedMultiplyAdd(values[index], 2f, 1f);
 
     internal static string Ptx(System.Reflection.MethodInfo? kernel = null)

@@ -130,23 +130,43 @@ public class SameBytesTests(CpuAcceleratorFixture fixture) : IClassFixture<CpuAc
         AssertSameBytes(cpu, device);
     }
 
-    [Fact]
-    public void TheSphereFieldGivesTheCpuRenderersBytes()
+    public static TheoryData<string, string, int, uint, RenderKernel> FieldCases()
     {
-        // 960 spheres, at 40×24 to keep it to seconds: the CPU traces them through its hierarchy, the device tests every sphere in order; the nearest
-        // hit, and so the bytes, are the same.
-        Scenes.PreparedScene prepared = Scenes.SceneFile.Load(Path.Combine(AppContext.BaseDirectory, "scenes", "sphere-field.json")).Prepare();
-        Scene scene = prepared.Description.Scene;
+        var data = new TheoryData<string, string, int, uint, RenderKernel>();
+        foreach (string camera in TestScenes.FieldCameras.Keys)
+        {
+            foreach ((string sampler, int n, uint seed) in new[] { ("jittered", 4, 1u), ("cmj", 6, 7u), ("sobol", 16, 1234567u), ("pmj02bn", 5, 7u) })
+            {
+                data.Add(camera, sampler, n, seed, RenderKernel.Auto);
+                data.Add(camera, sampler, n, seed, RenderKernel.Scalar);
+            }
+        }
+
+        return data;
+    }
+
+    [Theory]
+    [MemberData(nameof(FieldCases))]
+    public void TheSphereFieldThroughItsHierarchyGivesTheCpuRenderersBytes(string camera, string sampler, int samples, uint seed, RenderKernel kernel)
+    {
+        // 960 spheres at 64×48: the CPU and the device both trace them through the scene's hierarchy (the device its
+        // nodes and order uploaded once, with a fixed-size stack); the nearest hit, and so the bytes, are the same.
+        Scene scene = TestScenes.SphereField.Value;
         Assert.True(scene.Spheres.Count > 900);
-        RenderMethod method = RenderMethod.Sampled(new JitteredSampler(4, 1));
-        var cpu = new Image(40, 24);
-        var device = new Image(40, 24);
-        new Renderer().Render(scene, prepared.Camera, method, cpu);
-        RenderStatistics stats = new Renderer { Device = fixture.Device }.Render(scene, prepared.Camera, method, device);
+        RenderMethod method = RenderMethod.Sampled(Samplers.Create(sampler, samples, seed));
+        var cpu = new Image(Width, Height);
+        var device = new Image(Width, Height);
+        new Renderer { Kernel = kernel }.Render(scene, TestScenes.FieldCameras[camera], method, cpu);
+        RenderStatistics stats = new Renderer { Kernel = kernel, Device = fixture.Device }.Render(scene, TestScenes.FieldCameras[camera], method, device);
 
         Assert.Equal("ilgpu-cpu", stats.Device);
+        Assert.True(fixture.Device.TracesThroughHierarchy);
+        Assert.True(Colours(cpu) >= 8, "the view holds the field");
         AssertSameBytes(cpu, device);
     }
+
+    /// <summary>How many different pixel colours <paramref name="image"/> holds.</summary>
+    internal static int Colours(Image image) => image.PixelBytes.ToArray().Chunk(3).Select(rgb => (rgb[0] << 16) | (rgb[1] << 8) | rgb[2]).Distinct().Count();
 
     internal static void AssertSameBytes(Image expected, Image actual)
     {

@@ -19,4 +19,15 @@ internal static class TestScenes
         ["offaxis"] = new PerspectiveCamera { Position = new Double3(0, 0, 6), Target = new Double3(0, 0.1, 0), Up = new Double3(0.1, 1, 0), Distance = 2, Window = new Window(-1.5, -0.4, 0.9, 1.1), NearPlane = 0.1, FarPlane = 100 },
         ["ortho-offaxis"] = new OrthoCamera { Position = new Double3(0, 0, 6), Target = Double3.Zero, Window = new Window(-2.5, -1.2, 1.5, 2.1), NearPlane = 0.1, FarPlane = 100 },
     };
+
+    /// <summary>samples/scenes/sphere-field.json: 960 spheres, traced through the scene's hierarchy.</summary>
+    public static readonly Lazy<Scene> SphereField = new(() =>
+        Scenes.SceneFile.Load(Path.Combine(AppContext.BaseDirectory, "scenes", "sphere-field.json")).Prepare().Description.Scene);
+
+    /// <summary>The field's own camera and an orthographic one from above and behind.</summary>
+    public static readonly IReadOnlyDictionary<string, Camera> FieldCameras = new Dictionary<string, Camera>
+    {
+        ["persp"] = new PerspectiveCamera { Position = new Double3(0, 1.2, 4), Target = new Double3(0, 0, -60), Fov = 30, NearPlane = 0.1, FarPlane = 1000 },
+        ["ortho"] = new OrthoCamera { Position = new Double3(3, 12, 12), Target = new Double3(0, 0, -12), ViewHeight = 24, NearPlane = 0.1, FarPlane = 1000 },
+    };
 }

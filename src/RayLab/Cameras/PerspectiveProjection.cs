@@ -50,7 +50,12 @@ internal readonly struct PerspectiveProjection : IProjection
 
     /// <inheritdoc />
     public static (double Constant, double PerReach) SquareSpread(double delta, double directionLengthSquared) =>
-        (0, Math.Asin(Math.Min(1, delta / Math.Sqrt(directionLengthSquared))));
+        (0, Math.Asin(SpreadSine(delta, directionLengthSquared)));
+
+    /// <summary>The sine of the largest turn about the eye of a ray δ off a direction of length² <paramref name="directionLengthSquared"/>: min(1, δ / |d|), whose arcsine is <see cref="SquareSpread"/>'s part per reach.</summary>
+    /// <param name="delta">The half-diagonal δ.</param>
+    /// <param name="directionLengthSquared">|d|².</param>
+    public static double SpreadSine(double delta, double directionLengthSquared) => Math.Min(1, delta / Math.Sqrt(directionLengthSquared));
 
     /// <inheritdoc />
     /// <remarks>Outside when the sphere lies wholly outside one of the four planes through e and the window's edges.</remarks>

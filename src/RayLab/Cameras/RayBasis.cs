@@ -67,6 +67,13 @@ internal readonly struct RayBasis
     /// <summary>True for the orthographic projection, false for the perspective one.</summary>
     public bool IsOrthographic => _orthographic != 0;
 
+    /// <summary>The ray through window point (α, β): <see cref="ImagePlane.GetRay"/>'s formula, by the projection's own <c>GetRay</c>.</summary>
+    /// <param name="alpha">α, 0 at the window's left edge, 1 at its right.</param>
+    /// <param name="beta">β, 0 at the window's bottom edge, 1 at its top.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Ray GetRay(double alpha, double beta) =>
+        IsOrthographic ? OrthographicProjection.GetRay(this, alpha, beta) : PerspectiveProjection.GetRay(this, alpha, beta);
+
     /// <summary>
     /// The ray through point (<paramref name="sx"/>, <paramref name="sy"/>) of pixel (<paramref name="x"/>,
     /// <paramref name="row"/>): <see cref="ImagePlane.GetPixelRay"/>, with the projection chosen by the basis.

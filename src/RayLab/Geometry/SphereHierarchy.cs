@@ -121,72 +121,146 @@ internal sealed class SphereHierarchy
     /// <param name="ray">The ray.</param>
     /// <param name="tMin">The smallest visible parameter.</param>
     /// <param name="tMax">The largest visible parameter.</param>
-    // Long: one traversal loop, whose stack, nearest index and best t a split would pass by reference at every node.
     public int Nearest(Sphere[] spheres, in Ray ray, double tMin, double tMax)
     {
-        Double3 o = ray.Origin, d = ray.Direction;
-        double a = Double3.Dot(d, d);
-        if (!(a > 0) || !double.IsFinite(a))
-        {
-            return -1; // Sphere.TryIntersect refuses such a direction for every sphere
-        }
+        var stack = new SpanStack(stackalloc int[Depth + 1]);
+        return Traversal.Nearest(new Tree(this, spheres), ref stack, ray, tMin, tMax);
+    }
 
-        double largest = MaxAbs(d);
-        double tiny = largest * 1e-20;
-        if (!(tiny > 0) || !o.IsFinite)
+    /// <summary>
+    /// The traversal, once, static and generic over where the tree and its stack live: <see cref="Nearest"/> runs it on
+    /// the managed arrays with a stack on the CPU's stack, the device kernel of <c>RayLab.Gpu</c> on the same nodes and
+    /// order uploaded to the device, with a fixed-size stack in its local memory. Unmanaged values only, no recursion.
+    /// </summary>
+    internal static class Traversal
+    {
+        /// <summary>
+        /// The index of the nearest sphere of <paramref name="tree"/> hit with parameter in [<paramref name="tMin"/>,
+        /// <paramref name="tMax"/>], or −1: the same answer as testing every sphere in index order.
+        /// </summary>
+        /// <param name="tree">The hierarchy's nodes, order and spheres.</param>
+        /// <param name="stack">At least <see cref="Depth"/> + 1 entries.</param>
+        /// <param name="ray">The ray.</param>
+        /// <param name="tMin">The smallest visible parameter.</param>
+        /// <param name="tMax">The largest visible parameter.</param>
+        /// <typeparam name="TTree">The tree's storage.</typeparam>
+        /// <typeparam name="TStack">The stack's storage.</typeparam>
+        // Long: one traversal loop, whose stack, nearest index and best t a split would pass by reference at every node.
+        public static int Nearest<TTree, TStack>(in TTree tree, ref TStack stack, in Ray ray, double tMin, double tMax)
+            where TTree : struct, IHierarchyView
+            where TStack : struct, ITraversalStack, allows ref struct
         {
-            return NearestOfAll(spheres, ray, tMin, tMax);
-        }
-
-        // A zero component would make 0·∞; a tiny one moves the box test's ray by 10⁻²⁰ of its length.
-        Double3 inverse = new(1 / Safe(d.X, tiny), 1 / Safe(d.Y, tiny), 1 / Safe(d.Z, tiny));
-        double margin = Margin * (MaxAbs(o) + Scale);
-        double lower = tMin * (1 - DepthSlack);
-        int nearest = -1;
-        double best = tMax;
-        Span<int> stack = stackalloc int[Depth + 1];
-        int top = 0;
-        stack[top++] = 0;
-        HierarchyNode[] nodes = _nodes;
-        while (top > 0)
-        {
-            int self = stack[--top];
-            ref readonly HierarchyNode node = ref nodes[self];
-            if (!Enters(node, o, inverse, margin, lower, best * (1 + DepthSlack)))
+            Double3 o = ray.Origin, d = ray.Direction;
+            double a = Double3.Dot(d, d);
+            if (!(a > 0) || !double.IsFinite(a))
             {
-                continue;
+                return -1; // Sphere.TryIntersect refuses such a direction for every sphere
             }
 
-            if (node.Count > 0)
+            double largest = MaxAbs(d);
+            double tiny = largest * 1e-20;
+            if (!(tiny > 0) || !o.IsFinite)
             {
-                for (int i = node.Start; i < node.Start + node.Count; i++)
+                return NearestOfAll(tree, ray, tMin, tMax);
+            }
+
+            // A zero component would make 0·∞; a tiny one moves the box test's ray by 10⁻²⁰ of its length.
+            Double3 inverse = new(1 / Safe(d.X, tiny), 1 / Safe(d.Y, tiny), 1 / Safe(d.Z, tiny));
+            double margin = Margin * (MaxAbs(o) + tree.Scale);
+            double lower = tMin * (1 - DepthSlack);
+            int nearest = -1;
+            double best = tMax;
+            int top = 0;
+            stack[top++] = 0;
+            while (top > 0)
+            {
+                int self = stack[--top];
+                HierarchyNode node = tree.Node(self);
+                if (!Enters(node, o, inverse, margin, lower, best * (1 + DepthSlack)))
                 {
-                    int index = _order[i];
-                    if (spheres[index].TryIntersect(ray, tMin, best, out double t) && (t < best || index > nearest))
-                    {
-                        best = t;
-                        nearest = index;
-                    }
+                    continue;
                 }
 
-                continue;
+                if (node.Count > 0)
+                {
+                    for (int i = node.Start; i < node.Start + node.Count; i++)
+                    {
+                        int index = tree.Order(i);
+                        if (tree.TryIntersect(index, ray, tMin, best, out double t) && (t < best || index > nearest))
+                        {
+                            best = t;
+                            nearest = index;
+                        }
+                    }
+
+                    continue;
+                }
+
+                // Inner node: the left child follows it, the right one is at Start. The near one goes on top.
+                bool rightFirst = Component(d, node.Axis) < 0;
+                if (rightFirst)
+                {
+                    stack[top++] = self + 1;
+                    stack[top++] = node.Start;
+                }
+                else
+                {
+                    stack[top++] = node.Start;
+                    stack[top++] = self + 1;
+                }
             }
 
-            // Inner node: the left child follows it, the right one is at Start. The near one goes on top.
-            bool rightFirst = Component(d, node.Axis) < 0;
-            if (rightFirst)
-            {
-                stack[top++] = self + 1;
-                stack[top++] = node.Start;
-            }
-            else
-            {
-                stack[top++] = node.Start;
-                stack[top++] = self + 1;
-            }
+            return nearest;
         }
 
-        return nearest;
+        /// <summary>The nearest hit over every sphere of <paramref name="tree"/> in index order (the scene's loop).</summary>
+        /// <param name="tree">The spheres.</param>
+        /// <param name="ray">The ray.</param>
+        /// <param name="tMin">The smallest visible parameter.</param>
+        /// <param name="tMax">The largest visible parameter.</param>
+        /// <typeparam name="TTree">The spheres' storage.</typeparam>
+        public static int NearestOfAll<TTree>(in TTree tree, in Ray ray, double tMin, double tMax)
+            where TTree : struct, IHierarchyView
+        {
+            int nearest = -1;
+            double best = tMax;
+            for (int k = 0; k < tree.SphereCount; k++)
+            {
+                if (tree.TryIntersect(k, ray, tMin, best, out double t))
+                {
+                    best = t;
+                    nearest = k;
+                }
+            }
+
+            return nearest;
+        }
+    }
+
+    /// <summary>The managed tree: this hierarchy's arrays and the scene's spheres.</summary>
+    private readonly struct Tree(SphereHierarchy hierarchy, Sphere[] spheres) : IHierarchyView
+    {
+        public double Scale => hierarchy.Scale;
+
+        public int SphereCount => spheres.Length;
+
+        public HierarchyNode Node(int index) => hierarchy._nodes[index];
+
+        public int Order(int position) => hierarchy._order[position];
+
+        public bool TryIntersect(int sphere, in Ray ray, double tMin, double tMax, out double t) => spheres[sphere].TryIntersect(ray, tMin, tMax, out t);
+    }
+
+    /// <summary>A traversal stack on the CPU's stack.</summary>
+    private ref struct SpanStack(Span<int> entries) : ITraversalStack
+    {
+        private readonly Span<int> _entries = entries;
+
+        public readonly int this[int index]
+        {
+            get => _entries[index];
+            set => _entries[index] = value;
+        }
     }
 
     /// <summary>
@@ -229,21 +303,8 @@ internal sealed class SphereHierarchy
     }
 
     /// <summary>The nearest hit over every sphere in index order (the scene's loop).</summary>
-    internal static int NearestOfAll(Sphere[] spheres, in Ray ray, double tMin, double tMax)
-    {
-        int nearest = -1;
-        double best = tMax;
-        for (int k = 0; k < spheres.Length; k++)
-        {
-            if (spheres[k].TryIntersect(ray, tMin, best, out double t))
-            {
-                best = t;
-                nearest = k;
-            }
-        }
-
-        return nearest;
-    }
+    internal static int NearestOfAll(Sphere[] spheres, in Ray ray, double tMin, double tMax) =>
+        Traversal.NearestOfAll(new Tree(null!, spheres), ray, tMin, tMax);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static bool Enters(in HierarchyNode node, Double3 o, Double3 inverse, double margin, double lower, double upper)
@@ -526,3 +587,37 @@ internal sealed class SphereHierarchy
 /// <param name="Count">A leaf's sphere count; 0 for an inner node.</param>
 /// <param name="Axis">The split axis (0 x, 1 y, 2 z) of an inner node.</param>
 internal readonly record struct HierarchyNode(Double3 Lo, Double3 Hi, int Start, int Count, int Axis);
+
+/// <summary>A sphere hierarchy's storage, for <see cref="SphereHierarchy.Traversal"/>: its nodes, its leaves' sphere order and the spheres' hit test.</summary>
+internal interface IHierarchyView
+{
+    /// <summary>The largest absolute coordinate of the root box (<see cref="SphereHierarchy.Scale"/>).</summary>
+    double Scale { get; }
+
+    /// <summary>The number of spheres.</summary>
+    int SphereCount { get; }
+
+    /// <summary>Node <paramref name="index"/>, depth first (<see cref="SphereHierarchy.Nodes"/>).</summary>
+    /// <param name="index">The node's index.</param>
+    HierarchyNode Node(int index);
+
+    /// <summary>The sphere at <paramref name="position"/> of the leaves' order (<see cref="SphereHierarchy.Order"/>).</summary>
+    /// <param name="position">The position.</param>
+    int Order(int position);
+
+    /// <summary><see cref="SphereHit.TryIntersect"/> of sphere <paramref name="sphere"/>.</summary>
+    /// <param name="sphere">The sphere's index in the scene.</param>
+    /// <param name="ray">The ray.</param>
+    /// <param name="tMin">The smallest t accepted.</param>
+    /// <param name="tMax">The largest t accepted.</param>
+    /// <param name="t">The hit's t.</param>
+    bool TryIntersect(int sphere, in Ray ray, double tMin, double tMax, out double t);
+}
+
+/// <summary>The traversal stack of <see cref="SphereHierarchy.Traversal"/>: node indices.</summary>
+internal interface ITraversalStack
+{
+    /// <summary>Entry <paramref name="index"/>.</summary>
+    /// <param name="index">The entry.</param>
+    int this[int index] { get; set; }
+}

@@ -621,7 +621,7 @@ internal sealed class AdaptiveLattice
             long size = _lattice._size, mask = size - 1;
             bool onColumn = (lx & mask) == 0, onRow = (ly & mask) == 0;
             AdaptiveLattice lattice = _lattice;
-            weight = onColumn && onRow ? 0.25 : onColumn || onRow ? 0.5 : 1;
+            weight = AdaptivePixel.Share(lx, ly, size);
             if (TryDense(lx, ly, out Intensity known))
             {
                 return known;
@@ -895,8 +895,7 @@ internal readonly struct ConstantSource(Intensity value, long size) : ILatticeSo
 {
     public Intensity At(long lx, long ly, out double weight)
     {
-        bool onColumn = (lx & (size - 1)) == 0, onRow = (ly & (size - 1)) == 0;
-        weight = onColumn && onRow ? 0.25 : onColumn || onRow ? 0.5 : 1;
+        weight = AdaptivePixel.Share(lx, ly, size);
         return value;
     }
 

@@ -24,22 +24,112 @@ internal interface ILatticeSource
     bool MayCross(long x0, long y0, long size);
 }
 
-/// <summary>The lab's adaptive recursion for one pixel (see <see cref="AdaptiveSampler"/>), its values combined by <see cref="CombinationRule"/>.</summary>
+/// <summary>
+/// The lab's adaptive rule's settings as unmanaged values (<see cref="AdaptiveSampler"/>'s), so that a device
+/// compiler takes <see cref="AdaptivePixel"/> as it is.
+/// </summary>
+internal readonly struct AdaptiveRule
+{
+    /// <summary>Every pixel is subdivided at least this deep.</summary>
+    public readonly int MinDepth;
+
+    /// <summary>No square is subdivided below this depth.</summary>
+    public readonly int MaxDepth;
+
+    /// <summary>The spatial contrast per channel.</summary>
+    public readonly double Contrast;
+
+    private readonly int _quincunx;
+    private readonly int _guard;
+
+    /// <summary>The rule of <paramref name="sampler"/>.</summary>
+    /// <param name="sampler">The sampler.</param>
+    public AdaptiveRule(AdaptiveSampler sampler)
+    {
+        MinDepth = sampler.MinDepth;
+        MaxDepth = sampler.MaxDepth;
+        Contrast = sampler.Contrast;
+        _quincunx = sampler.Quincunx ? 1 : 0;
+        _guard = sampler.Guard ? 1 : 0;
+    }
+
+    /// <summary><see cref="AdaptiveSampler.Quincunx"/>.</summary>
+    public bool Quincunx => _quincunx != 0;
+
+    /// <summary><see cref="AdaptiveSampler.Guard"/>.</summary>
+    public bool Guard => _guard != 0;
+
+    /// <summary><see cref="AdaptiveSampler.Differ"/>: some channel differs by more than <see cref="Contrast"/>.</summary>
+    /// <param name="a">One value.</param>
+    /// <param name="b">The other.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public bool Differ(Intensity a, Intensity b) =>
+        Math.Abs(a.R - b.R) > Contrast || Math.Abs(a.G - b.G) > Contrast || Math.Abs(a.B - b.B) > Contrast;
+}
+
+/// <summary>
+/// One square of <see cref="AdaptivePixel"/>'s explicit stack: where it is, its corners and centre, the edge midpoints
+/// its refined quadrants need, which quadrants are refined (bits 1 top-left, 2 top-right, 4 bottom-left, 8
+/// bottom-right), the next quadrant to take and the values of those taken.
+/// </summary>
+internal struct AdaptiveSquare
+{
+    public long X0, Y0, Size;
+    public int Depth, Refine, Next;
+    public Intensity Tl, Tr, Bl, Br, X;
+    public Intensity Top, Left, Right, Bottom;
+    public Intensity VTl, VTr, VBl, VBr;
+}
+
+/// <summary>The squares of <see cref="AdaptivePixel"/>'s explicit stack: <see cref="AdaptiveRule.MaxDepth"/> + 1 entries.</summary>
+internal interface ISquareStack
+{
+    /// <summary>Entry <paramref name="index"/>.</summary>
+    /// <param name="index">The entry, 0 the pixel's square.</param>
+    ref AdaptiveSquare this[int index] { get; }
+}
+
+/// <summary>
+/// The lab's adaptive rule for one pixel (see <see cref="AdaptiveSampler"/>), its values combined by
+/// <see cref="CombinationRule"/>. Written once, static and generic over where the lattice's values come from and
+/// where the squares' stack lives, with no recursion: the CPU renderer runs it on its lattice with a stack on the
+/// CPU's stack, the device kernel of <c>RayLab.Gpu</c> on the points it traces with a stack in its local memory. The
+/// squares are taken depth first, quadrants in the order top-left, top-right, bottom-left, bottom-right, and the
+/// points asked for in the order of the rule's recursive form.
+/// </summary>
 internal static class AdaptivePixel
 {
     /// <summary>The pixel's value; <paramref name="samples"/> receives the rays charged to it (corners ¼, edge points ½).</summary>
     public static Intensity Evaluate<TSource>(AdaptiveSampler sampler, ref TSource source, int px, int py, out double samples)
         where TSource : ILatticeSource
     {
-        long size = 1L << (sampler.MaxDepth + 1);
+        var rule = new AdaptiveRule(sampler);
+        var stack = new SpanStack(stackalloc AdaptiveSquare[rule.MaxDepth + 1]);
+        return Evaluate(rule, ref source, ref stack, px, py, out samples);
+    }
+
+    /// <summary>The pixel's value under <paramref name="rule"/>; <paramref name="samples"/> receives the rays charged to it (corners ¼, edge points ½).</summary>
+    /// <param name="rule">The rule's settings.</param>
+    /// <param name="source">The lattice's values.</param>
+    /// <param name="stack">At least <see cref="AdaptiveRule.MaxDepth"/> + 1 squares.</param>
+    /// <param name="px">The pixel's column.</param>
+    /// <param name="py">The pixel's row.</param>
+    /// <param name="samples">The rays charged to the pixel.</param>
+    /// <typeparam name="TSource">Where the values come from.</typeparam>
+    /// <typeparam name="TStack">Where the stack lives.</typeparam>
+    public static Intensity Evaluate<TSource, TStack>(in AdaptiveRule rule, ref TSource source, ref TStack stack, int px, int py, out double samples)
+        where TSource : ILatticeSource
+        where TStack : ISquareStack, allows ref struct
+    {
+        long size = 1L << (rule.MaxDepth + 1);
         long x0 = px * size, y0 = py * size;
         samples = 0;
         Intensity tl = Take(ref source, x0, y0, ref samples);
         Intensity tr = Take(ref source, x0 + size, y0, ref samples);
         Intensity bl = Take(ref source, x0, y0 + size, ref samples);
         Intensity br = Take(ref source, x0 + size, y0 + size, ref samples);
-        if (!sampler.Quincunx && sampler.MinDepth == 0 && !CornersDiffer(sampler, tl, tr, bl, br)
-            && !(sampler.Guard && source.MayCross(x0, y0, size)))
+        if (!rule.Quincunx && rule.MinDepth == 0 && !CornersDiffer(rule, tl, tr, bl, br)
+            && !(rule.Guard && source.MayCross(x0, y0, size)))
         {
             // A flat pixel: the mean of its corners, which is what the combination rule gives for any centre that
             // agrees (exactly the corners' value when they are equal, as AdaptiveRenderer's runs of flat pixels take it).
@@ -47,83 +137,166 @@ internal static class AdaptivePixel
         }
 
         Intensity centre = Centre(ref source, x0 + (size / 2), y0 + (size / 2), ref samples);
-        return Square(sampler, ref source, x0, y0, size, 0, tl, tr, bl, br, centre, ref samples);
+        return Squares(rule, ref source, ref stack, x0, y0, size, tl, tr, bl, br, centre, ref samples);
     }
 
-    private static Intensity Square<TSource>(AdaptiveSampler s, ref TSource source, long x0, long y0, long size, int depth,
+    /// <summary>The square's value: its quadrants depth first, each refined one a square on the stack.</summary>
+    // Long: the recursive rule's one body unrolled onto the explicit stack (enter a square, take its next quadrant, return its value).
+    private static Intensity Squares<TSource, TStack>(in AdaptiveRule rule, ref TSource source, ref TStack stack, long x0, long y0, long size,
         Intensity tl, Intensity tr, Intensity bl, Intensity br, Intensity x, ref double samples)
         where TSource : ILatticeSource
+        where TStack : ISquareStack, allows ref struct
     {
-        (bool refineTl, bool refineTr, bool refineBl, bool refineBr) = Refinements(s, ref source, x0, y0, size, depth, tl, tr, bl, br, x);
-        if (!(refineTl || refineTr || refineBl || refineBr))
+        int top = 0;
+        Intensity value = Enter(rule, ref source, ref stack[0], x0, y0, size, 0, tl, tr, bl, br, x, ref samples, out bool entered);
+        if (!entered)
         {
+            return value;
+        }
+
+        while (true)
+        {
+            ref AdaptiveSquare square = ref stack[top];
+            if (square.Next == 4)
+            {
+                value = CombinationRule.Mean(square.VTl, square.VTr, square.VBl, square.VBr);
+                if (top == 0)
+                {
+                    return value;
+                }
+
+                top--;
+                ref AdaptiveSquare parent = ref stack[top];
+                Store(ref parent, parent.Next - 1, value);
+                continue;
+            }
+
+            int q = square.Next++;
+            if ((square.Refine & (1 << q)) == 0)
+            {
+                Store(ref square, q, CombinationRule.Quadrant(Corner(square, q), square.X));
+                continue;
+            }
+
+            long h = square.Size / 2, quarter = square.Size / 4;
+            long cx = square.X0 + ((q & 1) * h), cy = square.Y0 + ((q >> 1) * h);
+            Intensity centre = Centre(ref source, cx + quarter, cy + quarter, ref samples);
+            Intensity ctl = q switch { 0 => square.Tl, 1 => square.Top, 2 => square.Left, _ => square.X };
+            Intensity ctr = q switch { 0 => square.Top, 1 => square.Tr, 2 => square.X, _ => square.Right };
+            Intensity cbl = q switch { 0 => square.Left, 1 => square.X, 2 => square.Bl, _ => square.Bottom };
+            Intensity cbr = q switch { 0 => square.X, 1 => square.Right, 2 => square.Bottom, _ => square.Br };
+            value = Enter(rule, ref source, ref stack[top + 1], cx, cy, h, square.Depth + 1, ctl, ctr, cbl, cbr, centre, ref samples, out entered);
+            if (entered)
+            {
+                top++;
+            }
+            else
+            {
+                Store(ref square, q, value);
+            }
+        }
+    }
+
+    /// <summary>
+    /// Starts a square: its refined quadrants and the edge midpoints they need. None refined: false, and the square's
+    /// value (the combination rule over its corners and centre); else true and the square on the stack.
+    /// </summary>
+    private static Intensity Enter<TSource>(in AdaptiveRule rule, ref TSource source, ref AdaptiveSquare square, long x0, long y0, long size, int depth,
+        Intensity tl, Intensity tr, Intensity bl, Intensity br, Intensity x, ref double samples, out bool entered)
+        where TSource : ILatticeSource
+    {
+        int refine = Refinements(rule, ref source, x0, y0, size, depth, tl, tr, bl, br, x);
+        if (refine == 0)
+        {
+            entered = false;
             return CombinationRule.Mean(
                 CombinationRule.Quadrant(tl, x), CombinationRule.Quadrant(tr, x), CombinationRule.Quadrant(bl, x), CombinationRule.Quadrant(br, x));
         }
 
-        long h = size / 2, q = size / 4;
+        long h = size / 2;
+        square.X0 = x0;
+        square.Y0 = y0;
+        square.Size = size;
+        square.Depth = depth;
+        square.Refine = refine;
+        square.Next = 0;
+        (square.Tl, square.Tr, square.Bl, square.Br, square.X) = (tl, tr, bl, br, x);
         // The edge midpoints a refined quadrant needs; each is traced once and shared by the two quadrants beside it.
-        Intensity top = default, left = default, right = default, bottom = default;
-        if (refineTl || refineTr) { top = Take(ref source, x0 + h, y0, ref samples); }
-        if (refineTl || refineBl) { left = Take(ref source, x0, y0 + h, ref samples); }
-        if (refineTr || refineBr) { right = Take(ref source, x0 + size, y0 + h, ref samples); }
-        if (refineBl || refineBr) { bottom = Take(ref source, x0 + h, y0 + size, ref samples); }
-
-        Intensity vTl = refineTl
-            ? Square(s, ref source, x0, y0, h, depth + 1, tl, top, left, x, Centre(ref source, x0 + q, y0 + q, ref samples), ref samples)
-            : CombinationRule.Quadrant(tl, x);
-        Intensity vTr = refineTr
-            ? Square(s, ref source, x0 + h, y0, h, depth + 1, top, tr, x, right, Centre(ref source, x0 + h + q, y0 + q, ref samples), ref samples)
-            : CombinationRule.Quadrant(tr, x);
-        Intensity vBl = refineBl
-            ? Square(s, ref source, x0, y0 + h, h, depth + 1, left, x, bl, bottom, Centre(ref source, x0 + q, y0 + h + q, ref samples), ref samples)
-            : CombinationRule.Quadrant(bl, x);
-        Intensity vBr = refineBr
-            ? Square(s, ref source, x0 + h, y0 + h, h, depth + 1, x, right, bottom, br, Centre(ref source, x0 + h + q, y0 + h + q, ref samples), ref samples)
-            : CombinationRule.Quadrant(br, x);
-        return CombinationRule.Mean(vTl, vTr, vBl, vBr);
+        if ((refine & 3) != 0) { square.Top = Take(ref source, x0 + h, y0, ref samples); }
+        if ((refine & 5) != 0) { square.Left = Take(ref source, x0, y0 + h, ref samples); }
+        if ((refine & 10) != 0) { square.Right = Take(ref source, x0 + size, y0 + h, ref samples); }
+        if ((refine & 12) != 0) { square.Bottom = Take(ref source, x0 + h, y0 + size, ref samples); }
+        entered = true;
+        return default;
     }
 
-    // Which quadrants of the square the recursion goes into: all of them above MinDepth, none at MaxDepth, otherwise
-    // those whose corner differs from the centre (all when the corners differ among themselves), and with the guard
-    // those a silhouette may cross.
+    private static Intensity Corner(in AdaptiveSquare square, int q) => q switch { 0 => square.Tl, 1 => square.Tr, 2 => square.Bl, _ => square.Br };
+
+    private static void Store(ref AdaptiveSquare square, int q, Intensity value)
+    {
+        switch (q)
+        {
+            case 0: square.VTl = value; break;
+            case 1: square.VTr = value; break;
+            case 2: square.VBl = value; break;
+            default: square.VBr = value; break;
+        }
+    }
+
+    // Which quadrants of the square the rule goes into (bits 1 top-left, 2 top-right, 4 bottom-left, 8 bottom-right):
+    // all of them above MinDepth, none at MaxDepth, otherwise those whose corner differs from the centre (all when the
+    // corners differ among themselves), and with the guard those a silhouette may cross.
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static (bool Tl, bool Tr, bool Bl, bool Br) Refinements<TSource>(AdaptiveSampler s, ref TSource source, long x0, long y0, long size, int depth,
+    private static int Refinements<TSource>(in AdaptiveRule s, ref TSource source, long x0, long y0, long size, int depth,
         Intensity tl, Intensity tr, Intensity bl, Intensity br, Intensity x)
         where TSource : ILatticeSource
     {
         if (depth >= s.MaxDepth)
         {
-            return (false, false, false, false);
+            return 0;
         }
 
         if (depth < s.MinDepth)
         {
-            return (true, true, true, true);
+            return 15;
         }
 
-        bool refineTl = s.Differ(tl, x), refineTr = s.Differ(tr, x), refineBl = s.Differ(bl, x), refineBr = s.Differ(br, x);
-        if (!(refineTl || refineTr || refineBl || refineBr) && CornersDiffer(s, tl, tr, bl, br))
+        int refine = (s.Differ(tl, x) ? 1 : 0) | (s.Differ(tr, x) ? 2 : 0) | (s.Differ(bl, x) ? 4 : 0) | (s.Differ(br, x) ? 8 : 0);
+        if (refine == 0 && CornersDiffer(s, tl, tr, bl, br))
         {
             // The corners disagree although each agrees with the centre: refine them all.
-            refineTl = refineTr = refineBl = refineBr = true;
+            refine = 15;
         }
 
         if (s.Guard)
         {
             // Where the values agree, a silhouette may still cross a quadrant between its traced points.
             long half = size / 2;
-            refineTl = refineTl || source.MayCross(x0, y0, half);
-            refineTr = refineTr || source.MayCross(x0 + half, y0, half);
-            refineBl = refineBl || source.MayCross(x0, y0 + half, half);
-            refineBr = refineBr || source.MayCross(x0 + half, y0 + half, half);
+            refine |= (refine & 1) == 0 && source.MayCross(x0, y0, half) ? 1 : 0;
+            refine |= (refine & 2) == 0 && source.MayCross(x0 + half, y0, half) ? 2 : 0;
+            refine |= (refine & 4) == 0 && source.MayCross(x0, y0 + half, half) ? 4 : 0;
+            refine |= (refine & 8) == 0 && source.MayCross(x0 + half, y0 + half, half) ? 8 : 0;
         }
 
-        return (refineTl, refineTr, refineBl, refineBr);
+        return refine;
     }
 
-    private static bool CornersDiffer(AdaptiveSampler s, Intensity tl, Intensity tr, Intensity bl, Intensity br) =>
+    private static bool CornersDiffer(in AdaptiveRule s, Intensity tl, Intensity tr, Intensity bl, Intensity br) =>
         s.Differ(tl, tr) || s.Differ(tl, bl) || s.Differ(tl, br) || s.Differ(tr, bl) || s.Differ(tr, br) || s.Differ(bl, br);
+
+    /// <summary>
+    /// The share of lattice point (<paramref name="lx"/>, <paramref name="ly"/>)'s ray charged to a pixel that asks for it
+    /// (for the heat map): ¼ for a pixel corner, ½ for a point on a pixel edge, 1 inside.
+    /// </summary>
+    /// <param name="lx">Lattice column.</param>
+    /// <param name="ly">Lattice row.</param>
+    /// <param name="size">Lattice steps per pixel side (a power of two).</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static double Share(long lx, long ly, long size)
+    {
+        bool onColumn = (lx & (size - 1)) == 0, onRow = (ly & (size - 1)) == 0;
+        return onColumn && onRow ? 0.25 : onColumn || onRow ? 0.5 : 1;
+    }
 
     private static Intensity Centre<TSource>(ref TSource source, long lx, long ly, ref double samples)
         where TSource : ILatticeSource
@@ -138,5 +311,13 @@ internal static class AdaptivePixel
         Intensity value = source.At(lx, ly, out double weight);
         samples += weight;
         return value;
+    }
+
+    /// <summary>The squares' stack on the CPU's stack.</summary>
+    private readonly ref struct SpanStack(Span<AdaptiveSquare> squares) : ISquareStack
+    {
+        private readonly Span<AdaptiveSquare> _squares = squares;
+
+        public ref AdaptiveSquare this[int index] => ref _squares[index];
     }
 }

@@ -206,14 +206,35 @@ internal sealed class SilhouetteGuard
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private (Double3 Origin, Double3 D, double Dd, double Spread, double Turn) Centre(long x0, long y0, long size)
     {
-        double half = size * 0.5;
-        Ray ray = _plane.GetRay(_plane.LatticeAlpha(x0 + half, _size), _plane.LatticeBeta(y0 + half, _size));
-        double delta = half * Math.Sqrt((_stepWidth * _stepWidth) + (_stepHeight * _stepHeight));
-        Double3 d = ray.Direction;
-        double dd = Double3.Dot(d, d);
+        (Double3 origin, Double3 d, double dd, double delta) = SquareRay(_plane.Basis, _size, _stepWidth, _stepHeight, x0, y0, size);
         (double spread, double turn) = _plane.SquareSpread(delta, dd);
-        return (ray.Origin, d, dd, spread, turn);
+        return (origin, d, dd, spread, turn);
     }
+
+    /// <summary>
+    /// <see cref="Centre"/>'s ray on the plane's unmanaged <see cref="RayBasis"/> (the device kernel's too): the central
+    /// ray of the square of <paramref name="size"/> steps at (<paramref name="x0"/>, <paramref name="y0"/>) of a lattice of
+    /// <paramref name="latticeSize"/> steps per pixel, each step <paramref name="stepWidth"/> by <paramref name="stepHeight"/>
+    /// on the window, d·d, and the square's half-diagonal δ on the window.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static (Double3 Origin, Double3 D, double Dd, double Delta) SquareRay(in RayBasis basis, long latticeSize, double stepWidth, double stepHeight, long x0, long y0, long size)
+    {
+        double half = size * 0.5;
+        Ray ray = basis.GetRay(WindowMapping.Alpha(x0 + half, basis.Width * (double)latticeSize), WindowMapping.Beta(y0 + half, basis.Height * (double)latticeSize));
+        double delta = half * Math.Sqrt((stepWidth * stepWidth) + (stepHeight * stepHeight));
+        Double3 d = ray.Direction;
+        return (ray.Origin, d, Double3.Dot(d, d), delta);
+    }
+
+    /// <summary>The lattice step's width on the window: <see cref="SquareRay"/>'s <c>stepWidth</c>.</summary>
+    internal double StepWidth => _stepWidth;
+
+    /// <summary>The lattice step's height on the window: <see cref="SquareRay"/>'s <c>stepHeight</c>.</summary>
+    internal double StepHeight => _stepHeight;
+
+    /// <summary>The spheres the guard tests: radius above 0 and not hidden, each with whether a near or far plane cuts it.</summary>
+    internal ReadOnlySpan<(Double3 Center, double Radius, bool Clipped)> Spheres => _spheres;
 
     /// <summary>
     /// The guard's test for one sphere, its margin times <paramref name="slack"/> (1: the square's own test): the
@@ -221,7 +242,7 @@ internal sealed class SilhouetteGuard
     /// another miss only if <c>|p − r|</c> is within the margin (<c>p − r</c>, for a sphere a plane cuts).
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static bool Crosses(Double3 origin, Double3 d, double dd, double spread, double turn, Double3 center, double radius, bool clipped, double slack)
+    internal static bool Crosses(Double3 origin, Double3 d, double dd, double spread, double turn, Double3 center, double radius, bool clipped, double slack)
     {
         Double3 f = origin - center;
         Double3 perp = f - ((Double3.Dot(f, d) / dd) * d);
