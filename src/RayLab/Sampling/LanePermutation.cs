@@ -15,6 +15,12 @@ internal struct LanePermutation<TL>
     private PermutationKey<TL, LaneMath<TL>> _key;
     private TL _rotation;
 
+    /// <summary>The lanes' pattern numbers and what a round takes from them.</summary>
+    public readonly PermutationKey<TL, LaneMath<TL>> Key => _key;
+
+    /// <summary>Each lane's final rotation p mod l.</summary>
+    public readonly TL Rotation => _rotation;
+
     /// <summary>Sets the lanes' pattern numbers.</summary>
     /// <param name="patterns">Each lane's pattern number p.</param>
     /// <param name="length">The permutations' common length l.</param>
@@ -112,6 +118,79 @@ internal struct LanePermutation<TL>
     /// <summary>One round of the cycle walk, <see cref="PermutationKey{TV, TM}.Round"/>, in every lane.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private readonly TL Round(TL v, TL w) => _key.Round(v, w);
+}
+
+/// <summary>
+/// Two of Kensler's permutations of one length l, a power of two ≤ 2¹⁵, side by side: one in the low 16-bit half of
+/// every lane, the other in the high half. A round's low 16 bits depend only on the low 16 bits of its inputs (its
+/// multiplies keep low bits, its right shifts act on values masked below l), so each half computes its own
+/// permutation's element, bit for bit, with 16-bit multiplies and shifts: one round for two elements.
+/// </summary>
+/// <typeparam name="TL">The lane type.</typeparam>
+internal struct LanePermutationPair<TL>
+    where TL : struct, ILanes<TL>
+{
+    private TL _p, _p16, _p8, _p23, _multiplier, _rotation;
+
+    /// <summary>True when a pair of permutations of length <paramref name="length"/> fits the halves: a power of two ≤ 2¹⁵.</summary>
+    public static bool Fits(int length) => int.IsPow2(length) && length <= 1 << 15;
+
+    /// <summary>Both halves' mask w = l − 1 for a length that <see cref="Fits"/>.</summary>
+    public static TL Mask(int length) => TL.BroadcastBits((uint)(length - 1) * 0x10001u);
+
+    /// <summary>The low 16 bits of <paramref name="i"/> in both halves.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Both(uint i) => TL.BroadcastBits((i & 0xffffu) * 0x10001u);
+
+    /// <summary>Sets the pair: <paramref name="low"/>'s permutation in the low halves, <paramref name="high"/>'s in the high ones (both of a length that <see cref="Fits"/>).</summary>
+    public void Set(in LanePermutation<TL> low, in LanePermutation<TL> high)
+    {
+        _p = Join(low.Key.P, high.Key.P);
+        _p16 = Join(low.Key.P16, high.Key.P16);
+        _p8 = Join(low.Key.P8, high.Key.P8);
+        _p23 = Join(low.Key.P23, high.Key.P23);
+        _multiplier = Join(low.Key.Multiplier, high.Key.Multiplier);
+        _rotation = Join(low.Rotation, high.Rotation);
+    }
+
+    /// <summary>
+    /// Element (low half of <paramref name="i"/>) of the low permutation and element (high half) of the high one, in
+    /// their halves; <paramref name="w"/> is <see cref="Mask"/>.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly TL Elements(TL i, TL w)
+    {
+        TL v = TL.Xor(i, _p);
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier1));
+        v = TL.Xor(v, _p16);
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 4));
+        v = TL.Xor(v, _p8);
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier2));
+        v = TL.Xor(v, _p23);
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 1));
+        v = TL.MultiplyHalves(v, _multiplier);
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 11));
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier4));
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 2));
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier5));
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 2));
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier6));
+        v &= w;
+        v = TL.Xor(v, TL.ShiftRightHalves(v, 5));
+
+        // The rotation (v + p) mod l: v and p mod l are below l ≤ 2¹⁵, so the low half's sum does not carry into the high half.
+        return TL.AddBits(v, _rotation) & w;
+    }
+
+    /// <summary>The low half of each lane.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Low(TL both) => both & TL.BroadcastBits(0xffffu);
+
+    /// <summary>The high half of each lane.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL High(TL both) => TL.ShiftRightBits(both, 16);
+
+    private static TL Join(TL low, TL high) => (low & TL.BroadcastBits(0xffffu)) | TL.ShiftLeftBits(high, 16);
 }
 
 /// <summary>A permutation length l in every lane, with l − 1 and Kensler's mask w (the next power of two ≥ l, less one).</summary>
