@@ -15,12 +15,6 @@ internal struct LanePermutation<TL>
     private PermutationKey<TL, LaneMath<TL>> _key;
     private TL _rotation;
 
-    /// <summary>The lanes' pattern numbers and what a round takes from them.</summary>
-    public readonly PermutationKey<TL, LaneMath<TL>> Key => _key;
-
-    /// <summary>Each lane's final rotation p mod l.</summary>
-    public readonly TL Rotation => _rotation;
-
     /// <summary>Sets the lanes' pattern numbers.</summary>
     /// <param name="patterns">Each lane's pattern number p.</param>
     /// <param name="length">The permutations' common length l.</param>
@@ -142,15 +136,21 @@ internal struct LanePermutationPair<TL>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static TL Both(uint i) => TL.BroadcastBits((i & 0xffffu) * 0x10001u);
 
-    /// <summary>Sets the pair: <paramref name="low"/>'s permutation in the low halves, <paramref name="high"/>'s in the high ones (both of a length that <see cref="Fits"/>).</summary>
-    public void Set(in LanePermutation<TL> low, in LanePermutation<TL> high)
+    /// <summary>
+    /// Sets the pair from each lane's two pattern numbers: <paramref name="low"/>'s permutation in the low halves,
+    /// <paramref name="high"/>'s in the high ones, both of length <paramref name="length"/> (one that <see cref="Fits"/>).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void Set(TL low, TL high, int length)
     {
-        _p = Join(low.Key.P, high.Key.P);
-        _p16 = Join(low.Key.P16, high.Key.P16);
-        _p8 = Join(low.Key.P8, high.Key.P8);
-        _p23 = Join(low.Key.P23, high.Key.P23);
-        _multiplier = Join(low.Key.Multiplier, high.Key.Multiplier);
-        _rotation = Join(low.Rotation, high.Rotation);
+        TL lowHalf = TL.BroadcastBits(0xffffu), highHalf = TL.BroadcastBits(0xffff0000u);
+        _p = (low & lowHalf) | TL.ShiftLeftBits(high, 16);
+        _p16 = TL.ShiftRightBits(low, 16) | (high & highHalf);
+        _p8 = (TL.ShiftRightBits(low, 8) & lowHalf) | (TL.ShiftLeftBits(high, 8) & highHalf);
+        _p23 = TL.ShiftRightBits(low, 23) | TL.ShiftLeftBits(TL.ShiftRightBits(high, 23), 16);
+        _multiplier = (Multiplier(low) & lowHalf) | TL.ShiftLeftBits(Multiplier(high), 16);
+        TL last = TL.BroadcastBits((uint)length - 1);
+        _rotation = (low & last) | TL.ShiftLeftBits(high & last, 16);
     }
 
     /// <summary>
@@ -190,7 +190,9 @@ internal struct LanePermutationPair<TL>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static TL High(TL both) => TL.ShiftRightBits(both, 16);
 
-    private static TL Join(TL low, TL high) => (low & TL.BroadcastBits(0xffffu)) | TL.ShiftLeftBits(high, 16);
+    /// <summary>A round's pattern multiplier, (1 | (p ≫ 27)) · <see cref="Kensler.PermuteMultiplier3"/> (<see cref="PermutationKey{TV, TM}"/>'s).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL Multiplier(TL p) => TL.MultiplyBits(TL.ShiftRightBits(p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(Kensler.PermuteMultiplier3));
 }
 
 /// <summary>A permutation length l in every lane, with l − 1 and Kensler's mask w (the next power of two ≥ l, less one).</summary>

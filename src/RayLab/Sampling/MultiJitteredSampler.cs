@@ -140,15 +140,16 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
         {
             _keys = PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt);
             TL columnKeys = TL.Xor(_keys, TL.BroadcastBits(ColumnSalt)), rowKeys = TL.Xor(_keys, TL.BroadcastBits(RowSalt));
+            if (_subColumns is not null)
+            {
+                Tabulate(columnKeys, rowKeys);
+                return;
+            }
+
             for (int k = 0; k < _n; k++)
             {
                 _columns[k].Set(PointHash.SampleHash<TL, LaneMath<TL>>(columnKeys, k), _length, _scratch);
                 _rows[k].Set(PointHash.SampleHash<TL, LaneMath<TL>>(rowKeys, k), _length, _scratch);
-            }
-
-            if (_subColumns is not null)
-            {
-                Tabulate();
             }
         }
 
@@ -157,14 +158,14 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
         /// side by side in the lanes' halves (<see cref="LanePermutationPair{TL}"/>), each of their n elements once.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-        private readonly void Tabulate()
+        private readonly void Tabulate(TL columnKeys, TL rowKeys)
         {
             int n = _n, count = TL.Count;
             Span<float> subColumns = _subColumns, subRows = _subRows;
             var pair = default(LanePermutationPair<TL>);
             for (int k = 0; k < n; k++)
             {
-                pair.Set(_columns[k], _rows[k]);
+                pair.Set(PointHash.SampleHash<TL, LaneMath<TL>>(columnKeys, k), PointHash.SampleHash<TL, LaneMath<TL>>(rowKeys, k), n);
                 for (int i = 0; i < n; i++)
                 {
                     // Low: the fine column of the sample in column k, row i; high: the fine row of the sample in row k, column i.

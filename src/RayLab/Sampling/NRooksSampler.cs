@@ -94,6 +94,7 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
         private readonly CellDivisor _divisor;
         private readonly uint[] _scratch = new uint[TL.Count];
         private readonly bool _halves;
+        private readonly int _count;
         private readonly TL _halfMask;
         private LanePermutation<TL> _columns, _rows;
         private LanePermutationPair<TL> _pair;
@@ -104,7 +105,8 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
             _salt = PointHash.Salt(sampler.Seed);
             _length = new LaneLength<TL>(sampler.SamplesPerPixel);
             _divisor = sampler._divisor;
-            _halves = LanePermutationPair<TL>.Fits(sampler.SamplesPerPixel);
+            _count = sampler.SamplesPerPixel;
+            _halves = LanePermutationPair<TL>.Fits(_count);
             _halfMask = LanePermutationPair<TL>.Mask(sampler.SamplesPerPixel);
         }
 
@@ -112,11 +114,15 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
         public void BeginPacket(int x0, int row)
         {
             _keys = PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt);
-            _columns.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(ColumnSalt)), _length, _scratch);
-            _rows.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(RowSalt)), _length, _scratch);
+            TL columnPatterns = TL.MultiplyBits(_keys, TL.BroadcastBits(ColumnSalt)), rowPatterns = TL.MultiplyBits(_keys, TL.BroadcastBits(RowSalt));
             if (_halves)
             {
-                _pair.Set(_columns, _rows);
+                _pair.Set(columnPatterns, rowPatterns, _count);
+            }
+            else
+            {
+                _columns.Set(columnPatterns, _length, _scratch);
+                _rows.Set(rowPatterns, _length, _scratch);
             }
         }
 

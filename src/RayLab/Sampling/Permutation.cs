@@ -86,21 +86,6 @@ internal readonly struct PermutationKey<TV, TM>
         _multiplier = TM.MultiplyBits(TM.Or(TM.ShiftRightBits(p, 27), TM.BroadcastBits(1)), TM.BroadcastBits(Kensler.PermuteMultiplier3));
     }
 
-    /// <summary>The pattern number p.</summary>
-    public TV P => _p;
-
-    /// <summary>p ≫ 16.</summary>
-    public TV P16 => _p16;
-
-    /// <summary>p ≫ 8.</summary>
-    public TV P8 => _p8;
-
-    /// <summary>p ≫ 23.</summary>
-    public TV P23 => _p23;
-
-    /// <summary>The round's pattern multiplier, (1 | (p ≫ 27)) · <see cref="Kensler.PermuteMultiplier3"/>.</summary>
-    public TV Multiplier => _multiplier;
-
     /// <summary>One round of Kensler's hash of <paramref name="v"/> under mask <paramref name="w"/>: a bijection on 0 … w.</summary>
     /// <param name="v">The value, ≤ w.</param>
     /// <param name="w">The mask: the next power of two ≥ l, less one.</param>
