@@ -114,6 +114,87 @@ internal struct LanePermutation<TL>
     private readonly TL Round(TL v, TL w) => _key.Round(v, w);
 }
 
+/// <summary>
+/// Two of Kensler's permutations of one length l, a power of two ≤ 2¹⁵, side by side: one in the low 16-bit half of
+/// every lane, the other in the high half. A round's low 16 bits depend only on the low 16 bits of its inputs (its
+/// multiplies keep low bits, its right shifts act on values masked below l), so each half computes its own
+/// permutation's element, bit for bit, with 16-bit multiplies and shifts: one round for two elements.
+/// </summary>
+/// <typeparam name="TL">The lane type.</typeparam>
+internal struct LanePermutationPair<TL>
+    where TL : struct, ILanes<TL>
+{
+    private TL _p, _p16, _p8, _p23, _multiplier, _rotation;
+
+    /// <summary>True when a pair of permutations of length <paramref name="length"/> fits the halves: a power of two ≤ 2¹⁵.</summary>
+    public static bool Fits(int length) => int.IsPow2(length) && length <= 1 << 15;
+
+    /// <summary>Both halves' mask w = l − 1 for a length that <see cref="Fits"/>.</summary>
+    public static TL Mask(int length) => TL.BroadcastBits((uint)(length - 1) * 0x10001u);
+
+    /// <summary>The low 16 bits of <paramref name="i"/> in both halves.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Both(uint i) => TL.BroadcastBits((i & 0xffffu) * 0x10001u);
+
+    /// <summary>
+    /// Sets the pair from each lane's two pattern numbers: <paramref name="low"/>'s permutation in the low halves,
+    /// <paramref name="high"/>'s in the high ones, both of length <paramref name="length"/> (one that <see cref="Fits"/>).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public void Set(TL low, TL high, int length)
+    {
+        TL lowHalf = TL.BroadcastBits(0xffffu), highHalf = TL.BroadcastBits(0xffff0000u);
+        _p = (low & lowHalf) | TL.ShiftLeftBits(high, 16);
+        _p16 = TL.ShiftRightBits(low, 16) | (high & highHalf);
+        _p8 = (TL.ShiftRightBits(low, 8) & lowHalf) | (TL.ShiftLeftBits(high, 8) & highHalf);
+        _p23 = TL.ShiftRightBits(low, 23) | TL.ShiftLeftBits(TL.ShiftRightBits(high, 23), 16);
+        _multiplier = (Multiplier(low) & lowHalf) | TL.ShiftLeftBits(Multiplier(high), 16);
+        TL last = TL.BroadcastBits((uint)length - 1);
+        _rotation = (low & last) | TL.ShiftLeftBits(high & last, 16);
+    }
+
+    /// <summary>
+    /// Element (low half of <paramref name="i"/>) of the low permutation and element (high half) of the high one, in
+    /// their halves; <paramref name="w"/> is <see cref="Mask"/>.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly TL Elements(TL i, TL w)
+    {
+        TL v = TL.Xor(i, _p);
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier1));
+        v = TL.Xor(v, _p16);
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 4));
+        v = TL.Xor(v, _p8);
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier2));
+        v = TL.Xor(v, _p23);
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 1));
+        v = TL.MultiplyHalves(v, _multiplier);
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 11));
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier4));
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 2));
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier5));
+        v = TL.Xor(v, TL.ShiftRightHalves(v & w, 2));
+        v = TL.MultiplyHalves(v, Both(Kensler.PermuteMultiplier6));
+        v &= w;
+        v = TL.Xor(v, TL.ShiftRightHalves(v, 5));
+
+        // The rotation (v + p) mod l: v and p mod l are below l ≤ 2¹⁵, so the low half's sum does not carry into the high half.
+        return TL.AddBits(v, _rotation) & w;
+    }
+
+    /// <summary>The low half of each lane.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL Low(TL both) => both & TL.BroadcastBits(0xffffu);
+
+    /// <summary>The high half of each lane.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static TL High(TL both) => TL.ShiftRightBits(both, 16);
+
+    /// <summary>A round's pattern multiplier, (1 | (p ≫ 27)) · <see cref="Kensler.PermuteMultiplier3"/> (<see cref="PermutationKey{TV, TM}"/>'s).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL Multiplier(TL p) => TL.MultiplyBits(TL.ShiftRightBits(p, 27) | TL.BroadcastBits(1), TL.BroadcastBits(Kensler.PermuteMultiplier3));
+}
+
 /// <summary>A permutation length l in every lane, with l − 1 and Kensler's mask w (the next power of two ≥ l, less one).</summary>
 /// <typeparam name="TL">The lane type.</typeparam>
 internal readonly struct LaneLength<TL>

@@ -91,8 +91,9 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
 
     /// <summary>
     /// The points in lanes: the n column and n row permutations of each pixel get their pattern numbers once per
-    /// packet and their elements walk in SIMD, made a block ahead (<see cref="PointBlock"/>); each point is the float
-    /// of the scalar one.
+    /// packet and their elements walk in SIMD: for a power-of-two n (up to 32) all of them at the packet's start, a
+    /// column's and a row's permutation side by side in each lane's halves, else one sample at a time; the points are
+    /// made a block ahead (<see cref="PointBlock"/>), each the float of the scalar one.
     /// </summary>
     private struct LaneForm<TL> : ILaneSampler<TL>, IStagedPoints<TL>
         where TL : struct, ILanes<TL>
@@ -105,7 +106,12 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
         private readonly uint[] _scratch = new uint[TL.Count];
         private readonly LanePermutation<TL>[] _columns, _rows;
         private readonly (int Column, int Row)[] _cells;
+        private readonly float[]? _subColumns, _subRows;
+        private readonly TL _halfMask;
         private TL _keys;
+
+        /// <summary>The most samples whose fine columns and rows are made per packet into tables (two floats a sample and lane).</summary>
+        private const int MaxTabled = 1024;
 
         public LaneForm(MultiJitteredSampler sampler)
         {
@@ -115,6 +121,12 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
             _divisor = sampler._divisor;
             _columns = new LanePermutation<TL>[_n];
             _rows = new LanePermutation<TL>[_n];
+            if (LanePermutationPair<TL>.Fits(_n) && _n * _n <= MaxTabled)
+            {
+                _subColumns = new float[_n * _n * TL.Count];
+                _subRows = new float[_n * _n * TL.Count];
+                _halfMask = LanePermutationPair<TL>.Mask(_n);
+            }
 
             // Sample i's coarse cell (i mod n, i div n), looked up rather than divided for in the hot loop.
             _cells = new (int, int)[_n * _n];
@@ -128,10 +140,39 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
         {
             _keys = PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt);
             TL columnKeys = TL.Xor(_keys, TL.BroadcastBits(ColumnSalt)), rowKeys = TL.Xor(_keys, TL.BroadcastBits(RowSalt));
+            if (_subColumns is not null)
+            {
+                Tabulate(columnKeys, rowKeys);
+                return;
+            }
+
             for (int k = 0; k < _n; k++)
             {
                 _columns[k].Set(PointHash.SampleHash<TL, LaneMath<TL>>(columnKeys, k), _length, _scratch);
                 _rows[k].Set(PointHash.SampleHash<TL, LaneMath<TL>>(rowKeys, k), _length, _scratch);
+            }
+        }
+
+        /// <summary>
+        /// Every sample's fine column and fine row, for a power-of-two n: column permutation k and row permutation k
+        /// side by side in the lanes' halves (<see cref="LanePermutationPair{TL}"/>), each of their n elements once.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+        private readonly void Tabulate(TL columnKeys, TL rowKeys)
+        {
+            int n = _n, count = TL.Count;
+            Span<float> subColumns = _subColumns, subRows = _subRows;
+            var pair = default(LanePermutationPair<TL>);
+            for (int k = 0; k < n; k++)
+            {
+                pair.Set(PointHash.SampleHash<TL, LaneMath<TL>>(columnKeys, k), PointHash.SampleHash<TL, LaneMath<TL>>(rowKeys, k), n);
+                for (int i = 0; i < n; i++)
+                {
+                    // Low: the fine column of the sample in column k, row i; high: the fine row of the sample in row k, column i.
+                    TL both = pair.Elements(LanePermutationPair<TL>.Both((uint)i), _halfMask);
+                    LanePermutationPair<TL>.Low(both).Store(subColumns.Slice(((i * n) + k) * count, count));
+                    LanePermutationPair<TL>.High(both).Store(subRows.Slice(((k * n) + i) * count, count));
+                }
             }
         }
 
@@ -145,9 +186,18 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public readonly void First(int index, out TL a, out TL b, out TL c)
         {
-            (int column, int row) = _cells[index];
-            (a, b) = LanePermutation<TL>.Pair(
-                _columns[column], TL.BroadcastBits((uint)row), _length, _rows[row], TL.BroadcastBits((uint)column), _length);
+            if (_subColumns is not null)
+            {
+                a = TL.Load(_subColumns.AsSpan(index * TL.Count, TL.Count));
+                b = TL.Load(_subRows.AsSpan(index * TL.Count, TL.Count));
+            }
+            else
+            {
+                (int column, int row) = _cells[index];
+                (a, b) = LanePermutation<TL>.Pair(
+                    _columns[column], TL.BroadcastBits((uint)row), _length, _rows[row], TL.BroadcastBits((uint)column), _length);
+            }
+
             c = default;
         }
 

@@ -81,7 +81,8 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
             : user.Run(() => new BufferedLanes<TL>(this));
 
     /// <summary>
-    /// The points in lanes: both of a pixel's permutations (column and row) walk in SIMD, made a block ahead
+    /// The points in lanes: both of a pixel's permutations (column and row) walk in SIMD, side by side in each lane's
+    /// 16-bit halves when N is a power of two ≤ 2¹⁵ (<see cref="LanePermutationPair{TL}"/>), made a block ahead
     /// (<see cref="PointBlock"/>), and each point is the float of the scalar one.
     /// </summary>
     private struct LaneForm<TL> : ILaneSampler<TL>, IStagedPoints<TL>
@@ -92,7 +93,11 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
         private readonly LaneLength<TL> _length;
         private readonly CellDivisor _divisor;
         private readonly uint[] _scratch = new uint[TL.Count];
+        private readonly bool _halves;
+        private readonly int _count;
+        private readonly TL _halfMask;
         private LanePermutation<TL> _columns, _rows;
+        private LanePermutationPair<TL> _pair;
         private TL _keys;
 
         public LaneForm(NRooksSampler sampler)
@@ -100,14 +105,25 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
             _salt = PointHash.Salt(sampler.Seed);
             _length = new LaneLength<TL>(sampler.SamplesPerPixel);
             _divisor = sampler._divisor;
+            _count = sampler.SamplesPerPixel;
+            _halves = LanePermutationPair<TL>.Fits(_count);
+            _halfMask = LanePermutationPair<TL>.Mask(sampler.SamplesPerPixel);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void BeginPacket(int x0, int row)
         {
             _keys = PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt);
-            _columns.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(ColumnSalt)), _length, _scratch);
-            _rows.Set(TL.MultiplyBits(_keys, TL.BroadcastBits(RowSalt)), _length, _scratch);
+            TL columnPatterns = TL.MultiplyBits(_keys, TL.BroadcastBits(ColumnSalt)), rowPatterns = TL.MultiplyBits(_keys, TL.BroadcastBits(RowSalt));
+            if (_halves)
+            {
+                _pair.Set(columnPatterns, rowPatterns, _count);
+            }
+            else
+            {
+                _columns.Set(columnPatterns, _length, _scratch);
+                _rows.Set(rowPatterns, _length, _scratch);
+            }
         }
 
         public int Prepare(int start, int end) => PointBlock.Fill<TL, LaneForm<TL>>(ref this, _block, start, end);
@@ -120,8 +136,19 @@ public sealed class NRooksSampler : PixelSampler, ILaneSampled
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public readonly void First(int index, out TL a, out TL b, out TL c)
         {
-            TL i = TL.BroadcastBits((uint)index);
-            (a, b) = LanePermutation<TL>.Pair(_columns, i, _length, _rows, i, _length);
+            if (_halves)
+            {
+                // Both permutations at once, the column's in the low halves and the row's in the high ones.
+                TL both = _pair.Elements(LanePermutationPair<TL>.Both((uint)index), _halfMask);
+                a = LanePermutationPair<TL>.Low(both);
+                b = LanePermutationPair<TL>.High(both);
+            }
+            else
+            {
+                TL i = TL.BroadcastBits((uint)index);
+                (a, b) = LanePermutation<TL>.Pair(_columns, i, _length, _rows, i, _length);
+            }
+
             c = default;
         }
 

@@ -27,11 +27,16 @@ public sealed class Pmj02BNSampler : PixelSampler, ILaneSampled
     /// <summary>The generated sets this sampler reads.</summary>
     internal uint[][] Sets { get; }
 
+    /// <summary>The first <see cref="IPixelSampler.SamplesPerPixel"/> points of each set laid end to end (<see cref="Pmj02Tables.Flat"/>), made at the first render in lanes.</summary>
+    internal uint[] FlatSets => LazyInitializer.EnsureInitialized(ref _flatSets, () => Pmj02Tables.Flat(Sets, SamplesPerPixel));
+
+    private uint[]? _flatSets;
+
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index) =>
         Pmj02Sampler.Point(Sets, Pmj02Tables.Pixel(CounterHash.PixelKey(x, y, Seed), scramble: false), index);
 
     /// <inheritdoc />
     TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
-        user.Run(() => new Pmj02Sampler.LaneForm<TL>(Sets, Seed, scramble: false));
+        user.Run(() => new Pmj02Sampler.LaneForm<TL>(FlatSets, SamplesPerPixel, Seed, scramble: false));
 }

@@ -1,5 +1,4 @@
 using System.Runtime.CompilerServices;
-using System.Runtime.InteropServices;
 using RayLab.Simd;
 
 namespace RayLab.Sampling;
@@ -31,13 +30,18 @@ public sealed class Pmj02Sampler : PixelSampler, ILaneSampled
     /// <summary>The generated sets this sampler reads.</summary>
     internal uint[][] Sets { get; }
 
+    /// <summary>The first <see cref="IPixelSampler.SamplesPerPixel"/> points of each set laid end to end (<see cref="Pmj02Tables.Flat"/>), made at the first render in lanes.</summary>
+    internal uint[] FlatSets => LazyInitializer.EnsureInitialized(ref _flatSets, () => Pmj02Tables.Flat(Sets, SamplesPerPixel));
+
+    private uint[]? _flatSets;
+
     /// <inheritdoc />
     public override SamplePoint GetSample(int x, int y, int index) =>
         Point(Sets, Pmj02Tables.Pixel(CounterHash.PixelKey(x, y, Seed), scramble: true), index);
 
     /// <inheritdoc />
     TResult ILaneSampled.WithLanes<TL, TU, TResult>(ref TU user) =>
-        user.Run(() => new LaneForm<TL>(Sets, Seed, scramble: true));
+        user.Run(() => new LaneForm<TL>(FlatSets, SamplesPerPixel, Seed, scramble: true));
 
     /// <summary>
     /// Point <paramref name="index"/> of a pixel whose set and keys <see cref="Pmj02Tables.Pixel"/> gave (pmj02's and
@@ -68,74 +72,55 @@ public sealed class Pmj02Sampler : PixelSampler, ILaneSampled
     }
 
     /// <summary>
-    /// The points in lanes, pmj02's and pmj02bn's: each lane's pixel reads its own generated set (a gather, one scalar
-    /// load per lane), then <see cref="Shift"/> runs in lanes, a block of <see cref="PointBlock.Size"/> samples at a time.
+    /// The points in lanes, pmj02's and pmj02bn's: each lane's set and keys are hashed in lanes once per packet
+    /// (<see cref="Pmj02Tables.Pixel"/>), each sample's stored point is gathered from the sets laid end to end
+    /// (<see cref="Pmj02Tables.Flat"/>: one gather for x and one for y, a load per lane where the hardware has no
+    /// gather), then <see cref="Shift"/> runs in lanes.
     /// </summary>
     internal struct LaneForm<TL> : ILaneSampler<TL>
         where TL : struct, ILanes<TL>
     {
-        private readonly float[] _block = PointBlock.Create<TL>();
-        private readonly uint[][] _sets;
-        private readonly uint[][] _laneSets = new uint[TL.Count][];
-        private readonly float[] _keys = new float[2 * TL.Count];
-        private readonly uint _seed;
+        private readonly uint[] _table;
+        private readonly uint _salt;
+        private readonly int _stride;
         private readonly bool _scramble;
+        private TL _first, _kx, _ky;
 
         /// <summary>Lanes for the points of <paramref name="sets"/> under <paramref name="seed"/>.</summary>
-        /// <param name="sets">The variant's sets.</param>
+        /// <param name="sets">The variant's sets laid end to end (<see cref="Pmj02Tables.Flat"/>), pinned.</param>
+        /// <param name="count">The samples per pixel: each set's first <paramref name="count"/> points are in the table.</param>
         /// <param name="seed">The sampler's seed.</param>
         /// <param name="scramble">True for pmj02's digital shift.</param>
-        public LaneForm(uint[][] sets, uint seed, bool scramble)
+        public LaneForm(uint[] sets, int count, uint seed, bool scramble)
         {
-            _sets = sets;
-            _seed = seed;
+            _table = sets;
+            _stride = 2 * count;
+            _salt = PointHash.Salt(seed);
             _scramble = scramble;
         }
 
         /// <inheritdoc />
-        public readonly void BeginPacket(int x0, int row)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void BeginPacket(int x0, int row)
         {
-            Span<uint> keys = MemoryMarshal.Cast<float, uint>(_keys.AsSpan());
-            for (int lane = 0; lane < TL.Count; lane++)
-            {
-                (int set, uint x, uint y) = Pmj02Tables.Pixel(CounterHash.PixelKey(x0 + lane, row, _seed), _scramble);
-                _laneSets[lane] = _sets[set];
-                keys[lane] = x;
-                keys[TL.Count + lane] = y;
-            }
-        }
-
-        /// <inheritdoc />
-        public readonly int Prepare(int start, int end)
-        {
-            int count = TL.Count;
-            int stop = Math.Min(end, start + PointBlock.Size);
-            Span<float> slots = _block.AsSpan(0, 3 * count * (stop - start));
-            Span<uint> bits = MemoryMarshal.Cast<float, uint>(slots);
-            for (int lane = 0; lane < count; lane++)
-            {
-                uint[] set = _laneSets[lane];
-                for (int index = start, slot = lane; index < stop; index++, slot += 3 * count)
-                {
-                    bits[slot] = set[2 * index];
-                    bits[slot + count] = set[(2 * index) + 1];
-                }
-            }
-
-            TL kx = TL.Load(_keys), ky = TL.Load(_keys.AsSpan(count));
-            for (int index = start; index < stop; index++)
-            {
-                Shift<TL, LaneMath<TL>>(TL.Load(slots), TL.Load(slots[count..]), kx, ky, out TL sx, out TL sy);
-                sx.Store(slots);
-                sy.Store(slots[count..]);
-                slots = slots[(3 * count)..];
-            }
-
-            return stop;
+            TL keys = PointHash.PixelKeys<TL, LaneMath<TL>>(x0, row, _salt);
+            Pmj02Tables.Pixel<TL, LaneMath<TL>>(keys, _scramble, out TL set, out _kx, out _ky);
+            _first = TL.MultiplyBits(set, TL.BroadcastBits((uint)_stride));
         }
 
         /// <inheritdoc />
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public readonly void Sample(int index, out TL sx, out TL sy) => PointBlock.Read(_block, index, out sx, out sy);
+        public readonly int Prepare(int start, int end) => end;
+
+        /// <inheritdoc />
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public readonly unsafe void Sample(int index, out TL sx, out TL sy)
+        {
+            TL at = TL.AddBits(_first, TL.BroadcastBits(2u * (uint)index));
+            fixed (uint* table = _table)
+            {
+                Shift<TL, LaneMath<TL>>(TL.GatherBits(table, at), TL.GatherBits(table + 1, at), _kx, _ky, out sx, out sy);
+            }
+        }
     }
 }

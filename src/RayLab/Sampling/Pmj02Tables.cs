@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace RayLab.Sampling;
 
 /// <summary>
@@ -28,7 +30,10 @@ namespace RayLab.Sampling;
 internal static class Pmj02Tables
 {
     /// <summary>Sets per variant; a pixel uses one, chosen by its key.</summary>
-    public const int SetCount = 64;
+    public const int SetCount = 1 << SetBits;
+
+    /// <summary>log₂ <see cref="SetCount"/>: a pixel's set is the top bits of a hash.</summary>
+    private const int SetBits = 6;
 
     /// <summary>Candidates of pmj02bn's best-candidate step.</summary>
     public const int BlueNoiseCandidates = 16;
@@ -99,15 +104,37 @@ internal static class Pmj02Tables
     /// <param name="scramble">True for pmj02's digital shift.</param>
     public static (int Set, uint X, uint Y) Pixel(uint pixelKey, bool scramble)
     {
-        uint h = CounterHash.Hash(pixelKey ^ 0x27d4eb2fu);
-        int set = (int)(((ulong)h * SetCount) >> 32);
-        if (!scramble)
+        Pixel<ScalarLane, ScalarMath>(new ScalarLane(pixelKey, 0), scramble, out ScalarLane set, out ScalarLane x, out ScalarLane y);
+        return ((int)set.Bits, x.Bits, y.Bits);
+    }
+
+    /// <summary><see cref="Pixel(uint, bool)"/> of each lane's key: the set's number and the two shift keys (0 without the scramble).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void Pixel<TV, TM>(TV pixelKey, bool scramble, out TV set, out TV x, out TV y)
+        where TV : struct
+        where TM : IPointMath<TV>
+    {
+        TV h = TM.Hash(TM.Xor(pixelKey, TM.BroadcastBits(0x27d4eb2fu)));
+        set = TM.ShiftRightBits(h, 32 - SetBits);
+        x = scramble ? TM.Hash(h) : TM.BroadcastBits(0);
+        y = scramble ? TM.Hash(x) : TM.BroadcastBits(0);
+    }
+
+    /// <summary>
+    /// The first <paramref name="count"/> points of each of <paramref name="sets"/> laid end to end in one pinned array
+    /// (set s's point i at 2·(s·count + i)), for the lanes' gathers.
+    /// </summary>
+    /// <param name="sets">A variant's sets (<see cref="Sets"/>).</param>
+    /// <param name="count">The points kept of each set, at most a set's length.</param>
+    public static uint[] Flat(uint[][] sets, int count)
+    {
+        uint[] table = GC.AllocateUninitializedArray<uint>(sets.Length * 2 * count, pinned: true);
+        for (int set = 0; set < sets.Length; set++)
         {
-            return (set, 0, 0);
+            sets[set].AsSpan(0, 2 * count).CopyTo(table.AsSpan(set * 2 * count));
         }
 
-        uint x = CounterHash.Hash(h);
-        return (set, x, CounterHash.Hash(x));
+        return table;
     }
 
     /// <summary>The top <paramref name="bits"/> bits of a 32-bit fraction (0 for none).</summary>

@@ -151,6 +151,18 @@ internal interface ILanes<TSelf>
     /// <summary>Mask of lanes where <c>a &lt; b</c>, the lanes' bits compared as signed 32-bit integers.</summary>
     static abstract TSelf LessThanBits(TSelf a, TSelf b);
 
+    /// <summary>
+    /// Lane i's bits set to <c>table[index i]</c>, each lane's bits a signed 32-bit index: a hardware gather where there
+    /// is one (AVX2), else a load per lane. The table must stay where it is (pinned) and hold every index.
+    /// </summary>
+    static abstract unsafe TSelf GatherBits(uint* table, TSelf indices);
+
+    /// <summary>Each lane's two 16-bit halves multiplied by the other's halves, the low 16 bits of each product kept (no carry between halves).</summary>
+    static abstract TSelf MultiplyHalves(TSelf a, TSelf b);
+
+    /// <summary>Each lane's two 16-bit halves shifted right by <paramref name="count"/> (0 … 15) each, zeros shifted in.</summary>
+    static abstract TSelf ShiftRightHalves(TSelf bits, int count);
+
     /// <summary><see cref="Sampling.LowDiscrepancy.ReverseBits"/> of each lane's bits: a byte shuffle and two nibble lookups where the hardware shuffles bytes.</summary>
     static abstract TSelf ReverseBits(TSelf bits);
 

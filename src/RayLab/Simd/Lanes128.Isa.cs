@@ -59,4 +59,13 @@ internal readonly partial record struct Lanes128
 
         return ReverseBitsBySwaps(bits);
     }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static unsafe Lanes128 GatherBits(uint* table, Lanes128 indices)
+    {
+        Vector128<int> i = indices.V.AsInt32();
+        return Avx2.IsSupported
+            ? new(Avx2.GatherVector128(table, i, 4).AsSingle())
+            : new(Vector128.Create(table[i.GetElement(0)], table[i.GetElement(1)], table[i.GetElement(2)], table[i.GetElement(3)]).AsSingle());
+    }
 }

@@ -120,6 +120,12 @@ internal readonly partial record struct Lanes128(Vector128<float> V) : ILanes<La
     public static Lanes128 ShiftRightBits(Lanes128 bits, int count) => new((bits.V.AsUInt32() >>> count).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 MultiplyHalves(Lanes128 a, Lanes128 b) => new((a.V.AsUInt16() * b.V.AsUInt16()).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Lanes128 ShiftRightHalves(Lanes128 bits, int count) => new((bits.V.AsUInt16() >>> count).AsSingle());
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 LessThanBits(Lanes128 a, Lanes128 b) => new(Vector128.LessThan(a.V.AsInt32(), b.V.AsInt32()).AsSingle());
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -58,4 +58,10 @@ internal readonly partial record struct Lanes256
 
         return ReverseBitsBySwaps(bits);
     }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static unsafe Lanes256 GatherBits(uint* table, Lanes256 indices) =>
+        Avx2.IsSupported
+            ? new(Avx2.GatherVector256(table, indices.V.AsInt32(), 4).AsSingle())
+            : new(Vector256.Create(Lanes128.GatherBits(table, new(indices.V.GetLower())).V, Lanes128.GatherBits(table, new(indices.V.GetUpper())).V));
 }

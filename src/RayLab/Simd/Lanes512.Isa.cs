@@ -59,4 +59,8 @@ internal readonly partial record struct Lanes512
 
         return ReverseBitsBySwaps(bits);
     }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static unsafe Lanes512 GatherBits(uint* table, Lanes512 indices) =>
+        new(Vector512.Create(Lanes256.GatherBits(table, new(indices.V.GetLower())).V, Lanes256.GatherBits(table, new(indices.V.GetUpper())).V));
 }

@@ -103,7 +103,83 @@ public class LanesTests
             Expect(TL.ShiftRightBits(x, shift), (p, _) => p >> shift, "ShiftRightBits");
             Expect(TL.ShiftLeftBits(x, 31 - shift), (p, _) => p << (31 - shift), "ShiftLeftBits");
             Expect(TL.ShiftRightBits(x, 31 - shift), (p, _) => p >> (31 - shift), "ShiftRightBits");
+            Expect(TL.MultiplyHalves(x, y), (p, q) => (ushort)(p * q) | ((uint)(ushort)((p >> 16) * (q >> 16)) << 16), "MultiplyHalves");
+            Expect(TL.ShiftRightHalves(x, shift % 16), (p, _) => (uint)((ushort)p >> (shift % 16)) | ((p >> 16 >> (shift % 16)) << 16), "ShiftRightHalves");
+            Expect(Gather<TL>(y), (_, q) => Table[q % (uint)Table.Length], "GatherBits");
         }
+    }
+
+    /// <summary>A pinned table for <see cref="ILanes{TSelf}.GatherBits"/>, each entry unlike its index.</summary>
+    private static readonly uint[] Table = MakeTable();
+
+    private static uint[] MakeTable()
+    {
+        uint[] table = GC.AllocateUninitializedArray<uint>(61, pinned: true);
+        for (int i = 0; i < table.Length; i++)
+        {
+            table[i] = CounterHash.Hash((uint)i);
+        }
+
+        return table;
+    }
+
+    /// <summary>The table's entries at each lane's bits mod its length.</summary>
+    private static unsafe TL Gather<TL>(TL bits)
+        where TL : struct, ILanes<TL>
+    {
+        float[] lanes = new float[TL.Count];
+        bits.Store(lanes);
+        for (int lane = 0; lane < lanes.Length; lane++)
+        {
+            lanes[lane] = BitConverter.UInt32BitsToSingle(Bits(lanes[lane]) % (uint)Table.Length);
+        }
+
+        fixed (uint* table = Table)
+        {
+            return TL.GatherBits(table, TL.Load(lanes));
+        }
+    }
+
+    [Fact]
+    public void PermutationPairsInHalvesAreTheScalarPermutations()
+    {
+        CheckPermutationPairs<Lanes512>();
+        CheckPermutationPairs<Lanes256>();
+        CheckPermutationPairs<Lanes128>();
+    }
+
+    /// <summary>Every element of two permutations per lane, side by side in the lanes' halves, against the scalar permutations, at each length that fits.</summary>
+    private static void CheckPermutationPairs<TL>()
+        where TL : struct, ILanes<TL>
+    {
+        int n = TL.Count;
+        float[] low = new float[n], high = new float[n];
+        for (int length = 1; length <= 1 << 15; length *= 2)
+        {
+            Assert.True(LanePermutationPair<TL>.Fits(length));
+            for (int shift = 0; shift < Words.Length; shift++)
+            {
+                float[] p = AsLanes(n, shift), q = AsLanes(n, shift + 5);
+                var pair = default(LanePermutationPair<TL>);
+                pair.Set(TL.Load(p), TL.Load(q), length);
+                for (int i = 0; i < Math.Min(length, 64); i++)
+                {
+                    int at = (int)((uint)(i * 2654435761u) % (uint)length), other = (at + 1) % length;
+                    TL indices = TL.Xor(LanePermutationPair<TL>.Both((uint)at), LanePermutationPair<TL>.Both((uint)(at ^ other)) & TL.BroadcastBits(0xffff0000u));
+                    TL both = pair.Elements(indices, LanePermutationPair<TL>.Mask(length));
+                    LanePermutationPair<TL>.Low(both).Store(low);
+                    LanePermutationPair<TL>.High(both).Store(high);
+                    for (int lane = 0; lane < n; lane++)
+                    {
+                        Assert.Equal(Permutation.PermutationElement(at, length, Bits(p[lane])), (int)Bits(low[lane]));
+                        Assert.Equal(Permutation.PermutationElement(other, length, Bits(q[lane])), (int)Bits(high[lane]));
+                    }
+                }
+            }
+        }
+
+        Assert.False(LanePermutationPair<TL>.Fits(1 << 16));
+        Assert.False(LanePermutationPair<TL>.Fits(12));
     }
 
     private static void CheckConversions<TL>()
