@@ -100,6 +100,13 @@ internal interface ISquareStack
 internal static class AdaptivePixel
 {
     /// <summary>The pixel's value; <paramref name="samples"/> receives the rays charged to it (corners ¼, edge points ½).</summary>
+    /// <remarks>
+    /// The stack is not cleared (<see cref="SkipLocalsInitAttribute"/>): every field of a square is written before it
+    /// is read (<c>Enter</c> writes a square's place, corners, centre and the edge points its refined quadrants read,
+    /// and each quadrant's value is stored before the square's mean reads it). Cleared, the stack cost the CPU's adaptive
+    /// render of the bench scene about 6 % on one thread.
+    /// </remarks>
+    [SkipLocalsInit]
     public static Intensity Evaluate<TSource>(AdaptiveSampler sampler, ref TSource source, int px, int py, out double samples)
         where TSource : ILatticeSource
     {
