@@ -148,7 +148,7 @@ public static class CompareRunner
         float[] perPixel = clock.Time(EightBitError, () => ImageError.PerPixel(image, exact));
         FlipResult flip = clock.Time(FlipStage, () => Flip.Compute(exact, image, flipOptions));
         int threads = flipOptions.MaxDegreeOfParallelism;
-        double[][] planes = clock.Time(LowPass, () => ErrorLocation.Planes(image, exact));
+        double[][] planes = clock.Time(LowPass, () => ErrorLocation.Planes(image, exact, threads));
         (double low1, double low2) = clock.Time(LowPass, () => (
             ErrorLocation.LowPassRmse(planes, image.Width, image.Height, 1, threads),
             ErrorLocation.LowPassRmse(planes, image.Width, image.Height, 2, threads)));

@@ -97,7 +97,7 @@ internal static class ErrorSpectrumTransform
                 }, _ => { });
             }
 
-            return Rings(power, width, height, planes.Count);
+            return Rings(power, width, height, planes.Count, options);
         }
         finally
         {
@@ -117,17 +117,24 @@ internal static class ErrorSpectrumTransform
         public double[] Im { get; } = new double[length * Vector<double>.Count];
     }
 
-    /// <summary>The periodogram's ring means, mean and low share from the summed |X|² of <paramref name="planeCount"/> planes.</summary>
-    private static ErrorSpectrum Rings(double[] power, int width, int height, int planeCount)
+    /// <summary>
+    /// The periodogram's ring means, mean and low share from the summed |X|² of <paramref name="planeCount"/> planes:
+    /// each row's sums taken by one task, then the rows' added in order, so the result does not depend on the threads.
+    /// </summary>
+    private static ErrorSpectrum Rings(double[] power, int width, int height, int planeCount, ParallelOptions options)
     {
         double scale = (double)width * height * planeCount;
         int rings = (int)Math.Ceiling(Math.Sqrt(0.5) / ErrorLocation.RingWidth) + 1;
-        var ringSum = new double[rings];
-        var ringCount = new int[rings];
-        double total = 0, low = 0;
-        for (int v = 0; v < height; v++)
+        var rowRings = new double[height * rings];
+        var rowCounts = new int[height * rings];
+        var rowTotals = new double[height];
+        var rowLows = new double[height];
+        Parallel.For(0, height, options, v =>
         {
+            Span<double> ringSum = rowRings.AsSpan(v * rings, rings);
+            Span<int> ringCount = rowCounts.AsSpan(v * rings, rings);
             double fv = (v <= height / 2 ? v : v - height) / (double)height;
+            double total = 0, low = 0;
             for (int u = 0; u < width; u++)
             {
                 double fu = (u <= width / 2 ? u : u - width) / (double)width;
@@ -139,10 +146,28 @@ internal static class ErrorSpectrumTransform
                 total += p;
                 low += f <= ErrorLocation.LowFrequencyLimit ? p : 0;
             }
+
+            rowTotals[v] = total;
+            rowLows[v] = low;
+        });
+
+        var sums = new double[rings];
+        var counts = new long[rings];
+        double all = 0, lowAll = 0;
+        for (int v = 0; v < height; v++)
+        {
+            for (int r = 0; r < rings; r++)
+            {
+                sums[r] += rowRings[(v * rings) + r];
+                counts[r] += rowCounts[(v * rings) + r];
+            }
+
+            all += rowTotals[v];
+            lowAll += rowLows[v];
         }
 
-        double[] mean = [.. ringSum.Select((s, r) => ringCount[r] > 0 ? s / ringCount[r] : double.NaN)];
+        double[] mean = [.. sums.Select((s, r) => counts[r] > 0 ? s / counts[r] : double.NaN)];
         int n = width * height;
-        return new ErrorSpectrum(mean, total / n, total > 0 ? low / total : 0);
+        return new ErrorSpectrum(mean, all / n, all > 0 ? lowAll / all : 0);
     }
 }
