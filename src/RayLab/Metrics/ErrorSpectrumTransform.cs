@@ -18,7 +18,7 @@ internal static class ErrorSpectrumTransform
     public static ErrorSpectrum Of(IReadOnlyList<double[]> planes, int width, int height, int threads)
     {
         var options = new ParallelOptions { MaxDegreeOfParallelism = threads };
-        int lanes = Vector<double>.Count, pixels = width * height;
+        int pixels = width * height;
         double[] power = ArrayPool<double>.Shared.Rent(pixels);
         double[] dataRe = ArrayPool<double>.Shared.Rent(pixels);
         double[] dataIm = ArrayPool<double>.Shared.Rent(pixels);
@@ -27,74 +27,8 @@ internal static class ErrorSpectrumTransform
             Array.Clear(power, 0, pixels);
             for (int first = 0; first < planes.Count; first += 2)
             {
-                double[] re = planes[first];
-                double[]? im = first + 1 < planes.Count ? planes[first + 1] : null;
-
-                // Rows, a vector's lanes at a time: lane l holds row y0 + l.
-                Parallel.For(0, (height + lanes - 1) / lanes, options, () => new LaneBuffers(width), (block, _, buffers) =>
-                {
-                    int y0 = block * lanes, count = Math.Min(lanes, height - y0);
-                    Span<double> bufferRe = buffers.Re, bufferIm = buffers.Im;
-                    if (count < lanes)
-                    {
-                        bufferRe.Clear();
-                        bufferIm.Clear();
-                    }
-
-                    for (int l = 0; l < count; l++)
-                    {
-                        int row = (y0 + l) * width;
-                        for (int x = 0; x < width; x++)
-                        {
-                            bufferRe[(x * lanes) + l] = re[row + x];
-                            bufferIm[(x * lanes) + l] = im is null ? 0 : im[row + x];
-                        }
-                    }
-
-                    buffers.Fourier.Transform(bufferRe, bufferIm);
-                    for (int l = 0; l < count; l++)
-                    {
-                        int row = (y0 + l) * width;
-                        for (int x = 0; x < width; x++)
-                        {
-                            dataRe[row + x] = bufferRe[(x * lanes) + l];
-                            dataIm[row + x] = bufferIm[(x * lanes) + l];
-                        }
-                    }
-
-                    return buffers;
-                }, _ => { });
-
-                // Columns, a vector's lanes at a time: lane l holds column x0 + l, a vector load per row.
-                Parallel.For(0, (width + lanes - 1) / lanes, options, () => new LaneBuffers(height), (block, _, buffers) =>
-                {
-                    int x0 = block * lanes, count = Math.Min(lanes, width - x0);
-                    Span<double> bufferRe = buffers.Re, bufferIm = buffers.Im;
-                    if (count < lanes)
-                    {
-                        bufferRe.Clear();
-                        bufferIm.Clear();
-                    }
-
-                    for (int y = 0; y < height; y++)
-                    {
-                        dataRe.AsSpan((y * width) + x0, count).CopyTo(bufferRe.Slice(y * lanes, count));
-                        dataIm.AsSpan((y * width) + x0, count).CopyTo(bufferIm.Slice(y * lanes, count));
-                    }
-
-                    buffers.Fourier.Transform(bufferRe, bufferIm);
-                    for (int y = 0; y < height; y++)
-                    {
-                        Span<double> target = power.AsSpan((y * width) + x0, count);
-                        for (int l = 0; l < count; l++)
-                        {
-                            double a = bufferRe[(y * lanes) + l], b = bufferIm[(y * lanes) + l];
-                            target[l] += (a * a) + (b * b);
-                        }
-                    }
-
-                    return buffers;
-                }, _ => { });
+                TransformRows(planes[first], first + 1 < planes.Count ? planes[first + 1] : null, dataRe, dataIm, width, height, options);
+                PowerOfColumns(dataRe, dataIm, power, width, height, options);
             }
 
             return Rings(power, width, height, planes.Count, options);
@@ -105,6 +39,80 @@ internal static class ErrorSpectrumTransform
             ArrayPool<double>.Shared.Return(dataRe);
             ArrayPool<double>.Shared.Return(dataIm);
         }
+    }
+
+    /// <summary>The rows' transforms of <paramref name="re"/> + i·<paramref name="im"/>, a vector's lanes of rows at a time (lane l holds row y0 + l), into the data planes.</summary>
+    private static void TransformRows(double[] re, double[]? im, double[] dataRe, double[] dataIm, int width, int height, ParallelOptions options)
+    {
+        int lanes = Vector<double>.Count;
+        Parallel.For(0, (height + lanes - 1) / lanes, options, () => new LaneBuffers(width), (block, _, buffers) =>
+        {
+            int y0 = block * lanes, count = Math.Min(lanes, height - y0);
+            Span<double> bufferRe = buffers.Re, bufferIm = buffers.Im;
+            if (count < lanes)
+            {
+                bufferRe.Clear();
+                bufferIm.Clear();
+            }
+
+            for (int l = 0; l < count; l++)
+            {
+                int row = (y0 + l) * width;
+                for (int x = 0; x < width; x++)
+                {
+                    bufferRe[(x * lanes) + l] = re[row + x];
+                    bufferIm[(x * lanes) + l] = im is null ? 0 : im[row + x];
+                }
+            }
+
+            buffers.Fourier.Transform(bufferRe, bufferIm);
+            for (int l = 0; l < count; l++)
+            {
+                int row = (y0 + l) * width;
+                for (int x = 0; x < width; x++)
+                {
+                    dataRe[row + x] = bufferRe[(x * lanes) + l];
+                    dataIm[row + x] = bufferIm[(x * lanes) + l];
+                }
+            }
+
+            return buffers;
+        }, _ => { });
+    }
+
+    /// <summary>The columns' transforms of the data planes, a vector's lanes of columns at a time (a vector load per row), their |X|² added into <paramref name="power"/>.</summary>
+    private static void PowerOfColumns(double[] dataRe, double[] dataIm, double[] power, int width, int height, ParallelOptions options)
+    {
+        int lanes = Vector<double>.Count;
+        Parallel.For(0, (width + lanes - 1) / lanes, options, () => new LaneBuffers(height), (block, _, buffers) =>
+        {
+            int x0 = block * lanes, count = Math.Min(lanes, width - x0);
+            Span<double> bufferRe = buffers.Re, bufferIm = buffers.Im;
+            if (count < lanes)
+            {
+                bufferRe.Clear();
+                bufferIm.Clear();
+            }
+
+            for (int y = 0; y < height; y++)
+            {
+                dataRe.AsSpan((y * width) + x0, count).CopyTo(bufferRe.Slice(y * lanes, count));
+                dataIm.AsSpan((y * width) + x0, count).CopyTo(bufferIm.Slice(y * lanes, count));
+            }
+
+            buffers.Fourier.Transform(bufferRe, bufferIm);
+            for (int y = 0; y < height; y++)
+            {
+                Span<double> target = power.AsSpan((y * width) + x0, count);
+                for (int l = 0; l < count; l++)
+                {
+                    double a = bufferRe[(y * lanes) + l], b = bufferIm[(y * lanes) + l];
+                    target[l] += (a * a) + (b * b);
+                }
+            }
+
+            return buffers;
+        }, _ => { });
     }
 
     /// <summary>A task's transform of one length and its lanes' buffers (length · <see cref="Vector{T}.Count"/> values each).</summary>
