@@ -25,7 +25,6 @@ internal sealed class Fourier
     private readonly Complex[]? _kernel;
     private readonly Complex[]? _work;
     private readonly Complex[] _twiddles;
-    private readonly int[]? _radices;
     private readonly int[]? _laneRadices;
     private double[]? _laneRootsRe;
     private double[]? _laneRootsIm;
@@ -51,9 +50,8 @@ internal sealed class Fourier
             return;
         }
 
-        if (SmallRadices(n) is { } radices)
+        if (_laneRadices is not null)
         {
-            _radices = radices;
             _twiddles = [];
             return;
         }
@@ -82,7 +80,8 @@ internal sealed class Fourier
     /// <summary>Transforms <paramref name="data"/> (length n) in place.</summary>
     public void Transform(Span<Complex> data)
     {
-        if (_radices is not null)
+        // A mixed-radix length (a power of two has radices too, but its scalar form is radix 2)
+        if (_laneRadices is not null && !BitOperations.IsPow2(_n))
         {
             InLaneZero(data);
             return;
