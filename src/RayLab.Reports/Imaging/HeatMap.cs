@@ -1,3 +1,4 @@
+using System.Buffers;
 using System.Globalization;
 using SkiaSharp;
 
@@ -66,18 +67,39 @@ public static class HeatMap
             image.GetRowSpan(y).Fill(new Rgb24(255, 255, 255));
         }
 
-        for (int y = 0; y < height; y++)
-        {
-            Span<Rgb24> row = image.GetRowSpan(y);
-            ReadOnlySpan<float> source = values.Slice(y * width, width);
-            for (int x = 0; x < width; x++)
-            {
-                row[x] = ColorAt(Normalize(source[x], min, max));
-            }
-        }
-
+        Paint(values, width, height, min, max, image);
         DrawLegend(image, width, min, max, title, ColorAt, value => value >= 100 || value == Math.Floor(value) ? "0" : "0.#");
         return image;
+    }
+
+    /// <summary>
+    /// Colours the values into the image's first W columns, in bands of rows in parallel (a 1080p map is 2 million
+    /// colours; each pixel's colour depends on its value alone, so the bytes do not depend on the thread count).
+    /// </summary>
+    private static void Paint(ReadOnlySpan<float> values, int width, int height, float min, float max, Image image)
+    {
+        const int BandRows = 64;
+        float[] copy = ArrayPool<float>.Shared.Rent(values.Length);
+        try
+        {
+            values.CopyTo(copy);
+            Parallel.For(0, (height + BandRows - 1) / BandRows, band =>
+            {
+                for (int y = band * BandRows; y < Math.Min(height, (band + 1) * BandRows); y++)
+                {
+                    Span<Rgb24> row = image.GetRowSpan(y);
+                    ReadOnlySpan<float> source = copy.AsSpan(y * width, width);
+                    for (int x = 0; x < width; x++)
+                    {
+                        row[x] = ColorAt(Normalize(source[x], min, max));
+                    }
+                }
+            });
+        }
+        finally
+        {
+            ArrayPool<float>.Shared.Return(copy);
+        }
     }
 
     /// <summary>The colour for t ∈ [0, 1] on the ramp (dark blue at 0, yellow at 1).</summary>

@@ -36,6 +36,28 @@ public class HeatMapTests
     }
 
     [Fact]
+    public void EveryPixelOfATallMapGetsItsOwnValuesColour()
+    {
+        // Taller than the bands the pixels are coloured in (the last band partial), with a value per pixel.
+        const int W = 37, H = 203;
+        var values = new float[W * H];
+        for (int i = 0; i < values.Length; i++)
+        {
+            values[i] = (i * 7919) % 1000;
+        }
+
+        Image map = HeatMap.Render(values, W, H);
+
+        for (int y = 0; y < H; y++)
+        {
+            for (int x = 0; x < W; x++)
+            {
+                Assert.Equal(HeatMap.ColorAt(values[(y * W) + x] / 999.0), map.GetPixel(x, y));
+            }
+        }
+    }
+
+    [Fact]
     public void TheRampGetsBrighterAndIsClamped()
     {
         static int Brightness(Rgb24 c) => c.R + c.G + c.B;
