@@ -105,22 +105,26 @@ public static class ErrorLocation
             CheckSigma(sigma);
         }
 
-        double[][] planes = Planes(image, exact, maxDegreeOfParallelism);
-        int width = image.Width, height = image.Height;
-        double[] lowPass = [.. sigmas.Select(sigma => LowPassRmse(planes, width, height, sigma, maxDegreeOfParallelism))];
-        return (lowPass, spectrum ? ErrorSpectrumTransform.Of(planes, width, height, maxDegreeOfParallelism) : null);
+        using ErrorPlanes planes = ErrorPlanes.Of(image, exact, maxDegreeOfParallelism);
+        double[] lowPass = [.. sigmas.Select(sigma => LowPassRmse(planes, sigma, maxDegreeOfParallelism))];
+        return (lowPass, spectrum ? Spectrum(planes, maxDegreeOfParallelism) : null);
     }
 
-    /// <summary>The low-pass error of the three channels' error planes (<see cref="Planes"/>), for a caller that measures several σ and the spectrum from one set of planes.</summary>
-    internal static double LowPassRmse(double[][] planes, int width, int height, double sigma, int maxDegreeOfParallelism)
+    /// <summary>The low-pass error of the three channels' error planes, for a caller that measures several σ and the spectrum from one set of planes.</summary>
+    internal static double LowPassRmse(ErrorPlanes planes, double sigma, int maxDegreeOfParallelism)
     {
+        ArgumentNullException.ThrowIfNull(planes);
         CheckSigma(sigma);
-        return Math.Sqrt(planes.Sum(plane => SquaredAfterBlur(plane, width, height, sigma, maxDegreeOfParallelism)) / (3.0 * width * height));
+        int width = planes.Width, height = planes.Height;
+        return Math.Sqrt(planes.Values.Sum(plane => SquaredAfterBlur(plane, width, height, sigma, maxDegreeOfParallelism)) / (3.0 * width * height));
     }
 
-    /// <summary>The error spectrum of the three channels' error planes (<see cref="Planes"/>).</summary>
-    internal static ErrorSpectrum Spectrum(double[][] planes, int width, int height, int maxDegreeOfParallelism) =>
-        ErrorSpectrumTransform.Of(planes, width, height, maxDegreeOfParallelism);
+    /// <summary>The error spectrum of the three channels' error planes.</summary>
+    internal static ErrorSpectrum Spectrum(ErrorPlanes planes, int maxDegreeOfParallelism)
+    {
+        ArgumentNullException.ThrowIfNull(planes);
+        return ErrorSpectrumTransform.Of(planes.Values, planes.Width, planes.Height, maxDegreeOfParallelism);
+    }
 
     private static void CheckSigma(double sigma)
     {
@@ -138,34 +142,6 @@ public static class ErrorLocation
         {
             throw new ArgumentException($"The error plane has {error.Length} values, not {width}×{height}.", nameof(error));
         }
-    }
-
-    /// <summary>The three channels' signed errors in levels, one plane each (rows shared out over the cores: each value is a difference of two bytes).</summary>
-    internal static double[][] Planes(Image image, Image exact, int maxDegreeOfParallelism = -1)
-    {
-        ArgumentNullException.ThrowIfNull(image);
-        ArgumentNullException.ThrowIfNull(exact);
-        if (image.Width != exact.Width || image.Height != exact.Height)
-        {
-            throw new ArgumentException(
-                $"The image is {image.Width}×{image.Height} but the exact image is {exact.Width}×{exact.Height}.", nameof(image));
-        }
-
-        int width = image.Width, pixels = image.Width * image.Height;
-        double[][] planes = [new double[pixels], new double[pixels], new double[pixels]];
-        Parallel.For(0, image.Height, new ParallelOptions { MaxDegreeOfParallelism = maxDegreeOfParallelism }, y =>
-        {
-            ReadOnlySpan<byte> a = image.PixelBytes.Slice(3 * y * width, 3 * width), b = exact.PixelBytes.Slice(3 * y * width, 3 * width);
-            for (int x = 0; x < width; x++)
-            {
-                int p = (y * width) + x;
-                planes[0][p] = a[3 * x] - b[3 * x];
-                planes[1][p] = a[(3 * x) + 1] - b[(3 * x) + 1];
-                planes[2][p] = a[(3 * x) + 2] - b[(3 * x) + 2];
-            }
-        });
-
-        return planes;
     }
 
     /// <summary>
@@ -266,36 +242,45 @@ public static class ErrorLocation
         }
     }
 
-    /// <summary>Output row <paramref name="y"/> of the vertical blur, every column at once (in lanes), the kernel renormalised at the top and bottom.</summary>
+    /// <summary>
+    /// Output row <paramref name="y"/> of the vertical blur, every column at once (in lanes, each lane's taps summed in
+    /// a register in the taps' order), the kernel renormalised at the top and bottom.
+    /// </summary>
     private static void BlurColumns(double[] rows, int width, int height, int y, double[] line, double[] weights, int radius)
     {
-        Array.Clear(line);
+        int top = Math.Max(0, y - radius), bottom = Math.Min(height - 1, y + radius);
         double total = 0;
-        int lanes = Vector<double>.Count;
-        for (int j = Math.Max(0, y - radius); j <= Math.Min(height - 1, y + radius); j++)
+        for (int j = top; j <= bottom; j++)
         {
-            double w = weights[j - y + radius];
-            total += w;
-            ReadOnlySpan<double> row = rows.AsSpan(j * width, width);
-            int x = 0;
-            if (Vector.IsHardwareAccelerated)
-            {
-                var wv = new Vector<double>(w);
-                for (; x + lanes <= width; x += lanes)
-                {
-                    (new Vector<double>(line.AsSpan(x, lanes)) + (wv * new Vector<double>(row.Slice(x, lanes)))).CopyTo(line.AsSpan(x, lanes));
-                }
-            }
+            total += weights[j - y + radius];
+        }
 
-            for (; x < width; x++)
+        int lanes = Vector<double>.Count;
+        int x = 0;
+        if (Vector.IsHardwareAccelerated)
+        {
+            var totalVector = new Vector<double>(total);
+            for (; x + lanes <= width; x += lanes)
             {
-                line[x] += w * row[x];
+                Vector<double> sum = Vector<double>.Zero;
+                for (int j = top; j <= bottom; j++)
+                {
+                    sum += new Vector<double>(weights[j - y + radius]) * new Vector<double>(rows.AsSpan((j * width) + x, lanes));
+                }
+
+                (sum / totalVector).CopyTo(line.AsSpan(x, lanes));
             }
         }
 
-        for (int x = 0; x < width; x++)
+        for (; x < width; x++)
         {
-            line[x] /= total;
+            double sum = 0;
+            for (int j = top; j <= bottom; j++)
+            {
+                sum += weights[j - y + radius] * rows[(j * width) + x];
+            }
+
+            line[x] = sum / total;
         }
     }
 }
