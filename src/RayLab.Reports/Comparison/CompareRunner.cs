@@ -148,11 +148,11 @@ public static class CompareRunner
         float[] perPixel = clock.Time(EightBitError, () => ImageError.PerPixel(image, exact));
         FlipResult flip = clock.Time(FlipStage, () => Flip.Compute(exact, image, flipOptions));
         int threads = flipOptions.MaxDegreeOfParallelism;
-        double[][] planes = clock.Time(LowPass, () => ErrorLocation.Planes(image, exact, threads));
+        using ErrorPlanes planes = clock.Time(LowPass, () => ErrorPlanes.Of(image, exact, threads));
         (double low1, double low2) = clock.Time(LowPass, () => (
-            ErrorLocation.LowPassRmse(planes, image.Width, image.Height, 1, threads),
-            ErrorLocation.LowPassRmse(planes, image.Width, image.Height, 2, threads)));
-        ErrorSpectrum spectrum = clock.Time(SpectrumStage, () => ErrorLocation.Spectrum(planes, image.Width, image.Height, threads));
+            ErrorLocation.LowPassRmse(planes, 1, threads),
+            ErrorLocation.LowPassRmse(planes, 2, threads)));
+        ErrorSpectrum spectrum = clock.Time(SpectrumStage, () => ErrorLocation.Spectrum(planes, threads));
         Image heat = clock.Time(ErrorImages, () => HeatMap.Render(perPixel, image.Width, image.Height, "levels"));
         Image flipMap = clock.Time(ErrorImages, () => FlipMap.RenderWithLegend(flip));
         clock.Time(ImageFiles, () =>

@@ -17,7 +17,7 @@ public sealed class CoreInternalsTests
     {
         ["RayLab.Image.CheckSize"] = "the core's own size rule, so a heat map rejects the sizes an Image would",
         ["RayLab.Sampling.CounterHash"] = "the samplers' counter hash, so the patterns report's random test functions are reproducible the same way",
-        ["RayLab.Metrics.ErrorLocation.Planes"] = "compare makes a picture's error planes once for its two low-pass errors and its spectrum",
+        ["RayLab.Metrics.ErrorPlanes"] = "compare makes a picture's error planes once for its two low-pass errors and its spectrum, in pooled arrays",
         ["RayLab.Metrics.ErrorLocation.LowPassRmse"] = "the low-pass error of planes compare has already made",
         ["RayLab.Metrics.ErrorLocation.Spectrum"] = "the error spectrum of planes compare has already made",
     };
