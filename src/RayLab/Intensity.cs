@@ -25,6 +25,7 @@ public readonly struct Intensity : IEquatable<Intensity>, IAdditionOperators<Int
     /// <param name="r">Red.</param>
     /// <param name="g">Green.</param>
     /// <param name="b">Blue.</param>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Intensity(double r, double g, double b)
     {
         R = NonNegative(r);
@@ -54,12 +55,14 @@ public readonly struct Intensity : IEquatable<Intensity>, IAdditionOperators<Int
     public double B { get; }
 
     /// <summary>Component-wise sum.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Intensity operator +(Intensity a, Intensity b) => new(a.R + b.R, a.G + b.G, a.B + b.B);
 
     /// <summary>Component-wise difference; a component that would be negative becomes 0.</summary>
     public static Intensity operator -(Intensity a, Intensity b) => new(a.R - b.R, a.G - b.G, a.B - b.B);
 
     /// <summary>Scales every component.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Intensity operator *(Intensity a, double s) => new(a.R * s, a.G * s, a.B * s);
 
     /// <summary>Scales every component (scalar on the left).</summary>

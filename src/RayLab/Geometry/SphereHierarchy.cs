@@ -121,6 +121,8 @@ internal sealed class SphereHierarchy
     /// <param name="ray">The ray.</param>
     /// <param name="tMin">The smallest visible parameter.</param>
     /// <param name="tMax">The largest visible parameter.</param>
+    /// <remarks>The traversal stack is not cleared (<see cref="SkipLocalsInitAttribute"/>): an entry is pushed before it is read.</remarks>
+    [SkipLocalsInit]
     public int Nearest(Sphere[] spheres, in Ray ray, double tMin, double tMax)
     {
         var stack = new SpanStack(stackalloc int[Depth + 1]);
@@ -170,12 +172,15 @@ internal sealed class SphereHierarchy
             double lower = tMin * (1 - DepthSlack);
             int nearest = -1;
             double best = tMax;
+            // Copies of the views (not of what they view), which the loop keeps in registers.
+            TTree view = tree;
+            TStack entries = stack;
             int top = 0;
-            stack[top++] = 0;
+            entries[top++] = 0;
             while (top > 0)
             {
-                int self = stack[--top];
-                HierarchyNode node = tree.Node(self);
+                int self = entries[--top];
+                HierarchyNode node = view.Node(self);
                 if (!Enters(node, o, inverse, margin, lower, best * (1 + DepthSlack)))
                 {
                     continue;
@@ -185,8 +190,8 @@ internal sealed class SphereHierarchy
                 {
                     for (int i = node.Start; i < node.Start + node.Count; i++)
                     {
-                        int index = tree.Order(i);
-                        if (tree.TryIntersect(index, ray, tMin, best, out double t) && (t < best || index > nearest))
+                        int index = view.Order(i);
+                        if (view.TryIntersect(index, ray, tMin, best, out double t) && (t < best || index > nearest))
                         {
                             best = t;
                             nearest = index;
@@ -200,13 +205,13 @@ internal sealed class SphereHierarchy
                 bool rightFirst = Component(d, node.Axis) < 0;
                 if (rightFirst)
                 {
-                    stack[top++] = self + 1;
-                    stack[top++] = node.Start;
+                    entries[top++] = self + 1;
+                    entries[top++] = node.Start;
                 }
                 else
                 {
-                    stack[top++] = node.Start;
-                    stack[top++] = self + 1;
+                    entries[top++] = node.Start;
+                    entries[top++] = self + 1;
                 }
             }
 
@@ -224,9 +229,10 @@ internal sealed class SphereHierarchy
         {
             int nearest = -1;
             double best = tMax;
-            for (int k = 0; k < tree.SphereCount; k++)
+            TTree view = tree;
+            for (int k = 0; k < view.SphereCount; k++)
             {
-                if (tree.TryIntersect(k, ray, tMin, best, out double t))
+                if (view.TryIntersect(k, ray, tMin, best, out double t))
                 {
                     best = t;
                     nearest = k;
@@ -238,17 +244,39 @@ internal sealed class SphereHierarchy
     }
 
     /// <summary>The managed tree: this hierarchy's arrays and the scene's spheres.</summary>
-    private readonly struct Tree(SphereHierarchy hierarchy, Sphere[] spheres) : IHierarchyView
+    /// <remarks>The arrays themselves, not the hierarchy: the traversal reads them with no indirection through it.</remarks>
+    private readonly struct Tree : IHierarchyView
     {
-        public double Scale => hierarchy.Scale;
+        private readonly HierarchyNode[] _nodes;
+        private readonly int[] _order;
+        private readonly Sphere[] _spheres;
 
-        public int SphereCount => spheres.Length;
+        /// <summary>The hierarchy's tree over <paramref name="spheres"/>.</summary>
+        public Tree(SphereHierarchy hierarchy, Sphere[] spheres)
+        {
+            _nodes = hierarchy._nodes;
+            _order = hierarchy._order;
+            _spheres = spheres;
+            Scale = hierarchy.Scale;
+        }
 
-        public HierarchyNode Node(int index) => hierarchy._nodes[index];
+        /// <summary>The spheres alone, for <see cref="Traversal.NearestOfAll"/> (no nodes).</summary>
+        public Tree(Sphere[] spheres)
+        {
+            _nodes = null!;
+            _order = null!;
+            _spheres = spheres;
+        }
 
-        public int Order(int position) => hierarchy._order[position];
+        public double Scale { get; }
 
-        public bool TryIntersect(int sphere, in Ray ray, double tMin, double tMax, out double t) => spheres[sphere].TryIntersect(ray, tMin, tMax, out t);
+        public int SphereCount => _spheres.Length;
+
+        public HierarchyNode Node(int index) => _nodes[index];
+
+        public int Order(int position) => _order[position];
+
+        public bool TryIntersect(int sphere, in Ray ray, double tMin, double tMax, out double t) => _spheres[sphere].TryIntersect(ray, tMin, tMax, out t);
     }
 
     /// <summary>A traversal stack on the CPU's stack.</summary>
@@ -304,7 +332,7 @@ internal sealed class SphereHierarchy
 
     /// <summary>The nearest hit over every sphere in index order (the scene's loop).</summary>
     internal static int NearestOfAll(Sphere[] spheres, in Ray ray, double tMin, double tMax) =>
-        Traversal.NearestOfAll(new Tree(null!, spheres), ray, tMin, tMax);
+        Traversal.NearestOfAll(new Tree(spheres), ray, tMin, tMax);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static bool Enters(in HierarchyNode node, Double3 o, Double3 inverse, double margin, double lower, double upper)
@@ -329,11 +357,14 @@ internal sealed class SphereHierarchy
         far = t1 < far ? t1 : far;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double Safe(double component, double tiny) =>
         Math.Abs(component) >= tiny ? component : (component >= 0 ? tiny : -tiny);
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double Component(Double3 v, int axis) => axis switch { 0 => v.X, 1 => v.Y, _ => v.Z };
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double MaxAbs(Double3 v) => Math.Max(Math.Max(Math.Abs(v.X), Math.Abs(v.Y)), Math.Abs(v.Z));
 
     /// <summary>Builds the subtree of items[start..start+count] at nodes[slot]; returns the next free slot.</summary>

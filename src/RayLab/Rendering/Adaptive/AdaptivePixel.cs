@@ -68,17 +68,19 @@ internal readonly struct AdaptiveRule
 }
 
 /// <summary>
-/// One square of <see cref="AdaptivePixel"/>'s explicit stack: where it is, its corners and centre, the edge midpoints
-/// its refined quadrants need, which quadrants are refined (bits 1 top-left, 2 top-right, 4 bottom-left, 8
-/// bottom-right), the next quadrant to take and the values of those taken.
+/// One square of <see cref="AdaptivePixel"/>'s explicit stack: where it is, its 3 × 3 points (corners, the edge
+/// midpoints its refined quadrants need, centre; in rows from the top-left), which quadrants are refined (bits 1
+/// top-left, 2 top-right, 4 bottom-left, 8 bottom-right), the next quadrant to take and the sum of the values of those
+/// taken (<see cref="CombinationRule.Sum"/>, in quadrant order).
 /// </summary>
 internal struct AdaptiveSquare
 {
     public long X0, Y0, Size;
     public int Depth, Refine, Next;
-    public Intensity Tl, Tr, Bl, Br, X;
-    public Intensity Top, Left, Right, Bottom;
-    public Intensity VTl, VTr, VBl, VBr;
+    public Intensity Tl, Top, Tr;
+    public Intensity Left, X, Right;
+    public Intensity Bl, Bottom, Br;
+    public Intensity Sum;
 }
 
 /// <summary>The squares of <see cref="AdaptivePixel"/>'s explicit stack: <see cref="AdaptiveRule.MaxDepth"/> + 1 entries.</summary>
@@ -102,9 +104,9 @@ internal static class AdaptivePixel
     /// <summary>The pixel's value; <paramref name="samples"/> receives the rays charged to it (corners ¼, edge points ½).</summary>
     /// <remarks>
     /// The stack is not cleared (<see cref="SkipLocalsInitAttribute"/>): every field of a square is written before it
-    /// is read (<c>Enter</c> writes a square's place, corners, centre and the edge points its refined quadrants read,
-    /// and each quadrant's value is stored before the square's mean reads it). Cleared, the stack cost the CPU's adaptive
-    /// render of the bench scene about 6 % on one thread.
+    /// is read (a square's place, corners and centre are written as it is started, <c>Enter</c> writes the edge points
+    /// its refined quadrants read, and its first quadrant's value sets its sum before the others add to theirs).
+    /// Cleared, the stack cost the CPU's adaptive render of the bench scene about 6 % on one thread.
     /// </remarks>
     [SkipLocalsInit]
     public static Intensity Evaluate<TSource>(AdaptiveSampler sampler, ref TSource source, int px, int py, out double samples)
@@ -143,121 +145,128 @@ internal static class AdaptivePixel
             return tl == tr && tl == bl && tl == br ? tl : CombinationRule.Mean(tl, tr, bl, br);
         }
 
-        Intensity centre = Centre(ref source, x0 + (size / 2), y0 + (size / 2), ref samples);
-        return Squares(rule, ref source, ref stack, x0, y0, size, tl, tr, bl, br, centre, ref samples);
+        ref AdaptiveSquare pixel = ref stack[0];
+        (pixel.X0, pixel.Y0, pixel.Size, pixel.Depth) = (x0, y0, size, 0);
+        (pixel.Tl, pixel.Tr, pixel.Bl, pixel.Br) = (tl, tr, bl, br);
+        pixel.X = Centre(ref source, x0 + (size / 2), y0 + (size / 2), ref samples);
+        return Squares(rule, ref source, ref stack, ref samples);
     }
 
-    /// <summary>The square's value: its quadrants depth first, each refined one a square on the stack.</summary>
-    // Long: the recursive rule's one body unrolled onto the explicit stack (enter a square, take its next quadrant, return its value).
-    private static Intensity Squares<TSource, TStack>(in AdaptiveRule rule, ref TSource source, ref TStack stack, long x0, long y0, long size,
-        Intensity tl, Intensity tr, Intensity bl, Intensity br, Intensity x, ref double samples)
+    /// <summary>The value of the square at the bottom of the stack (its place, corners and centre set): its quadrants depth first, each refined one a square on the stack.</summary>
+    private static Intensity Squares<TSource, TStack>(in AdaptiveRule rule, ref TSource source, ref TStack stack, ref double samples)
         where TSource : ILatticeSource
         where TStack : ISquareStack, allows ref struct
     {
-        int top = 0;
-        Intensity value = Enter(rule, ref source, ref stack[0], x0, y0, size, 0, tl, tr, bl, br, x, ref samples, out bool entered);
-        if (!entered)
+        if (!Enter(rule, ref source, ref stack[0], ref samples, out Intensity value))
         {
             return value;
         }
 
+        int top = 0;
         while (true)
         {
             ref AdaptiveSquare square = ref stack[top];
-            if (square.Next == 4)
+            int q = square.Next;
+            if (q == 4)
             {
-                value = CombinationRule.Mean(square.VTl, square.VTr, square.VBl, square.VBr);
+                value = CombinationRule.MeanOfSum(square.Sum);
                 if (top == 0)
                 {
                     return value;
                 }
 
                 top--;
-                ref AdaptiveSquare parent = ref stack[top];
-                Store(ref parent, parent.Next - 1, value);
+                Add(ref stack[top], value);
                 continue;
             }
 
-            int q = square.Next++;
+            square.Next = q + 1;
             if ((square.Refine & (1 << q)) == 0)
             {
-                Store(ref square, q, CombinationRule.Quadrant(Corner(square, q), square.X));
+                Add(ref square, CombinationRule.Quadrant(Corner(square, q), square.X));
                 continue;
             }
 
-            long h = square.Size / 2, quarter = square.Size / 4;
-            long cx = square.X0 + ((q & 1) * h), cy = square.Y0 + ((q >> 1) * h);
-            Intensity centre = Centre(ref source, cx + quarter, cy + quarter, ref samples);
-            Intensity ctl = q switch { 0 => square.Tl, 1 => square.Top, 2 => square.Left, _ => square.X };
-            Intensity ctr = q switch { 0 => square.Top, 1 => square.Tr, 2 => square.X, _ => square.Right };
-            Intensity cbl = q switch { 0 => square.Left, 1 => square.X, 2 => square.Bl, _ => square.Bottom };
-            Intensity cbr = q switch { 0 => square.X, 1 => square.Right, 2 => square.Bottom, _ => square.Br };
-            value = Enter(rule, ref source, ref stack[top + 1], cx, cy, h, square.Depth + 1, ctl, ctr, cbl, cbr, centre, ref samples, out entered);
-            if (entered)
+            // The quadrant is the square above on the stack: its place, centre and corners (the square's points).
+            ref AdaptiveSquare quadrant = ref stack[top + 1];
+            long h = square.Size / 2;
+            quadrant.X0 = square.X0 + ((q & 1) * h);
+            quadrant.Y0 = square.Y0 + ((q >> 1) * h);
+            quadrant.Size = h;
+            quadrant.Depth = square.Depth + 1;
+            quadrant.X = Centre(ref source, quadrant.X0 + (h / 2), quadrant.Y0 + (h / 2), ref samples);
+            Corners(square, q, ref quadrant);
+            if (Enter(rule, ref source, ref quadrant, ref samples, out value))
             {
                 top++;
             }
             else
             {
-                Store(ref square, q, value);
+                Add(ref square, value);
             }
         }
     }
 
     /// <summary>
-    /// Starts a square: its refined quadrants and the edge midpoints they need. None refined: false, and the square's
-    /// value (the combination rule over its corners and centre); else true and the square on the stack.
+    /// Starts a square whose place, corners and centre are set: its refined quadrants and the edge midpoints they
+    /// need. None refined: false, and <paramref name="value"/> the square's value (the combination rule over its
+    /// corners and centre); else true, the square ready on the stack.
     /// </summary>
-    private static Intensity Enter<TSource>(in AdaptiveRule rule, ref TSource source, ref AdaptiveSquare square, long x0, long y0, long size, int depth,
-        Intensity tl, Intensity tr, Intensity bl, Intensity br, Intensity x, ref double samples, out bool entered)
+    private static bool Enter<TSource>(in AdaptiveRule rule, ref TSource source, ref AdaptiveSquare square, ref double samples, out Intensity value)
         where TSource : ILatticeSource
     {
-        int refine = Refinements(rule, ref source, x0, y0, size, depth, tl, tr, bl, br, x);
+        int refine = Refinements(rule, ref source, square);
         if (refine == 0)
         {
-            entered = false;
-            return CombinationRule.Mean(
-                CombinationRule.Quadrant(tl, x), CombinationRule.Quadrant(tr, x), CombinationRule.Quadrant(bl, x), CombinationRule.Quadrant(br, x));
+            Intensity x = square.X;
+            value = CombinationRule.Mean(
+                CombinationRule.Quadrant(square.Tl, x), CombinationRule.Quadrant(square.Tr, x),
+                CombinationRule.Quadrant(square.Bl, x), CombinationRule.Quadrant(square.Br, x));
+            return false;
         }
 
-        long h = size / 2;
-        square.X0 = x0;
-        square.Y0 = y0;
-        square.Size = size;
-        square.Depth = depth;
+        long x0 = square.X0, y0 = square.Y0, size = square.Size, h = size / 2;
         square.Refine = refine;
         square.Next = 0;
-        (square.Tl, square.Tr, square.Bl, square.Br, square.X) = (tl, tr, bl, br, x);
         // The edge midpoints a refined quadrant needs; each is traced once and shared by the two quadrants beside it.
         if ((refine & 3) != 0) { square.Top = Take(ref source, x0 + h, y0, ref samples); }
         if ((refine & 5) != 0) { square.Left = Take(ref source, x0, y0 + h, ref samples); }
         if ((refine & 10) != 0) { square.Right = Take(ref source, x0 + size, y0 + h, ref samples); }
         if ((refine & 12) != 0) { square.Bottom = Take(ref source, x0 + h, y0 + size, ref samples); }
-        entered = true;
-        return default;
+        value = default;
+        return true;
     }
 
+    /// <summary>Quadrant <paramref name="q"/>'s corner that is a corner of the square.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static Intensity Corner(in AdaptiveSquare square, int q) => q switch { 0 => square.Tl, 1 => square.Tr, 2 => square.Bl, _ => square.Br };
 
-    private static void Store(ref AdaptiveSquare square, int q, Intensity value)
+    /// <summary>Sets quadrant <paramref name="q"/>'s corners from the square's points.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void Corners(in AdaptiveSquare square, int q, ref AdaptiveSquare quadrant)
     {
         switch (q)
         {
-            case 0: square.VTl = value; break;
-            case 1: square.VTr = value; break;
-            case 2: square.VBl = value; break;
-            default: square.VBr = value; break;
+            case 0: (quadrant.Tl, quadrant.Tr, quadrant.Bl, quadrant.Br) = (square.Tl, square.Top, square.Left, square.X); break;
+            case 1: (quadrant.Tl, quadrant.Tr, quadrant.Bl, quadrant.Br) = (square.Top, square.Tr, square.X, square.Right); break;
+            case 2: (quadrant.Tl, quadrant.Tr, quadrant.Bl, quadrant.Br) = (square.Left, square.X, square.Bl, square.Bottom); break;
+            default: (quadrant.Tl, quadrant.Tr, quadrant.Bl, quadrant.Br) = (square.X, square.Right, square.Bottom, square.Br); break;
         }
     }
+
+    /// <summary>Adds the value of the quadrant just taken (<see cref="AdaptiveSquare.Next"/> − 1) to the square's sum.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void Add(ref AdaptiveSquare square, Intensity value) =>
+        square.Sum = square.Next == 1 ? value : CombinationRule.Sum(square.Sum, value);
 
     // Which quadrants of the square the rule goes into (bits 1 top-left, 2 top-right, 4 bottom-left, 8 bottom-right):
     // all of them above MinDepth, none at MaxDepth, otherwise those whose corner differs from the centre (all when the
     // corners differ among themselves), and with the guard those a silhouette may cross.
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int Refinements<TSource>(in AdaptiveRule s, ref TSource source, long x0, long y0, long size, int depth,
-        Intensity tl, Intensity tr, Intensity bl, Intensity br, Intensity x)
+    private static int Refinements<TSource>(in AdaptiveRule s, ref TSource source, in AdaptiveSquare square)
         where TSource : ILatticeSource
     {
+        int depth = square.Depth;
         if (depth >= s.MaxDepth)
         {
             return 0;
@@ -268,6 +277,7 @@ internal static class AdaptivePixel
             return 15;
         }
 
+        Intensity tl = square.Tl, tr = square.Tr, bl = square.Bl, br = square.Br, x = square.X;
         int refine = (s.Differ(tl, x) ? 1 : 0) | (s.Differ(tr, x) ? 2 : 0) | (s.Differ(bl, x) ? 4 : 0) | (s.Differ(br, x) ? 8 : 0);
         if (refine == 0 && CornersDiffer(s, tl, tr, bl, br))
         {
@@ -278,7 +288,7 @@ internal static class AdaptivePixel
         if (s.Guard)
         {
             // Where the values agree, a silhouette may still cross a quadrant between its traced points.
-            long half = size / 2;
+            long x0 = square.X0, y0 = square.Y0, half = square.Size / 2;
             refine |= (refine & 1) == 0 && source.MayCross(x0, y0, half) ? 1 : 0;
             refine |= (refine & 2) == 0 && source.MayCross(x0 + half, y0, half) ? 2 : 0;
             refine |= (refine & 4) == 0 && source.MayCross(x0, y0 + half, half) ? 4 : 0;
@@ -305,6 +315,7 @@ internal static class AdaptivePixel
         return onColumn && onRow ? 0.25 : onColumn || onRow ? 0.5 : 1;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static Intensity Centre<TSource>(ref TSource source, long lx, long ly, ref double samples)
         where TSource : ILatticeSource
     {
@@ -312,6 +323,7 @@ internal static class AdaptivePixel
         return source.Centre(lx, ly);
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static Intensity Take<TSource>(ref TSource source, long lx, long ly, ref double samples)
         where TSource : ILatticeSource
     {

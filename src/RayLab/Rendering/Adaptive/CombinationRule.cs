@@ -26,5 +26,24 @@ internal static class CombinationRule
     /// <param name="bottomRight">The bottom-right one.</param>
     public static T Mean<T>(T topLeft, T topRight, T bottomLeft, T bottomRight)
         where T : IAdditionOperators<T, T, T>, IMultiplyOperators<T, double, T> =>
-        (topLeft + topRight + bottomLeft + bottomRight) * 0.25;
+        MeanOfSum(Sum(Sum(Sum(topLeft, topRight), bottomLeft), bottomRight));
+
+    /// <summary>
+    /// One step of <see cref="Mean"/>'s sum, which adds the four values in their order (top-left, top-right,
+    /// bottom-left, bottom-right): the sum so far plus the next value. A caller that takes the values one at a time
+    /// sums them so and gets <see cref="Mean"/>'s bits from <see cref="MeanOfSum"/>.
+    /// </summary>
+    /// <typeparam name="T">What is combined.</typeparam>
+    /// <param name="sum">The values before this one, summed in order (the first value alone for the second).</param>
+    /// <param name="value">The next value.</param>
+    public static T Sum<T>(T sum, T value)
+        where T : IAdditionOperators<T, T, T> =>
+        sum + value;
+
+    /// <summary><see cref="Mean"/> from the four values' sum, taken in their order by <see cref="Sum"/>.</summary>
+    /// <typeparam name="T">What is combined.</typeparam>
+    /// <param name="sum">The sum of the four values.</param>
+    public static T MeanOfSum<T>(T sum)
+        where T : IMultiplyOperators<T, double, T> =>
+        sum * 0.25;
 }
