@@ -58,6 +58,24 @@ public class HeatMapTests
     }
 
     [Fact]
+    public void AShortMapIsPaddedWhiteBelowItsData()
+    {
+        const int W = 20, H = 10;
+        var values = new float[W * H];
+        values[0] = 1;
+        Image map = HeatMap.Render(values, W, H);
+
+        Assert.True(map.Height > H, "a map shorter than the legend is padded");
+        for (int y = H; y < map.Height; y++)
+        {
+            for (int x = 0; x < W; x++)
+            {
+                Assert.Equal(new Rgb24(255, 255, 255), map.GetPixel(x, y));
+            }
+        }
+    }
+
+    [Fact]
     public void TheRampGetsBrighterAndIsClamped()
     {
         static int Brightness(Rgb24 c) => c.R + c.G + c.B;
