@@ -160,6 +160,14 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
         private readonly bool _tabled, _wideColumns, _wideRows;
         private TL _columnsLow, _columnsHigh, _rowsLow, _rowsHigh;
         private LanePermutation<TL> _index, _column, _row;
+        private LanePermutationPair<TL> _indexPair;
+
+        /// <summary>
+        /// Where N is a power of two that fits the 16-bit halves (<see cref="LanePermutationPair{TL}.Fits"/>), the
+        /// packet's whole index permutation, sample by sample, lane by lane, as bits (made by <see cref="BeginPacket"/>
+        /// two samples a round); else null, and <see cref="First"/> walks the permutation itself.
+        /// </summary>
+        private readonly float[]? _permuted;
         private TL _jx, _jxMultiplier, _jy, _jyMultiplier;
 
         /// <summary>Lanes for <paramref name="sampler"/>'s points.</summary>
@@ -185,6 +193,7 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
             _tabled = Math.Max(_m, _n) <= MaxTable;
             _wideColumns = _m > 8;
             _wideRows = _n > 8;
+            _permuted = count > 1 && LanePermutationPair<TL>.Fits(count) ? new float[count * TL.Count] : null;
         }
 
         /// <summary>The largest permutation kept as a packed table: 16 entries of 4 bits (m and n ≤ 16: every count below 273).</summary>
@@ -194,7 +203,17 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
         public void BeginPacket(int x0, int row)
         {
             TL p = LaneHash.PixelKeys<TL>(x0, row, _salt);
-            _index.Set(TL.MultiplyBits(p, TL.BroadcastBits(Kensler.IndexSalt)), _all, _scratch);
+            TL indexPattern = TL.MultiplyBits(p, TL.BroadcastBits(Kensler.IndexSalt));
+            if (_permuted is null)
+            {
+                _index.Set(indexPattern, _all, _scratch);
+            }
+            else
+            {
+                _indexPair.Set(indexPattern, indexPattern, _permuted.Length / TL.Count);
+                PermuteIndices(_indexPair, _permuted);
+            }
+
             _column.Set(TL.MultiplyBits(p, TL.BroadcastBits(Kensler.ColumnSalt)), _columns, _scratch);
             _row.Set(TL.MultiplyBits(p, TL.BroadcastBits(Kensler.RowSalt)), _rows, _scratch);
             if (_tabled)
@@ -217,11 +236,29 @@ public sealed class CorrelatedMultiJitteredSampler : PixelSampler, ILaneSampled
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public readonly void Sample(int index, out TL sx, out TL sy) => PointBlock.Read(_block, index, out sx, out sy);
 
+        /// <summary>
+        /// Every element of each lane's index permutation (the same permutation in both halves of <paramref name="pair"/>),
+        /// into <paramref name="permuted"/>: elements i and i + 1 in one round, in the low and the high halves.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+        private static void PermuteIndices(in LanePermutationPair<TL> pair, float[] permuted)
+        {
+            int count = TL.Count, length = permuted.Length / count;
+            TL w = LanePermutationPair<TL>.Mask(length);
+            Span<float> slots = permuted;
+            for (int i = 0; i < length; i += 2)
+            {
+                TL both = pair.Elements(TL.BroadcastBits((uint)i | ((uint)(i + 1) << 16)), w);
+                LanePermutationPair<TL>.Low(both).Store(slots.Slice(i * count, count));
+                LanePermutationPair<TL>.High(both).Store(slots.Slice((i + 1) * count, count));
+            }
+        }
+
         /// <inheritdoc />
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public readonly void First(int index, out TL a, out TL b, out TL c)
         {
-            a = _index.Element(TL.BroadcastBits((uint)index), _all);
+            a = _permuted is null ? _index.Element(TL.BroadcastBits((uint)index), _all) : TL.Load(_permuted.AsSpan(index * TL.Count, TL.Count));
             b = default;
             c = default;
         }

@@ -176,7 +176,40 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
             }
         }
 
-        public int Prepare(int start, int end) => PointBlock.Fill<TL, LaneForm<TL>>(ref this, _block, start, end);
+        public int Prepare(int start, int end)
+        {
+            if (_subColumns is null)
+            {
+                return PointBlock.Fill<TL, LaneForm<TL>>(ref this, _block, start, end);
+            }
+
+            int stop = Math.Min(end, start + PointBlock.Size);
+            FromTables(start, stop);
+            return stop;
+        }
+
+        /// <summary>
+        /// Samples <paramref name="start"/> … <paramref name="stop"/> − 1 into the block (<see cref="PointBlock.Read"/>'s
+        /// layout) straight from the tables <see cref="Tabulate"/> made: the last stage alone, reading its fine columns
+        /// and rows where they lie instead of copying them through the first stage.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+        private readonly void FromTables(int start, int stop)
+        {
+            int count = TL.Count;
+            ReadOnlySpan<float> subColumns = _subColumns.AsSpan(start * count, (stop - start) * count);
+            ReadOnlySpan<float> subRows = _subRows.AsSpan(start * count, (stop - start) * count);
+            Span<float> slots = _block.AsSpan(0, 3 * count * (stop - start));
+            for (int index = start; index < stop; index++)
+            {
+                Last(index, TL.Load(subColumns), TL.Load(subRows), default, out TL sx, out TL sy);
+                sx.Store(slots);
+                sy.Store(slots[count..]);
+                subColumns = subColumns[count..];
+                subRows = subRows[count..];
+                slots = slots[(3 * count)..];
+            }
+        }
 
         public static bool HasMiddle => false;
 
@@ -186,18 +219,10 @@ public sealed class MultiJitteredSampler : GridSampler, ILaneSampled
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public readonly void First(int index, out TL a, out TL b, out TL c)
         {
-            if (_subColumns is not null)
-            {
-                a = TL.Load(_subColumns.AsSpan(index * TL.Count, TL.Count));
-                b = TL.Load(_subRows.AsSpan(index * TL.Count, TL.Count));
-            }
-            else
-            {
-                (int column, int row) = _cells[index];
-                (a, b) = LanePermutation<TL>.Pair(
-                    _columns[column], TL.BroadcastBits((uint)row), _length, _rows[row], TL.BroadcastBits((uint)column), _length);
-            }
-
+            // Only without the tables (Prepare reads those itself).
+            (int column, int row) = _cells[index];
+            (a, b) = LanePermutation<TL>.Pair(
+                _columns[column], TL.BroadcastBits((uint)row), _length, _rows[row], TL.BroadcastBits((uint)column), _length);
             c = default;
         }
 

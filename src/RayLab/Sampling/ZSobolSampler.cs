@@ -1,6 +1,7 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
 using RayLab.Simd;
 
 namespace RayLab.Sampling;
@@ -172,36 +173,54 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
     /// <summary>
     /// The permuted digits of <paramref name="pixel"/> (a Morton code · 2ᵐ), the bits from m up of every index of its
     /// block; only the digits from the highest bit in which it differs from the last pixel asked (<paramref name="digits"/>)
-    /// are permuted again.
+    /// are permuted again. With <paramref name="skip"/> &gt; 0 the lowest <paramref name="skip"/> digits are left out
+    /// (their bits are whatever the cache held: the caller masks them), and the cache remembers that they are stale.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    internal uint Prefix(ulong pixel, DigitCache digits)
+    internal uint Prefix(ulong pixel, DigitCache digits, int skip = 0)
     {
-        int m = Log2Block;
+        int m = Log2Block, from = m + (2 * skip);
         ulong diff = pixel ^ digits.LastPixel;
         ulong prefix = digits.LastPrefix;
         int top = diff == 0 ? -1 : 63 - BitOperations.LeadingZeroCount(diff);
-        for (int shift = m; shift <= Math.Min(top, 30 + m); shift += 2)
+
+        // Digits below ValidFrom were skipped last time: they are permuted again whatever changed.
+        top = Math.Max(top, digits.ValidFrom - 1);
+        for (int shift = from; shift <= Math.Min(top, 30 + m); shift += 2)
         {
             prefix = (prefix & ~(3ul << shift)) | ((ulong)PermuteDigit((int)(pixel >> shift) & 3, pixel >> (shift + 2)) << shift);
         }
 
         digits.LastPixel = pixel;
         digits.LastPrefix = prefix;
+        digits.ValidFrom = from;
         return (uint)prefix;
     }
 
     /// <summary>
     /// The packed permutation (four 2-bit images) that each of <paramref name="higher"/>'s digit prefixes picks, into
-    /// <paramref name="permutations"/>: <see cref="PermutationOf"/> and the table in one pass, the mixer in
-    /// <see cref="Vector{T}"/> lanes of 64 bits (emulated where the hardware lacks 64-bit multiplies). Overwrites
-    /// <paramref name="higher"/> with the permutations' numbers.
+    /// <paramref name="permutations"/>: <see cref="PermutationOf"/> and the table in one pass, the mixer in 64-bit
+    /// vector lanes (512-bit registers where the hardware has them, else <see cref="Vector{T}"/>; emulated where it
+    /// lacks 64-bit multiplies). Overwrites <paramref name="higher"/> with the permutations' numbers.
     /// </summary>
+    /// <remarks>The table is read one entry at a time: a gather of 32-bit entries in lanes is slower here.</remarks>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void PermutationsOf(Span<ulong> higher, Span<uint> permutations)
     {
         int j = 0;
-        if (Vector.IsHardwareAccelerated)
+        ref ulong first = ref MemoryMarshal.GetReference(higher);
+        if (Vector512.IsHardwareAccelerated)
+        {
+            var salt = Vector512.Create(DigitSalt);
+            for (; j <= higher.Length - Vector512<ulong>.Count; j += Vector512<ulong>.Count)
+            {
+                Vector512<ulong> z = Vector512.LoadUnsafe(ref first, (nuint)j) ^ salt;
+                z = (z ^ (z >>> 30)) * 0xbf58476d1ce4e5b9ul;
+                z = (z ^ (z >>> 27)) * 0x94d049bb133111ebul;
+                ((((z ^ (z >>> 31)) >>> 40) * 24ul) >>> 24).StoreUnsafe(ref first, (nuint)j);
+            }
+        }
+        else if (Vector.IsHardwareAccelerated)
         {
             var salt = new Vector<ulong>(DigitSalt);
             var twentyFour = new Vector<ulong>(24ul);
@@ -217,9 +236,12 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
             higher[j] = (ulong)PermutationOf(higher[j], DigitSalt);
         }
 
+        // Every number is below 24 (the mixer's top 24 bits times 24, shifted down by 24): the table needs no bounds check.
+        ref byte table = ref MemoryMarshal.GetArrayDataReference(Permutations);
+        ref uint target = ref MemoryMarshal.GetReference(permutations[..higher.Length]);
         for (j = 0; j < higher.Length; j++)
         {
-            permutations[j] = Permutations[(int)higher[j]];
+            Unsafe.Add(ref target, j) = Unsafe.Add(ref table, (nint)Unsafe.Add(ref first, j));
         }
     }
 
@@ -275,6 +297,18 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
         return (x | (x << 1)) & 0x55555555ul;
     }
 
+    /// <summary><see cref="Spread(uint)"/> in every lane: the low 16 bits moved to the even positions.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static TL Spread<TL>(TL v)
+        where TL : struct, ILanes<TL>
+    {
+        TL x = v & TL.BroadcastBits(0xffffu);
+        x = (x | TL.ShiftLeftBits(x, 8)) & TL.BroadcastBits(0x00ff00ffu);
+        x = (x | TL.ShiftLeftBits(x, 4)) & TL.BroadcastBits(0x0f0f0f0fu);
+        x = (x | TL.ShiftLeftBits(x, 2)) & TL.BroadcastBits(0x33333333u);
+        return (x | TL.ShiftLeftBits(x, 1)) & TL.BroadcastBits(0x55555555u);
+    }
+
     private static byte[] BuildPermutations()
     {
         var result = new List<byte>(24);
@@ -302,6 +336,9 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
         public ulong LastPixel { get; set; } = ulong.MaxValue;
 
         public ulong LastPrefix { get; set; }
+
+        /// <summary>The lowest bit from which <see cref="LastPrefix"/>'s digits are those of <see cref="LastPixel"/> (0: all of them).</summary>
+        public int ValidFrom { get; set; }
     }
 
     /// <inheritdoc />
@@ -309,21 +346,23 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
         user.Run(() => new LaneForm<TL>(this));
 
     /// <summary>
-    /// The points in lanes. At the start of a packet the digit permutations it needs are hashed together
-    /// in 64-bit vector lanes (<see cref="PermutationsOf"/>): those of the sample levels, per lane, and, for a
-    /// packet that starts at a multiple of its width, those of the pixels' low levels, one per pair, quad, … of lanes (the
-    /// higher levels are the same for the whole packet and come from <see cref="Prefix"/>, recomputed only
-    /// from the highest bit that changed since the last packet). The Sobol' indices of all samples are then assembled in
-    /// <typeparamref name="TL"/> lanes: a sample's digit at each level is its permutation's 2-bit image, one shift and
-    /// mask for all lanes. The two Owen-scrambled coordinates are <see cref="SobolSampler"/>'s coordinates (<c>SobolSampler.Coordinates</c>) with the
-    /// image's seeds in every lane.
+    /// The points in lanes. At the start of a packet the lanes' Morton codes are made in
+    /// <typeparamref name="TL"/> lanes and the digit permutations the packet needs are hashed together in 64-bit vector
+    /// lanes and looked up in the table of packed permutations (<see cref="PermutationsOf"/>): those of the
+    /// sample levels, per lane, and, for a packet that starts at a multiple of its width, those of the pixels' low levels,
+    /// one per pair, quad, … of lanes, which a gather per level hands to its lanes (the higher levels are the same for
+    /// the whole packet and come from <see cref="Prefix"/>, recomputed only from the highest bit that changed since the
+    /// last packet). A block of samples' Sobol' indices is then assembled in <typeparamref name="TL"/> lanes (a sample's
+    /// digit at each level is its permutation's 2-bit image, one shift and mask for all lanes) and, in the same loop,
+    /// scrambled into <see cref="SobolSampler"/>'s two Owen-scrambled coordinates (<c>SobolSampler.Coordinates</c>) with
+    /// the image's seeds in every lane.
     /// </summary>
     /// <remarks>
     /// The packet's index work is compiled fully optimised at its first call (as <see cref="PointBlock"/>'s stages are):
     /// left to tiered compilation, its lane operations run as calls until the background compile lands, which on a
     /// loaded machine can be after the warm-up render.
     /// </remarks>
-    private struct LaneForm<TL> : ILaneSampler<TL>, IStagedPoints<TL>
+    private struct LaneForm<TL> : ILaneSampler<TL>
         where TL : struct, ILanes<TL>
     {
         private readonly float[] _block = PointBlock.Create<TL>();
@@ -336,6 +375,12 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
         /// <summary>Each lane's Morton code.</summary>
         private readonly ulong[] _codes;
 
+        /// <summary>Each lane's Morton code, as bits.</summary>
+        private readonly float[] _morton;
+
+        /// <summary>True when m is odd: the samples have a last binary digit, with its flips.</summary>
+        private readonly bool _flips;
+
         /// <summary>
         /// The digit prefixes to hash: the sample levels' groups from the top, lane by lane; then one row of lanes for the
         /// low levels of the pixels' own digits (level by level, one per 2ᵏ⁺¹ lanes); then the flips' groups, lane by lane.
@@ -344,9 +389,6 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
 
         /// <summary>The packed permutations (then the flip bits) of <see cref="_higher"/>, as bits.</summary>
         private readonly float[] _permutations;
-
-        /// <summary>The Sobol' indices, sample by sample, lane by lane, as bits.</summary>
-        private readonly float[] _indices;
 
         private readonly int _groups;
         private readonly TL _xSeed, _ySeed;
@@ -362,23 +404,29 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
             int flips = (m & 1) == 1 ? 1 << (m - 1) : 0;
             _prefixes = new float[TL.Count];
             _codes = new ulong[TL.Count];
+            _morton = new float[TL.Count];
+            _flips = flips > 0;
             _higher = new ulong[(_groups + 1 + flips) * TL.Count];
             _permutations = new float[(_groups + 1 + flips) * TL.Count];
-            _indices = new float[sampler.SamplesPerPixel * TL.Count];
             _xSeed = TL.BroadcastBits(sampler.XSeed);
             _ySeed = TL.BroadcastBits(sampler.YSeed);
         }
 
         /// <inheritdoc />
         [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-        public readonly void BeginPacket(int x0, int row)
+        public readonly unsafe void BeginPacket(int x0, int row)
         {
             int count = TL.Count, m = _sampler.Log2Block;
             Span<uint> prefixes = MemoryMarshal.Cast<float, uint>(_prefixes.AsSpan());
             Span<ulong> codes = _codes.AsSpan(), higher = _higher.AsSpan();
-            for (int lane = 0; lane < count; lane++)
+
+            // The lanes' Morton codes (x, y below 2¹⁶: 32 bits), then as 64-bit hash inputs.
+            TL morton = Spread(TL.SequenceBits((uint)x0)) | TL.ShiftLeftBits(TL.BroadcastBits((uint)Spread((uint)row)), 1);
+            morton.Store(_morton);
+            ReadOnlySpan<uint> narrow = MemoryMarshal.Cast<float, uint>(_morton.AsSpan(0, count));
+            for (int lane = 0; lane < narrow.Length; lane++)
             {
-                codes[lane] = Morton(x0 + lane, row);
+                codes[lane] = narrow[lane];
             }
 
             bool aligned = (x0 & (count - 1)) == 0;
@@ -388,23 +436,29 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
             Span<uint> permutations = MemoryMarshal.Cast<float, uint>(_permutations.AsSpan());
             int permuted = sampleGroups + (aligned ? count - 1 : 0);
             _sampler.PermutationsOf(higher[..permuted], permutations);
-            _sampler.FlipBits(higher[(sampleGroups + count)..], permutations[(sampleGroups + count)..]);
+            if (_flips)
+            {
+                _sampler.FlipBits(higher[(sampleGroups + count)..], permutations[(sampleGroups + count)..]);
+            }
+
             if (aligned)
             {
+                // Lane i's digit at pixel level k (below log₂ count) is the image of its own digit under the permutation
+                // of its group of 2ᵏ⁺¹ lanes, which HashInputs put at first + (i ≫ (k + 1)): a gather per level.
                 ulong low = ((1ul << (2 * levels)) - 1) << m;
-                ulong shared = _sampler.Prefix(codes[0] << m, _digits) & ~low;
-                for (int lane = 0; lane < count; lane++)
+                TL prefix = TL.BroadcastBits(_sampler.Prefix(codes[0] << m, _digits, levels) & (uint)~low);
+                TL lanes = TL.SequenceBits(0), three = TL.BroadcastBits(3u);
+                fixed (float* table = _permutations)
                 {
-                    ulong prefix = shared;
                     for (int k = 0, first = sampleGroups; k < levels; first += count >> (k + 1), k++)
                     {
-                        uint permutation = permutations[first + (lane >> (k + 1))];
-                        int digit = (int)(codes[lane] >> (2 * k)) & 3;
-                        prefix |= (ulong)((permutation >> (2 * digit)) & 3u) << (m + (2 * k));
+                        TL permutation = TL.GatherBits((uint*)table + first, TL.ShiftRightBits(lanes, k + 1));
+                        TL digit = TL.ShiftRightBits(morton, 2 * k) & three;
+                        prefix |= TL.ShiftLeftBits(TL.ShiftRightBitsVariable(permutation, TL.AddBits(digit, digit)) & three, m + (2 * k));
                     }
-
-                    prefixes[lane] = (uint)prefix;
                 }
+
+                prefix.Store(_prefixes);
             }
             else
             {
@@ -414,7 +468,6 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
                 }
             }
 
-            Assemble(m);
         }
 
         /// <summary>
@@ -467,63 +520,59 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
             }
         }
 
-        /// <summary>Every sample's Sobol' index from the prefixes, the permutations and the flips, all lanes at once.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-        private readonly void Assemble(int m)
+        /// <summary>Sample <paramref name="index"/>'s Sobol' index from the prefixes, the permutations and the flips, all lanes at once.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private readonly TL Index(int index, int m, TL prefix, ReadOnlySpan<float> permutations)
         {
             int count = TL.Count;
-            TL prefix = TL.Load(_prefixes);
-            ReadOnlySpan<float> permutations = _permutations;
-            Span<float> indices = _indices;
-            int flips = (_groups + 1) * count;
-            for (int index = 0; index < _sampler.SamplesPerPixel; index++)
+            TL value = prefix;
+            for (int shift = m - 2, first = 0, groups = 1; shift >= (m & 1); shift -= 2, first += groups, groups *= 4)
             {
-                TL value = prefix;
-                for (int shift = m - 2, first = 0, groups = 1; shift >= (m & 1); shift -= 2, first += groups, groups *= 4)
-                {
-                    TL permutation = TL.Load(permutations.Slice((first + (index >> (shift + 2))) * count, count));
-                    int digit = (index >> shift) & 3;
-                    value = PlaceDigit<TL, LaneMath<TL>>(value, permutation, digit, shift);
-                }
-
-                if ((m & 1) == 1)
-                {
-                    TL flip = TL.Load(permutations.Slice(flips + ((index >> 1) * count), count));
-                    value = PlaceFlip<TL, LaneMath<TL>>(value, flip, index);
-                }
-
-                value.Store(indices.Slice(index * count, count));
+                TL permutation = TL.Load(permutations.Slice((first + (index >> (shift + 2))) * count, count));
+                value = PlaceDigit<TL, LaneMath<TL>>(value, permutation, (index >> shift) & 3, shift);
             }
+
+            if ((m & 1) == 1)
+            {
+                TL flip = TL.Load(permutations.Slice(((_groups + 1) * count) + ((index >> 1) * count), count));
+                value = PlaceFlip<TL, LaneMath<TL>>(value, flip, index);
+            }
+
+            return value;
         }
 
         /// <inheritdoc />
-        public int Prepare(int start, int end) => PointBlock.Fill<TL, LaneForm<TL>>(ref this, _block, start, end);
-
-        /// <inheritdoc />
-        public static bool HasMiddle => false;
+        public readonly int Prepare(int start, int end)
+        {
+            int stop = Math.Min(end, start + PointBlock.Size);
+            Scramble(start, stop);
+            return stop;
+        }
 
         /// <inheritdoc />
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public readonly void Sample(int index, out TL sx, out TL sy) => PointBlock.Read(_block, index, out sx, out sy);
 
-        /// <inheritdoc />
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public readonly void First(int index, out TL a, out TL b, out TL c)
+        /// <summary>
+        /// Samples <paramref name="start"/> … <paramref name="stop"/> − 1 into the block (<see cref="PointBlock.Read"/>'s
+        /// layout): each sample's Sobol' indices assembled from the packet's prefixes and permutations, then through the
+        /// two Owen scrambles, one loop.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.NoInlining | MethodImplOptions.AggressiveOptimization)]
+        private readonly void Scramble(int start, int stop)
         {
-            a = TL.Load(_indices.AsSpan(index * TL.Count, TL.Count));
-            b = default;
-            c = default;
+            int count = TL.Count, m = _sampler.Log2Block;
+            ReadOnlySpan<float> permutations = _permutations;
+            Span<float> slots = _block.AsSpan(0, 3 * count * (stop - start));
+            TL prefix = TL.Load(_prefixes), xSeed = _xSeed, ySeed = _ySeed;
+            for (int index = start; index < stop; index++)
+            {
+                SobolSampler.Coordinates<TL, LaneMath<TL>>(Index(index, m, prefix, permutations), xSeed, ySeed, out TL sx, out TL sy);
+                sx.Store(slots);
+                sy.Store(slots[count..]);
+                slots = slots[(3 * count)..];
+            }
         }
-
-        /// <inheritdoc />
-        public readonly void Middle(int index, ref TL a, ref TL b, ref TL c)
-        {
-        }
-
-        /// <inheritdoc />
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public readonly void Last(int index, TL a, TL b, TL c, out TL sx, out TL sy) =>
-            SobolSampler.Coordinates<TL, LaneMath<TL>>(a, _xSeed, _ySeed, out sx, out sy);
     }
 }
 

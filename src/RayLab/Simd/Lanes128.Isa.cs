@@ -47,6 +47,14 @@ internal readonly partial record struct Lanes128
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes128 ReverseBits(Lanes128 bits)
     {
+        if (Gfni.IsSupported && Ssse3.IsSupported)
+        {
+            // The bytes of each lane in reverse order, then each byte's bits reversed by one affine transform over
+            // GF(2): the matrix whose row i picks bit 7 − i.
+            Vector128<byte> reversed = Ssse3.Shuffle(bits.V.AsByte(), Vector128.Create((byte)3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
+            return new(Gfni.GaloisFieldAffineTransform(reversed, Vector128.Create(0x8040201008040201ul).AsByte(), 0).AsSingle());
+        }
+
         if (Ssse3.IsSupported)
         {
             // The bytes of each lane in reverse order, then each byte's bits reversed by its two nibbles' lookups.

@@ -46,6 +46,14 @@ internal readonly partial record struct Lanes256
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes256 ReverseBits(Lanes256 bits)
     {
+        if (Gfni.V256.IsSupported && Avx2.IsSupported)
+        {
+            // The bytes of each lane in reverse order, then each byte's bits reversed by one affine transform over
+            // GF(2): the matrix whose row i picks bit 7 − i.
+            Vector256<byte> reversed = Avx2.Shuffle(bits.V.AsByte(), Vector256.Create((byte)3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12, 3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
+            return new(Gfni.V256.GaloisFieldAffineTransform(reversed, Vector256.Create(0x8040201008040201ul).AsByte(), 0).AsSingle());
+        }
+
         if (Avx2.IsSupported)
         {
             // The bytes of each lane in reverse order, then each byte's bits reversed by its two nibbles' lookups.

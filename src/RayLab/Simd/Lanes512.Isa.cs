@@ -47,6 +47,14 @@ internal readonly partial record struct Lanes512
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Lanes512 ReverseBits(Lanes512 bits)
     {
+        if (Gfni.V512.IsSupported && Avx512BW.IsSupported)
+        {
+            // The bytes of each lane in reverse order, then each byte's bits reversed by one affine transform over
+            // GF(2): the matrix whose row i picks bit 7 − i.
+            Vector512<byte> reversed = Avx512BW.Shuffle(bits.V.AsByte(), Vector512.Create((byte)3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12, 3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12, 3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12, 3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
+            return new(Gfni.V512.GaloisFieldAffineTransform(reversed, Vector512.Create(0x8040201008040201ul).AsByte(), 0).AsSingle());
+        }
+
         if (Avx512BW.IsSupported)
         {
             // The bytes of each lane in reverse order, then each byte's bits reversed by its two nibbles' lookups.
