@@ -58,15 +58,33 @@ public readonly record struct ImageError(double Rmse, double MeanAbsolute, int M
     public static float[] PerPixel(Image image, Image exact)
     {
         CheckSizes(image, exact);
-        ReadOnlySpan<byte> a = image.PixelBytes, b = exact.PixelBytes;
         var errors = new float[(long)image.Width * image.Height];
+        PerPixel(image, exact, errors);
+        return errors;
+    }
+
+    /// <summary>
+    /// The error image (<see cref="PerPixel(Image, Image)"/>) into <paramref name="errors"/>, for a caller that measures
+    /// many images of one size into one buffer.
+    /// </summary>
+    /// <param name="image">The image to judge.</param>
+    /// <param name="exact">The exact image, of the same size.</param>
+    /// <param name="errors">W·H values, row 0 first; every one is written.</param>
+    /// <exception cref="ArgumentException">The sizes differ, or <paramref name="errors"/> does not hold W·H values.</exception>
+    public static void PerPixel(Image image, Image exact, Span<float> errors)
+    {
+        CheckSizes(image, exact);
+        if (errors.Length != (long)image.Width * image.Height)
+        {
+            throw new ArgumentException($"Expected {image.Width}×{image.Height} values, got {errors.Length}.", nameof(errors));
+        }
+
+        ReadOnlySpan<byte> a = image.PixelBytes, b = exact.PixelBytes;
         for (int p = 0; p < errors.Length; p++)
         {
             int i = 3 * p;
             errors[p] = Math.Max(Math.Abs(a[i] - b[i]), Math.Max(Math.Abs(a[i + 1] - b[i + 1]), Math.Abs(a[i + 2] - b[i + 2])));
         }
-
-        return errors;
     }
 
     private static void CheckSizes(Image image, Image exact)

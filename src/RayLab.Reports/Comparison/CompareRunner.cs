@@ -98,6 +98,7 @@ public static class CompareRunner
         clock.Time(ImageFiles, () => exact.Save(Path.Combine(images, "exact.png")));
 
         var image = new Image(width, height);
+        var drawn = new DrawnImages(width, height);
         var results = new CompareResult[cases.Count];
         var estimate = new CompareEstimate(cases, settings.Repeats);
         for (int i = 0; i < cases.Count; i++)
@@ -105,7 +106,7 @@ public static class CompareRunner
             CompareCase c = cases[i] ?? throw new ArgumentException($"cases[{i}] is null", nameof(cases));
             (RenderStatistics stats, List<TimeSpan> times) = TimeRenders(c, renderer, scene, camera, image, settings.Repeats, progress, clock, cancellation);
             long measuring = System.Diagnostics.Stopwatch.GetTimestamp();
-            results[i] = MeasureImage(c, image, exact, clock, flipOptions, (images, errors, flipMaps)) with
+            results[i] = MeasureImage(c, image, exact, clock, flipOptions, drawn, (images, errors, flipMaps)) with
             {
                 Rays = stats.PrimaryRays,
                 RaysPerPixel = stats.PrimaryRays / ((double)width * height),
@@ -142,10 +143,11 @@ public static class CompareRunner
 
     /// <summary>Measures one rendered image against the exact image and saves it, its error image and its FLIP map; the render's fields are the caller's.</summary>
     private static CompareResult MeasureImage(
-        CompareCase c, Image image, Image exact, CompareClock clock, FlipOptions flipOptions, (string Images, string Errors, string Flip) folders)
+        CompareCase c, Image image, Image exact, CompareClock clock, FlipOptions flipOptions, DrawnImages drawn, (string Images, string Errors, string Flip) folders)
     {
         ImageError error = clock.Time(EightBitError, () => ImageError.Measure(image, exact));
-        float[] perPixel = clock.Time(EightBitError, () => ImageError.PerPixel(image, exact));
+        float[] perPixel = drawn.PerPixel;
+        clock.Time(EightBitError, () => ImageError.PerPixel(image, exact, perPixel));
         FlipResult flip = clock.Time(FlipStage, () => Flip.Compute(exact, image, flipOptions));
         int threads = flipOptions.MaxDegreeOfParallelism;
         using ErrorPlanes planes = clock.Time(LowPass, () => ErrorPlanes.Of(image, exact, threads));
@@ -153,8 +155,12 @@ public static class CompareRunner
             ErrorLocation.LowPassRmse(planes, 1, threads),
             ErrorLocation.LowPassRmse(planes, 2, threads)));
         ErrorSpectrum spectrum = clock.Time(SpectrumStage, () => ErrorLocation.Spectrum(planes, threads));
-        Image heat = clock.Time(ErrorImages, () => HeatMap.Render(perPixel, image.Width, image.Height, "levels"));
-        Image flipMap = clock.Time(ErrorImages, () => FlipMap.RenderWithLegend(flip));
+        Image heat = drawn.Heat, flipMap = drawn.FlipMap;
+        clock.Time(ErrorImages, () =>
+        {
+            HeatMap.Render(perPixel, image.Width, image.Height, "levels", heat);
+            FlipMap.RenderWithLegend(flip, flipMap);
+        });
         clock.Time(ImageFiles, () =>
         {
             image.Save(Path.Combine(folders.Images, c.FileStem + ".png"));
@@ -166,6 +172,25 @@ public static class CompareRunner
             MeanFlip = flip.Mean,
             Placement = new ErrorPlacement(low1, low2, spectrum),
         };
+    }
+
+    /// <summary>
+    /// The buffers every picture's error image and FLIP map are drawn into, made once for the run: each is written whole
+    /// per picture, and fresh ones for each of a hundred 1080p pictures would fault in some 20 MB of new pages apiece.
+    /// </summary>
+    private sealed class DrawnImages(int width, int height)
+    {
+        public float[] PerPixel { get; } = new float[width * height];
+
+        public Image Heat { get; } = NewMap(width, height);
+
+        public Image FlipMap { get; } = NewMap(width, height);
+
+        private static Image NewMap(int width, int height)
+        {
+            (int w, int h) = HeatMap.SizeFor(width, height);
+            return new Image(w, h);
+        }
     }
 
     /// <summary>The arguments' checks for <see cref="Measure"/>.</summary>

@@ -10,7 +10,7 @@ namespace RayLab.Reports.Imaging;
 /// </summary>
 public static class FlipMap
 {
-    /// <summary>The colour bar's title in <see cref="RenderWithLegend"/>.</summary>
+    /// <summary>The colour bar's title in <see cref="RenderWithLegend(FlipResult)"/>.</summary>
     public const string LegendTitle = "FLIP";
 
     private static readonly Rgb24[] Magma = CreateMagma();
@@ -45,7 +45,25 @@ public static class FlipMap
     public static Image RenderWithLegend(FlipResult flip)
     {
         ArgumentNullException.ThrowIfNull(flip);
-        var image = new Image(flip.Width + HeatMap.LegendWidth, Math.Max(flip.Height, HeatMap.MinHeight));
+        (int width, int height) = HeatMap.SizeFor(flip.Width, flip.Height);
+        var image = new Image(width, height);
+        RenderWithLegend(flip, image);
+        return image;
+    }
+
+    /// <summary>
+    /// <see cref="RenderWithLegend(FlipResult)"/> into <paramref name="image"/> (of <see cref="HeatMap.SizeFor"/> the
+    /// map's size), every pixel of which is written: for a caller that draws many maps of one size into one image.
+    /// </summary>
+    internal static void RenderWithLegend(FlipResult flip, Image image)
+    {
+        ArgumentNullException.ThrowIfNull(flip);
+        ArgumentNullException.ThrowIfNull(image);
+        if ((image.Width, image.Height) != HeatMap.SizeFor(flip.Width, flip.Height))
+        {
+            throw new ArgumentException($"A {flip.Width}×{flip.Height} map is drawn into a {HeatMap.SizeFor(flip.Width, flip.Height)} image, not {image.Width}×{image.Height}.", nameof(image));
+        }
+
         for (int y = flip.Height; y < image.Height; y++)
         {
             image.GetRowSpan(y).Fill(new Rgb24(255, 255, 255));
@@ -53,7 +71,6 @@ public static class FlipMap
 
         Paint(flip, image);
         HeatMap.DrawLegend(image, flip.Width, 0, 1, LegendTitle, MagmaAt, _ => "0.##");
-        return image;
     }
 
     /// <summary>Colours the map into the image's first W columns, in bands of rows in parallel (a 1080p map is 2 million look-ups).</summary>

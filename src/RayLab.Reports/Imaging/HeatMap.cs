@@ -45,11 +45,29 @@ public static class HeatMap
     /// <exception cref="ArgumentException">The span's length is not W·H, or a value is not finite.</exception>
     public static Image Render(ReadOnlySpan<float> values, int width, int height, string title)
     {
+        Image.CheckSize(width, height);
+        var image = new Image(width + LegendWidth, Math.Max(height, MinHeight));
+        Render(values, width, height, title, image);
+        return image;
+    }
+
+    /// <summary>
+    /// <see cref="Render(ReadOnlySpan{float}, int, int, string)"/> into <paramref name="image"/>, every pixel of which is
+    /// written: for a caller that draws many maps of one size into one image (<see cref="SizeFor"/>).
+    /// </summary>
+    internal static void Render(ReadOnlySpan<float> values, int width, int height, string title, Image image)
+    {
         ArgumentNullException.ThrowIfNull(title);
+        ArgumentNullException.ThrowIfNull(image);
         Image.CheckSize(width, height);
         if (values.Length != (long)width * height)
         {
             throw new ArgumentException($"Expected {width}×{height} values, got {values.Length}.", nameof(values));
+        }
+
+        if ((image.Width, image.Height) != SizeFor(width, height))
+        {
+            throw new ArgumentException($"A {width}×{height} map is drawn into a {SizeFor(width, height)} image, not {image.Width}×{image.Height}.", nameof(image));
         }
 
         float min = float.PositiveInfinity, max = float.NegativeInfinity;
@@ -65,7 +83,6 @@ public static class HeatMap
         }
 
         // The data's rows are painted and the legend drawn over its strip; only a short map's padding is filled white.
-        var image = new Image(width + LegendWidth, Math.Max(height, MinHeight));
         for (int y = height; y < image.Height; y++)
         {
             image.GetRowSpan(y).Fill(new Rgb24(255, 255, 255));
@@ -73,8 +90,10 @@ public static class HeatMap
 
         Paint(values, width, height, min, max, image);
         DrawLegend(image, width, min, max, title, ColorAt, value => value >= 100 || value == Math.Floor(value) ? "0" : "0.#");
-        return image;
     }
+
+    /// <summary>The size of a map of W×H values with its legend: W + <see cref="LegendWidth"/> wide, at least <see cref="MinHeight"/> high.</summary>
+    internal static (int Width, int Height) SizeFor(int width, int height) => (width + LegendWidth, Math.Max(height, MinHeight));
 
     /// <summary>
     /// Colours the values into the image's first W columns, in bands of rows in parallel (a 1080p map is 2 million

@@ -68,6 +68,12 @@ public sealed class FlipMapTests
         Assert.True(coloured > 20, "the square that differs shows");
         Assert.Equal(new Rgb24(255, 255, 255), legend.GetPixel(0, legend.Height - 1)); // padded below the short map
 
+        // Drawn into an image that held another map (the compare report's one image for every picture): the same bytes.
+        var reused = new Image(legend.Width, legend.Height);
+        FlipMap.RenderWithLegend(Flip.Compute(reference, reference), reused);
+        FlipMap.RenderWithLegend(flip, reused);
+        Assert.Equal(legend.PixelBytes.ToArray(), reused.PixelBytes.ToArray());
+
         var bar = new HashSet<Rgb24>();
         for (int y = 0; y < legend.Height; y++)
         {

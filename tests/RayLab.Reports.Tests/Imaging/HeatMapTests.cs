@@ -58,6 +58,27 @@ public class HeatMapTests
     }
 
     [Fact]
+    public void AMapDrawnIntoAnImageThatHeldAnotherIsTheFreshMap()
+    {
+        const int W = 30, H = 12;
+        var first = new float[W * H];
+        var second = new float[W * H];
+        for (int i = 0; i < first.Length; i++)
+        {
+            first[i] = i % 17;
+            second[i] = (i * 5) % 3;
+        }
+
+        (int width, int height) = HeatMap.SizeFor(W, H);
+        var reused = new Image(width, height);
+        HeatMap.Render(first, W, H, "levels", reused);
+        HeatMap.Render(second, W, H, "levels", reused);
+
+        Assert.Equal(HeatMap.Render(second, W, H, "levels").PixelBytes.ToArray(), reused.PixelBytes.ToArray());
+        Assert.Equal("image", Assert.Throws<ArgumentException>(() => HeatMap.Render(second, W, H, "levels", new Image(width, height + 1))).ParamName);
+    }
+
+    [Fact]
     public void AShortMapIsPaddedWhiteBelowItsData()
     {
         const int W = 20, H = 10;

@@ -70,6 +70,11 @@ public class ImageErrorTests
         Assert.Equal(2.0 / 8, e.FractionOverOneLevel, 12);
         float[] map = ImageError.PerPixel(image, exact);
         Assert.Equal([2f, 0, 0, 0, 0, 0, 0, 255f], map);
+
+        // Into a caller's buffer, every value written over what it held.
+        float[] into = [.. Enumerable.Repeat(-7f, 8)];
+        ImageError.PerPixel(image, exact, into);
+        Assert.Equal(map, into);
     }
 
     [Fact]
@@ -77,6 +82,8 @@ public class ImageErrorTests
     {
         Assert.Equal("image", Assert.Throws<ArgumentException>(() => ImageError.Measure(new Image(4, 2), new Image(2, 4))).ParamName);
         Assert.Equal("image", Assert.Throws<ArgumentException>(() => ImageError.PerPixel(new Image(4, 2), new Image(4, 3))).ParamName);
+        Assert.Equal("image", Assert.Throws<ArgumentException>(() => ImageError.PerPixel(new Image(4, 2), new Image(4, 3), new float[8])).ParamName);
+        Assert.Equal("errors", Assert.Throws<ArgumentException>(() => ImageError.PerPixel(new Image(4, 2), new Image(4, 2), new float[9])).ParamName);
     }
 
     /// <summary>Levels in 10..240, every channel and pixel different, so ±2 never wraps.</summary>
