@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using RayLab.Simd;
 
 namespace RayLab.Sampling;
@@ -74,13 +75,13 @@ public sealed class Pmj02Sampler : PixelSampler, ILaneSampled
     /// <summary>
     /// The points in lanes, pmj02's and pmj02bn's: each lane's set and keys are hashed in lanes once per packet
     /// (<see cref="Pmj02Tables.Pixel"/>), each sample's stored point is gathered from the sets laid end to end
-    /// (<see cref="Pmj02Tables.Flat"/>: one gather for x and one for y, a load per lane where the hardware has no
-    /// gather), then <see cref="Shift"/> runs in lanes.
+    /// (<see cref="Pmj02Tables.Flat"/>: each point's x and y, side by side, as one 64-bit gathered element, a load
+    /// per lane where the hardware has no gather), then <see cref="Shift"/> runs in lanes.
     /// </summary>
-    internal struct LaneForm<TL> : ILaneSampler<TL>
+    internal unsafe struct LaneForm<TL> : ILaneSampler<TL>
         where TL : struct, ILanes<TL>
     {
-        private readonly uint[] _table;
+        private readonly uint* _table;
         private readonly uint _salt;
         private readonly int _stride;
         private readonly bool _scramble;
@@ -93,7 +94,7 @@ public sealed class Pmj02Sampler : PixelSampler, ILaneSampled
         /// <param name="scramble">True for pmj02's digital shift.</param>
         public LaneForm(uint[] sets, int count, uint seed, bool scramble)
         {
-            _table = sets;
+            _table = (uint*)Unsafe.AsPointer(ref MemoryMarshal.GetArrayDataReference(sets));   // pinned, and the sampler keeps it
             _stride = 2 * count;
             _salt = PointHash.Salt(seed);
             _scramble = scramble;
@@ -114,13 +115,10 @@ public sealed class Pmj02Sampler : PixelSampler, ILaneSampled
 
         /// <inheritdoc />
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public readonly unsafe void Sample(int index, out TL sx, out TL sy)
+        public readonly void Sample(int index, out TL sx, out TL sy)
         {
-            TL at = TL.AddBits(_first, TL.BroadcastBits(2u * (uint)index));
-            fixed (uint* table = _table)
-            {
-                Shift<TL, LaneMath<TL>>(TL.GatherBits(table, at), TL.GatherBits(table + 1, at), _kx, _ky, out sx, out sy);
-            }
+            TL.GatherPairs(_table, TL.AddBits(_first, TL.BroadcastBits(2u * (uint)index)), out TL x, out TL y);
+            Shift<TL, LaneMath<TL>>(x, y, _kx, _ky, out sx, out sy);
         }
     }
 }

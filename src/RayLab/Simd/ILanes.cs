@@ -157,6 +157,14 @@ internal interface ILanes<TSelf>
     /// </summary>
     static abstract unsafe TSelf GatherBits(uint* table, TSelf indices);
 
+    /// <summary>
+    /// Lane i's bits of <paramref name="first"/> set to <c>table[index i]</c> and of <paramref name="second"/> to
+    /// <c>table[index i + 1]</c>: one 64-bit gather per pair where there is one (AVX2), half as many loads as two
+    /// <see cref="GatherBits"/>, then the pairs split into the two. The table must stay where it is (pinned) and hold
+    /// every index and the one after it.
+    /// </summary>
+    static abstract unsafe void GatherPairs(uint* table, TSelf indices, out TSelf first, out TSelf second);
+
     /// <summary>Each lane's two 16-bit halves multiplied by the other's halves, the low 16 bits of each product kept (no carry between halves).</summary>
     static abstract TSelf MultiplyHalves(TSelf a, TSelf b);
 

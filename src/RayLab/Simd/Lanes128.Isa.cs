@@ -76,4 +76,22 @@ internal readonly partial record struct Lanes128
             ? new(Avx2.GatherVector128(table, i, 4).AsSingle())
             : new(Vector128.Create(table[i.GetElement(0)], table[i.GetElement(1)], table[i.GetElement(2)], table[i.GetElement(3)]).AsSingle());
     }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static unsafe void GatherPairs(uint* table, Lanes128 indices, out Lanes128 first, out Lanes128 second)
+    {
+        Vector128<int> i = indices.V.AsInt32();
+        if (Avx2.IsSupported)
+        {
+            // Pairs of lanes 0, 1 and of lanes 2, 3, each pair one 64-bit element, split into the evens and the odds.
+            Vector128<float> low = Avx2.GatherVector128((ulong*)table, i, 4).AsSingle();
+            Vector128<float> high = Avx2.GatherVector128((ulong*)table, Sse2.Shuffle(i, 0b11_10_11_10), 4).AsSingle();
+            first = new(Sse.Shuffle(low, high, 0b10_00_10_00));
+            second = new(Sse.Shuffle(low, high, 0b11_01_11_01));
+            return;
+        }
+
+        first = GatherBits(table, indices);
+        second = GatherBits(table + 1, indices);
+    }
 }

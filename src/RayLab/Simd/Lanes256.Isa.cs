@@ -72,4 +72,30 @@ internal readonly partial record struct Lanes256
         Avx2.IsSupported
             ? new(Avx2.GatherVector256(table, indices.V.AsInt32(), 4).AsSingle())
             : new(Vector256.Create(Lanes128.GatherBits(table, new(indices.V.GetLower())).V, Lanes128.GatherBits(table, new(indices.V.GetUpper())).V));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static unsafe void GatherPairs(uint* table, Lanes256 indices, out Lanes256 first, out Lanes256 second)
+    {
+        if (Avx2.IsSupported)
+        {
+            Vector256<float> low = Avx2.GatherVector256((ulong*)table, indices.V.GetLower().AsInt32(), 4).AsSingle();
+            Vector256<float> high = Avx2.GatherVector256((ulong*)table, indices.V.GetUpper().AsInt32(), 4).AsSingle();
+            Split(low, high, out first, out second);
+            return;
+        }
+
+        Lanes128.GatherPairs(table, new(indices.V.GetLower()), out Lanes128 firstLow, out Lanes128 secondLow);
+        Lanes128.GatherPairs(table, new(indices.V.GetUpper()), out Lanes128 firstHigh, out Lanes128 secondHigh);
+        first = new(Vector256.Create(firstLow.V, firstHigh.V));
+        second = new(Vector256.Create(secondLow.V, secondHigh.V));
+    }
+
+    /// <summary>Lanes 0 … 3 and 4 … 7 as (first, second) pairs of 32 bits in <paramref name="low"/> and <paramref name="high"/>, split into the firsts and the seconds (AVX2).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void Split(Vector256<float> low, Vector256<float> high, out Lanes256 first, out Lanes256 second)
+    {
+        // Within each 128-bit half: low's two pairs, then high's; the 64-bit order 0, 2, 1, 3 puts lanes 0 … 7 in place.
+        first = new(Avx2.Permute4x64(Avx.Shuffle(low, high, 0b10_00_10_00).AsDouble(), 0b11_01_10_00).AsSingle());
+        second = new(Avx2.Permute4x64(Avx.Shuffle(low, high, 0b11_01_11_01).AsDouble(), 0b11_01_10_00).AsSingle());
+    }
 }

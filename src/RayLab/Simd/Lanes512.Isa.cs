@@ -71,4 +71,27 @@ internal readonly partial record struct Lanes512
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static unsafe Lanes512 GatherBits(uint* table, Lanes512 indices) =>
         new(Vector512.Create(Lanes256.GatherBits(table, new(indices.V.GetLower())).V, Lanes256.GatherBits(table, new(indices.V.GetUpper())).V));
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static unsafe void GatherPairs(uint* table, Lanes512 indices, out Lanes512 first, out Lanes512 second)
+    {
+        if (Avx2.IsSupported && Avx512F.IsSupported)
+        {
+            // Four 64-bit gathers of four pairs each, lanes 0 … 7 and 8 … 15 side by side, then one two-source permute
+            // each for the firsts (the even 32-bit elements) and the seconds (the odd ones).
+            Vector256<int> low = indices.V.GetLower().AsInt32(), high = indices.V.GetUpper().AsInt32();
+            Vector512<uint> pairsLow = Vector512.Create(
+                Avx2.GatherVector256((ulong*)table, low.GetLower(), 4), Avx2.GatherVector256((ulong*)table, low.GetUpper(), 4)).AsUInt32();
+            Vector512<uint> pairsHigh = Vector512.Create(
+                Avx2.GatherVector256((ulong*)table, high.GetLower(), 4), Avx2.GatherVector256((ulong*)table, high.GetUpper(), 4)).AsUInt32();
+            first = new(Avx512F.PermuteVar16x32x2(pairsLow, Vector512.Create(0u, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30), pairsHigh).AsSingle());
+            second = new(Avx512F.PermuteVar16x32x2(pairsLow, Vector512.Create(1u, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31), pairsHigh).AsSingle());
+            return;
+        }
+
+        Lanes256.GatherPairs(table, new(indices.V.GetLower()), out Lanes256 firstLow, out Lanes256 secondLow);
+        Lanes256.GatherPairs(table, new(indices.V.GetUpper()), out Lanes256 firstHigh, out Lanes256 secondHigh);
+        first = new(Vector512.Create(firstLow.V, firstHigh.V));
+        second = new(Vector512.Create(secondLow.V, secondHigh.V));
+    }
 }

@@ -106,6 +106,9 @@ public class LanesTests
             Expect(TL.MultiplyHalves(x, y), (p, q) => (ushort)(p * q) | ((uint)(ushort)((p >> 16) * (q >> 16)) << 16), "MultiplyHalves");
             Expect(TL.ShiftRightHalves(x, shift % 16), (p, _) => (uint)((ushort)p >> (shift % 16)) | ((p >> 16 >> (shift % 16)) << 16), "ShiftRightHalves");
             Expect(Gather<TL>(y), (_, q) => Table[q % (uint)Table.Length], "GatherBits");
+            GatherPairs(y, out TL first, out TL second);
+            Expect(first, (_, q) => Table[q % (uint)(Table.Length - 1)], "GatherPairs (first)");
+            Expect(second, (_, q) => Table[(q % (uint)(Table.Length - 1)) + 1], "GatherPairs (second)");
         }
     }
 
@@ -137,6 +140,23 @@ public class LanesTests
         fixed (uint* table = Table)
         {
             return TL.GatherBits(table, TL.Load(lanes));
+        }
+    }
+
+    /// <summary>The table's entries at each lane's bits mod its length less one, and the entries after them.</summary>
+    private static unsafe void GatherPairs<TL>(TL bits, out TL first, out TL second)
+        where TL : struct, ILanes<TL>
+    {
+        float[] lanes = new float[TL.Count];
+        bits.Store(lanes);
+        for (int lane = 0; lane < lanes.Length; lane++)
+        {
+            lanes[lane] = BitConverter.UInt32BitsToSingle(Bits(lanes[lane]) % (uint)(Table.Length - 1));
+        }
+
+        fixed (uint* table = Table)
+        {
+            TL.GatherPairs(table, TL.Load(lanes), out first, out second);
         }
     }
 
