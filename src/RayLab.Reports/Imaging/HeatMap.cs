@@ -19,9 +19,6 @@ public static class HeatMap
     private const int Gap = 6, BarWidth = 12, Top = 28, BottomMargin = 8;
     private const float TextSize = 12;
 
-    /// <summary>The bits of a band's colour table's index: 2^8 entries.</summary>
-    private const int CacheBits = 8, CacheSize = 1 << CacheBits;
-
     // Viridis, sampled at five stops: dark blue (few rays) to yellow (many).
     private static readonly (double R, double G, double B)[] Ramp =
     [
@@ -46,7 +43,8 @@ public static class HeatMap
     public static Image Render(ReadOnlySpan<float> values, int width, int height, string title)
     {
         Image.CheckSize(width, height);
-        var image = new Image(width + LegendWidth, Math.Max(height, MinHeight));
+        (int imageWidth, int imageHeight) = SizeFor(width, height);
+        var image = new Image(imageWidth, imageHeight);
         Render(values, width, height, title, image);
         return image;
     }
@@ -97,10 +95,7 @@ public static class HeatMap
 
     /// <summary>
     /// Colours the values into the image's first W columns, in bands of rows in parallel (a 1080p map is 2 million
-    /// colours; each pixel's colour depends on its value alone, so the bytes do not depend on the thread count). A map
-    /// holds few distinct values (an 8-bit error map at most 256), so each band keeps the colours of the values it has
-    /// met in a small table keyed by the value's bits: a hit is a look-up instead of the ramp's arithmetic, and a miss
-    /// computes the same colour.
+    /// colours; each pixel's colour depends on its value alone, so the bytes do not depend on the thread count).
     /// </summary>
     private static void Paint(ReadOnlySpan<float> values, int width, int height, float min, float max, Image image)
     {
@@ -111,25 +106,13 @@ public static class HeatMap
             values.CopyTo(copy);
             Parallel.For(0, (height + BandRows - 1) / BandRows, band =>
             {
-                // The bits of a NaN, which no value has (every value is finite), mark an empty entry.
-                Span<uint> keys = stackalloc uint[CacheSize];
-                Span<Rgb24> colours = stackalloc Rgb24[CacheSize];
-                keys.Fill(uint.MaxValue);
                 for (int y = band * BandRows; y < Math.Min(height, (band + 1) * BandRows); y++)
                 {
                     Span<Rgb24> row = image.GetRowSpan(y);
                     ReadOnlySpan<float> source = copy.AsSpan(y * width, width);
                     for (int x = 0; x < width; x++)
                     {
-                        uint bits = BitConverter.SingleToUInt32Bits(source[x]);
-                        int entry = (int)((bits * 2654435761u) >> (32 - CacheBits));
-                        if (keys[entry] != bits)
-                        {
-                            keys[entry] = bits;
-                            colours[entry] = ColorAt(Normalize(source[x], min, max));
-                        }
-
-                        row[x] = colours[entry];
+                        row[x] = ColorAt(Normalize(source[x], min, max));
                     }
                 }
             });

@@ -88,12 +88,6 @@ internal static class ErrorSpectrumTransform
         {
             int x0 = block * lanes, count = Math.Min(lanes, width - x0);
             Span<double> bufferRe = buffers.Re, bufferIm = buffers.Im;
-            if (count < lanes)
-            {
-                bufferRe.Clear();
-                bufferIm.Clear();
-            }
-
             if (count == lanes)
             {
                 // A whole vector of columns: one load and one store a row each way (the same sums, lane by lane).
@@ -115,6 +109,9 @@ internal static class ErrorSpectrumTransform
                 return buffers;
             }
 
+            // The last, partial block: the lanes past the image's columns transform zeros.
+            bufferRe.Clear();
+            bufferIm.Clear();
             for (int y = 0; y < height; y++)
             {
                 dataRe.AsSpan((y * width) + x0, count).CopyTo(bufferRe.Slice(y * lanes, count));
