@@ -1,15 +1,13 @@
 using BenchmarkDotNet.Attributes;
 using RayLab.Metrics;
-using RayLab.Sampling;
 
 namespace RayLab.Benchmarks;
 
 /// <summary>
 /// Where in the picture the error lies, per picture of <c>raylab compare</c> at 1920×1080 on 2 threads: the low-pass
 /// errors (<see cref="ErrorLocation.LowPassRmse(Image, Image, double, int)"/>, σ = 1 and 2 px) and the error spectrum
-/// (<see cref="ErrorLocation.Spectrum(Image, Image, int)"/>), each from its own error planes. The pair: the two-sphere
-/// bench scene rendered jittered 16 spp (the reference) against regular 1 spp (the test); the work does not depend on
-/// the pictures' content.
+/// (<see cref="ErrorLocation.Spectrum(Image, Image, int)"/>), each from its own error planes, on the
+/// <see cref="BenchPair"/>.
 /// </summary>
 [MemoryDiagnoser]
 [SimpleJob(launchCount: 1, warmupCount: 3, iterationCount: 15)]
@@ -21,9 +19,8 @@ public class ErrorLocationBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        _reference = PngSizes.Picture();
-        _test = new Image(BenchScene.Width, BenchScene.Height);
-        new Renderer().Render(BenchScene.Scene, BenchScene.Camera, new RegularSampler(1), _test);
+        _reference = BenchPair.Reference();
+        _test = BenchPair.Test();
     }
 
     /// <summary>The low-pass error at σ = 1 px (its planes included).</summary>

@@ -49,13 +49,16 @@ public class AdaptiveSameBytesTests(CpuAcceleratorFixture fixture) : IClassFixtu
         return data;
     }
 
+    /// <summary>The scene and camera a case names: the 960-sphere field or the two spheres, through the named camera.</summary>
+    private static (Scene Scene, Camera Camera) View(string sceneName, string camera) => sceneName == "field"
+        ? (TestScenes.SphereField.Value, TestScenes.FieldCameras[camera])
+        : (TestScenes.TwoSpheres(), TestScenes.Cameras[camera]);
+
     [Theory]
     [MemberData(nameof(Cases))]
     public void TheDeviceGivesTheCpuRenderersBytesAndRaysPerPixel(string sceneName, string camera, string rule)
     {
-        bool field = sceneName == "field";
-        Scene scene = field ? TestScenes.SphereField.Value : TestScenes.TwoSpheres();
-        Camera view = field ? TestScenes.FieldCameras[camera] : TestScenes.Cameras[camera];
+        (Scene scene, Camera view) = View(sceneName, camera);
         AdaptiveSampler sampler = Rules[rule];
         var cpu = new Image(Width, Height);
         var device = new Image(Width, Height);
@@ -65,7 +68,7 @@ public class AdaptiveSameBytesTests(CpuAcceleratorFixture fixture) : IClassFixtu
 
         Assert.Null(cpuStats.Device);
         Assert.Equal("ilgpu-cpu", deviceStats.Device);
-        Assert.Equal(field, fixture.Device.TracesThroughHierarchy);
+        Assert.Equal(sceneName == "field", fixture.Device.TracesThroughHierarchy);
         Assert.True(SameBytesTests.Colours(cpu) >= 4, "the view holds the scene");
         Assert.True(sampler.MinDepth == sampler.MaxDepth || cpuRays.Distinct().Count() >= 2, "some pixels are refined");
         SameBytesTests.AssertSameBytes(cpu, device);
@@ -83,9 +86,7 @@ public class AdaptiveSameBytesTests(CpuAcceleratorFixture fixture) : IClassFixtu
     {
         // Every guard test the device does not find crossing is left to the host here: those pixels are the CPU
         // rule's on the CPU's lattice formulas and guard, and the frame's bytes and rays are still the CPU renderer's.
-        bool field = sceneName == "field";
-        Scene scene = field ? TestScenes.SphereField.Value : TestScenes.TwoSpheres();
-        Camera view = field ? TestScenes.FieldCameras[camera] : TestScenes.Cameras[camera];
+        (Scene scene, Camera view) = View(sceneName, camera);
         AdaptiveSampler sampler = Rules[rule];
         var cpu = new Image(Width, Height);
         var device = new Image(Width, Height);

@@ -59,15 +59,8 @@ public static class FlipMap
     {
         ArgumentNullException.ThrowIfNull(flip);
         ArgumentNullException.ThrowIfNull(image);
-        if ((image.Width, image.Height) != HeatMap.SizeFor(flip.Width, flip.Height))
-        {
-            throw new ArgumentException($"A {flip.Width}×{flip.Height} map is drawn into a {HeatMap.SizeFor(flip.Width, flip.Height)} image, not {image.Width}×{image.Height}.", nameof(image));
-        }
-
-        for (int y = flip.Height; y < image.Height; y++)
-        {
-            image.GetRowSpan(y).Fill(new Rgb24(255, 255, 255));
-        }
+        HeatMap.CheckCanvas(image, flip.Width, flip.Height);
+        HeatMap.PadBelow(image, flip.Height);
 
         Paint(flip, image);
         HeatMap.DrawLegend(image, flip.Width, 0, 1, LegendTitle, MagmaAt, _ => "0.##");

@@ -63,11 +63,7 @@ public static class HeatMap
             throw new ArgumentException($"Expected {width}×{height} values, got {values.Length}.", nameof(values));
         }
 
-        if ((image.Width, image.Height) != SizeFor(width, height))
-        {
-            throw new ArgumentException($"A {width}×{height} map is drawn into a {SizeFor(width, height)} image, not {image.Width}×{image.Height}.", nameof(image));
-        }
-
+        CheckCanvas(image, width, height);
         float min = float.PositiveInfinity, max = float.NegativeInfinity;
         foreach (float v in values)
         {
@@ -80,14 +76,30 @@ public static class HeatMap
             max = Math.Max(max, v);
         }
 
-        // The data's rows are painted and the legend drawn over its strip; only a short map's padding is filled white.
+        PadBelow(image, height);
+        Paint(values, width, height, min, max, image);
+        DrawLegend(image, width, min, max, title, ColorAt, value => value >= 100 || value == Math.Floor(value) ? "0" : "0.#");
+    }
+
+    /// <summary>Throws unless <paramref name="image"/> is <see cref="SizeFor"/> a W×H map.</summary>
+    internal static void CheckCanvas(Image image, int width, int height)
+    {
+        if ((image.Width, image.Height) != SizeFor(width, height))
+        {
+            throw new ArgumentException($"A {width}×{height} map is drawn into a {SizeFor(width, height)} image, not {image.Width}×{image.Height}.", nameof(image));
+        }
+    }
+
+    /// <summary>
+    /// Fills white the rows below a map <paramref name="height"/> rows high (a short map's padding): the data's rows are
+    /// painted and the legend drawn over its strip, so these are the only pixels left to write.
+    /// </summary>
+    internal static void PadBelow(Image image, int height)
+    {
         for (int y = height; y < image.Height; y++)
         {
             image.GetRowSpan(y).Fill(new Rgb24(255, 255, 255));
         }
-
-        Paint(values, width, height, min, max, image);
-        DrawLegend(image, width, min, max, title, ColorAt, value => value >= 100 || value == Math.Floor(value) ? "0" : "0.#");
     }
 
     /// <summary>The size of a map of W×H values with its legend: W + <see cref="LegendWidth"/> wide, at least <see cref="MinHeight"/> high.</summary>
