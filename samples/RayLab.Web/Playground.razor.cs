@@ -166,7 +166,12 @@ public sealed partial class Playground : IDisposable
                 Paint(image.PixelBytes.ToArray(), image.Width, image.Height);
             }
 
-            await Task.Delay(1, cancel.Token);
+            if (!OnWorkers(from))
+            {
+                // The status painted before this thread blocks on its first band; the workers' bands leave it free.
+                await Task.Delay(1, cancel.Token);
+            }
+
             bool paint = _state.View == "picture";
             (BandProgress done, WorkerPicture? workers) = await RenderBandsAsync(prepared, exact: false, image, rays, from, paint, cancel.Token);
             RenderStatistics stats = done.Statistics(prepared.Method.Name, rays);
@@ -247,7 +252,7 @@ public sealed partial class Playground : IDisposable
     private async Task<(BandProgress Done, WorkerPicture? Workers)> RenderBandsAsync(
         PreparedScene prepared, bool exact, Image image, float[]? rays, BandProgress from, bool paint, CancellationToken cancel)
     {
-        if (_workers == WorkerState.Up && from.Rows == 0 && OperatingSystem.IsBrowser())
+        if (OnWorkers(from))
         {
             WorkerPicture picture = await Workers.RenderAsync(_state, prepared.SamplerDescription, exact, image, rays ?? new float[image.Width * image.Height], paint, cancel);
             if (picture.Done is BandProgress done)
@@ -266,6 +271,10 @@ public sealed partial class Playground : IDisposable
 
         return (await _bands.RenderAsync(PageRenderer(cancel), prepared, image, rays, from, paint ? PaintRows(image) : null, null, cancel), null);
     }
+
+    /// <summary>Whether a picture begun at <paramref name="from"/> renders on the workers: they are up, and nothing of it was rendered here.</summary>
+    [System.Runtime.Versioning.SupportedOSPlatformGuard("browser")]
+    private bool OnWorkers(BandProgress from) => _workers == WorkerState.Up && from.Rows == 0 && OperatingSystem.IsBrowser();
 
     /// <summary>Starts the workers once a page, after its first picture; until they are up, full pictures render on this thread.</summary>
     [System.Runtime.Versioning.SupportedOSPlatform("browser")]

@@ -87,7 +87,7 @@ internal static partial class Workers
 /// <param name="Workers">How many workers rendered bands of it.</param>
 /// <param name="Failure">The workers' message when they failed.</param>
 /// <param name="Left">The workers still up.</param>
-/// <param name="Bands">The bands each worker rendered, such as <c>31+29</c> (for the figures).</param>
+/// <param name="Bands">The bands each worker rendered and its whole time on them, such as <c>31+29 in 452+447 ms</c> (for the figures).</param>
 /// <param name="PageMilliseconds">The page's own time on the bands: copying and painting them (for the figures).</param>
 /// <param name="Cancelled">The bands of pictures cancelled since the last one: come back late and dropped by the page,
 /// then those the workers dropped unrendered, such as <c>2/2</c> (for the tests).</param>

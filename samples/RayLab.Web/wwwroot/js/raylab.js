@@ -14,11 +14,21 @@ function sized(id, width, height) {
   return canvas.getContext('2d');
 }
 
+// RGB24 to the canvas' RGBA. Where typed arrays are little-endian (every browser's machine in practice), a pixel is one
+// 32-bit store, the bytes R, G, B, 255 in memory; else four byte stores.
+const littleEndian = new Uint8Array(new Uint32Array([1]).buffer)[0] === 1;
 function imageData(ctx, rgb, width, height) {
   const image = ctx.createImageData(width, height);
-  const d = image.data;
-  for (let i = 0, j = 0, k = 0; i < width * height; i++, j += 3, k += 4) {
-    d[k] = rgb[j]; d[k + 1] = rgb[j + 1]; d[k + 2] = rgb[j + 2]; d[k + 3] = 255;
+  if (littleEndian) {
+    const d = new Uint32Array(image.data.buffer);
+    for (let i = 0, j = 0; i < d.length; i++, j += 3) {
+      d[i] = 0xff000000 | (rgb[j + 2] << 16) | (rgb[j + 1] << 8) | rgb[j];
+    }
+  } else {
+    const d = image.data;
+    for (let i = 0, j = 0, k = 0; i < width * height; i++, j += 3, k += 4) {
+      d[k] = rgb[j]; d[k + 1] = rgb[j + 1]; d[k + 2] = rgb[j + 2]; d[k + 3] = 255;
+    }
   }
   return image;
 }
@@ -158,8 +168,11 @@ export function setLanguage(lang, title) {
 // cut into bands of rows; each worker has at most two bands in flight, so it never waits for the page between bands;
 // each band goes to whichever worker is free, and the page paints each as it arrives. A band aims at BandMs of a
 // worker's time, from the last band's speed of the same method, at most twice the last band's rows, and at most an
-// even share of the rows left, so the workers finish together.
-const BandMs = 30, InFlight = 2, StartTimeoutMs = 60000;
+// even share of the rows left, so the workers finish together. A worker's band blocks no input, so it is longer than
+// the page's own (30 ms): each band costs a worker about a millisecond besides the render (its bytes out of .NET, the
+// messages) and the page a copy and a paint; a cancelled picture's band still under way runs to its end (the page
+// drops it), so a band stays well under a drag's preview budget.
+const BandMs = 50, InFlight = 2, StartTimeoutMs = 60000;
 const pool = { workers: [], current: null, late: 0, dropped: 0, last: null, speed: new Map(), wanted: 0 };
 
 // How many workers the page starts: navigator.hardwareConcurrency − 1, at least 1 (the page's own thread paints and
@@ -215,7 +228,7 @@ export function renderOnWorkers(id, query, exact, width, height, method, paint) 
   const job = {
     id, query, exact, width, height, method: `${method}|${width}|${exact}`, paint,
     next: 0, done: 0, rgb: new Uint8Array(width * height * 3), rays: new Float32Array(width * height),
-    primaryRays: 0, renderMs: 0, kernel: 0, bands: new Map(), pageMs: 0, started: performance.now(),
+    primaryRays: 0, renderMs: 0, kernel: 0, bands: new Map(), busy: new Map(), pageMs: 0, started: performance.now(),
   };
   return new Promise(resolve => {
     job.resolve = resolve;
@@ -299,13 +312,16 @@ function received(w, m) {
       job.renderMs += m.renderMs;
       job.kernel = m.kernel;
       job.bands.set(w.id, (job.bands.get(w.id) || 0) + 1);
+      job.busy.set(w.id, (job.busy.get(w.id) || 0) + m.busyMs);
       job.done += m.count;
       job.pageMs += performance.now() - t0;
       globalThis.raylabWorkerRows = job.done; // the rows of the picture under way in so far (the tests wait on it)
       if (job.done === job.height) {
         pool.last = job;
-        // For the figures: the bands each worker rendered ("31+29"), and the page's own time on them (copy and paint).
-        const bands = [...job.bands.entries()].sort((a, b) => a[0] - b[0]).map(e => e[1]).join('+');
+        // For the figures: the bands each worker rendered and its whole time on them ("31+29 in 452+447 ms"), and the
+        // page's own time on them (copy and paint).
+        const ids = [...job.bands.keys()].sort((a, b) => a - b);
+        const bands = `${ids.map(i => job.bands.get(i)).join('+')} in ${ids.map(i => job.busy.get(i).toFixed(0)).join('+')} ms`;
         // And the bands of cancelled pictures since the last picture: come back late and dropped here, dropped by the workers.
         end(job, { rows: job.height, primaryRays: job.primaryRays, renderMs: job.renderMs, kernel: job.kernel, workers: job.bands.size, bands, pageMs: job.pageMs, late: pool.late, dropped: pool.dropped });
         pool.late = 0;

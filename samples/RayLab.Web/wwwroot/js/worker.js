@@ -34,11 +34,14 @@ if (rows) {
     if (queue.length > 0) next();
   };
   const render = band => {
+    const started = performance.now();
     try {
       const bytes = rows.Render(band.query, band.exact, band.width, band.height, band.first, band.count);
       const [primaryRays, renderMs, kernel] = rows.LastBand();
       const buffer = bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength ? bytes.buffer : bytes.slice().buffer;
-      postMessage({ type: 'rows', job: band.job, first: band.first, count: band.count, bytes: buffer, primaryRays, renderMs, kernel }, [buffer]);
+      // busyMs: the worker's whole time on the band (the library's render, the band's bytes out of .NET, the message).
+      const busyMs = performance.now() - started;
+      postMessage({ type: 'rows', job: band.job, first: band.first, count: band.count, bytes: buffer, primaryRays, renderMs, kernel, busyMs }, [buffer]);
     } catch (e) {
       postMessage({ type: 'error', job: band.job, first: band.first, count: band.count, message: String((e && e.message) || e) });
     }
