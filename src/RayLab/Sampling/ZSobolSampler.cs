@@ -515,9 +515,7 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
             bool aligned = (x0 & (count - 1)) == 0;
             if (typeof(TL) == typeof(Lanes512) && aligned && m <= MaxPacket512Block && Avx512DQ.IsSupported)
             {
-                ref uint first = ref Unsafe.As<float, uint>(ref MemoryMarshal.GetArrayDataReference(_morton));
-                _sampler.Packet512(Vector512.LoadUnsafe(ref first), MemoryMarshal.Cast<float, uint>(_permutations.AsSpan()), _digits)
-                    .StoreUnsafe(ref Unsafe.As<float, uint>(ref MemoryMarshal.GetArrayDataReference(_prefixes)));
+                BeginPacket512();
                 return;
             }
 
@@ -564,7 +562,15 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
                     prefixes[lane] = _sampler.Prefix(codes[lane] << m, _digits);
                 }
             }
+        }
 
+        /// <summary>An aligned packet of 16 lanes on AVX-512 (F and DQ): <see cref="Packet512"/> from the Morton codes in <see cref="_morton"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private readonly void BeginPacket512()
+        {
+            ref uint first = ref Unsafe.As<float, uint>(ref MemoryMarshal.GetArrayDataReference(_morton));
+            _sampler.Packet512(Vector512.LoadUnsafe(ref first), MemoryMarshal.Cast<float, uint>(_permutations.AsSpan()), _digits)
+                .StoreUnsafe(ref Unsafe.As<float, uint>(ref MemoryMarshal.GetArrayDataReference(_prefixes)));
         }
 
         /// <summary>
