@@ -2,6 +2,7 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
+using System.Runtime.Intrinsics.X86;
 using RayLab.Simd;
 
 namespace RayLab.Sampling;
@@ -245,6 +246,94 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
         }
     }
 
+    /// <summary>
+    /// The largest m for which <see cref="Packet512"/> serves a packet: every digit it places (up to bit m + 7) stays
+    /// inside the 32-bit index.
+    /// </summary>
+    internal const int MaxPacket512Block = 24;
+
+    /// <summary>
+    /// The table of packed permutations widened to 32 entries of 32 bits, for a two-register permute (entries 24 … 31 are 0).
+    /// </summary>
+    private static readonly uint[] WidePermutations = [.. Permutations.Select(p => (uint)p), 0, 0, 0, 0, 0, 0, 0, 0];
+
+    /// <summary>
+    /// Everything a 16-pixel packet aligned to 16 needs, in 512-bit registers (AVX-512 F and DQ, m ≤
+    /// <see cref="MaxPacket512Block"/>): the digit permutations of the sample levels and the flips of an odd m, lane by
+    /// lane, into <paramref name="permutations"/> (the lane form's layout), and the pixels' permuted digits (the bits
+    /// from m up) as the result. The same hashes and table entries as <see cref="PermutationsOf"/>, <see cref="FlipBits"/>
+    /// and <see cref="Prefix"/>: 64-bit mixes of eight lanes at a time, the table read by one permute of 16 lanes, and
+    /// each pixel's four low digits permuted in its own lane (no table of group permutations, no gather).
+    /// </summary>
+    /// <param name="morton">The 16 pixels' Morton codes.</param>
+    /// <param name="permutations">Where the lane form reads a sample level's permutations and flips.</param>
+    /// <param name="digits">The cache of the last packet's high digits.</param>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal Vector512<uint> Packet512(Vector512<uint> morton, Span<uint> permutations, DigitCache digits)
+    {
+        int m = Log2Block;
+        Vector512<ulong> low = Avx512F.ConvertToVector512UInt64(morton.GetLower()), high = Avx512F.ConvertToVector512UInt64(morton.GetUpper());
+        ref uint target = ref MemoryMarshal.GetReference(permutations);
+        ref uint wide = ref MemoryMarshal.GetArrayDataReference(WidePermutations);
+        Vector512<uint> tableLow = Vector512.LoadUnsafe(ref wide), tableHigh = Vector512.LoadUnsafe(ref wide, 16);
+        var salt = Vector512.Create(DigitSalt);
+
+        // Group (level from the top, digits above t) hashes (code · 2ᵐ) >> (shift + 2) | t, as the lanes' index reads it.
+        for (int shift = m - 2, groups = 1, first = 0; shift >= (m & 1); shift -= 2, first += groups, groups *= 4)
+        {
+            Vector512<ulong> aboveLow = (low << (m - shift - 2)) ^ salt, aboveHigh = (high << (m - shift - 2)) ^ salt;
+            for (int t = 0; t < groups; t++)
+            {
+                var digits512 = Vector512.Create((ulong)t);
+                Packed512(aboveLow ^ digits512, aboveHigh ^ digits512, tableLow, tableHigh).StoreUnsafe(ref target, (nuint)((first + t) * 16));
+            }
+        }
+
+        if ((m & 1) == 1)
+        {
+            // The flips after the groups and one row of lanes: (code · 2ᵐ) >> 1 | t, as FlipBit salts it.
+            var flipSalt = Vector512.Create(DigitSalt ^ 0x9e3779b97f4a7c15ul);
+            Vector512<ulong> aboveLow = (low << (m - 1)) ^ flipSalt, aboveHigh = (high << (m - 1)) ^ flipSalt;
+            int slot = ((((1 << (m - 1)) - 1) / 3) + 1) * 16;
+            for (int t = 0; t < 1 << (m - 1); t++, slot += 16)
+            {
+                var digits512 = Vector512.Create((ulong)t);
+                Vector512.Create(
+                    Avx512F.ConvertToVector256UInt32(Mix512(aboveLow ^ digits512) >>> 63),
+                    Avx512F.ConvertToVector256UInt32(Mix512(aboveHigh ^ digits512) >>> 63)).StoreUnsafe(ref target, (nuint)slot);
+            }
+        }
+
+        // The pixels' digits from level 4 up are the packet's (the cache); level k below 4 hashes the code above the digit.
+        Vector512<uint> prefix = Vector512.Create(Prefix(low.ToScalar() << m, digits, 4) & ~(0xffu << m)), three = Vector512.Create(3u);
+        for (int k = 0; k < 4; k++)
+        {
+            Vector512<uint> permutation = Packed512((low >>> ((2 * k) + 2)) ^ salt, (high >>> ((2 * k) + 2)) ^ salt, tableLow, tableHigh);
+            Vector512<uint> digit = (morton >>> (2 * k)) & three;
+            prefix |= (Avx512F.ShiftRightLogicalVariable(permutation, digit + digit) & three) << (m + (2 * k));
+        }
+
+        return prefix;
+    }
+
+    /// <summary>The packed permutations that 16 salted digit prefixes (eight in each argument) pick: <see cref="PermutationOf"/> and the table.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector512<uint> Packed512(Vector512<ulong> low, Vector512<ulong> high, Vector512<uint> tableLow, Vector512<uint> tableHigh)
+    {
+        // The mixer's top 24 bits n, then (n · 24) >> 24 = (n · 3) >> 21 in 32-bit lanes.
+        Vector512<uint> top = Vector512.Create(Avx512F.ConvertToVector256UInt32(Mix512(low) >>> 40), Avx512F.ConvertToVector256UInt32(Mix512(high) >>> 40));
+        return Avx512F.PermuteVar16x32x2(tableLow, (top + (top << 1)) >>> 21, tableHigh);
+    }
+
+    /// <summary><see cref="Mix(ulong)"/> in eight 64-bit lanes.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector512<ulong> Mix512(Vector512<ulong> z)
+    {
+        z = (z ^ (z >>> 30)) * 0xbf58476d1ce4e5b9ul;
+        z = (z ^ (z >>> 27)) * 0x94d049bb133111ebul;
+        return z ^ (z >>> 31);
+    }
+
     /// <summary>The last binary digit's flip (odd m) for each of <paramref name="higher"/>'s prefixes, into <paramref name="flips"/>.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void FlipBits(ReadOnlySpan<ulong> higher, Span<uint> flips)
@@ -423,13 +512,19 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
             // The lanes' Morton codes (x, y below 2¹⁶: 32 bits), then as 64-bit hash inputs.
             TL morton = Spread(TL.SequenceBits((uint)x0)) | TL.ShiftLeftBits(TL.BroadcastBits((uint)Spread((uint)row)), 1);
             morton.Store(_morton);
+            bool aligned = (x0 & (count - 1)) == 0;
+            if (typeof(TL) == typeof(Lanes512) && aligned && m <= MaxPacket512Block && Avx512DQ.IsSupported)
+            {
+                BeginPacket512();
+                return;
+            }
+
             ReadOnlySpan<uint> narrow = MemoryMarshal.Cast<float, uint>(_morton.AsSpan(0, count));
             for (int lane = 0; lane < narrow.Length; lane++)
             {
                 codes[lane] = narrow[lane];
             }
 
-            bool aligned = (x0 & (count - 1)) == 0;
             int levels = BitOperations.Log2((uint)count), sampleGroups = _groups * count;
             HashInputs(codes, higher, m, aligned);
 
@@ -467,7 +562,15 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
                     prefixes[lane] = _sampler.Prefix(codes[lane] << m, _digits);
                 }
             }
+        }
 
+        /// <summary>An aligned packet of 16 lanes on AVX-512 (F and DQ): <see cref="Packet512"/> from the Morton codes in <see cref="_morton"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private readonly void BeginPacket512()
+        {
+            ref uint first = ref Unsafe.As<float, uint>(ref MemoryMarshal.GetArrayDataReference(_morton));
+            _sampler.Packet512(Vector512.LoadUnsafe(ref first), MemoryMarshal.Cast<float, uint>(_permutations.AsSpan()), _digits)
+                .StoreUnsafe(ref Unsafe.As<float, uint>(ref MemoryMarshal.GetArrayDataReference(_prefixes)));
         }
 
         /// <summary>
