@@ -423,6 +423,7 @@ public static partial class GradeJob
     {
         // The checks a run left without a result because one of them ended it (LabStoppedRun): the next run runs them alone.
         List<string>? missing = null, listed = null;
+        int unrecorded = 0;
         for (int attempt = 1; ; attempt++)
         {
             if (left() <= TimeSpan.Zero)
@@ -494,7 +495,23 @@ public static partial class GradeJob
                 return;
             }
 
-            CheckRunVerdict verdict = JudgeCheckRun(File.Exists(trx), row.Checks.Count, stopped.Count, hang, attempt, () => FirstErrors(test.Output, lab));
+            bool labLimit = test.Limit != SandboxLimit.None || OutOfMemory(test.Output);
+            CheckRunVerdict verdict = JudgeCheckRun(new CheckRunOutcome(File.Exists(trx), row.Checks.Count, stopped.Count, hang, labLimit), attempt, unrecorded, () => FirstErrors(test.Output, lab));
+            if (verdict.Unrecorded)
+            {
+                // Nothing of the lab's stopped it: the machine did (a test host too slow to start beside other work).
+                unrecorded++;
+                GradeSandbox.AppendLog(log, "raylab grade:", string.Create(CultureInfo.InvariantCulture,
+                    $"run {attempt} of the checks recorded no check and hit no limit of the lab's own: they run again ({unrecorded} of at most {MaxUnrecordedReruns} such runs)"), "");
+                continue;
+            }
+
+            if (unrecorded > 0)
+            {
+                row.Notes.Add(string.Create(CultureInfo.InvariantCulture,
+                    $"the checks ran again {unrecorded} time{(unrecorded == 1 ? "" : "s")} after a run that recorded no check and hit no limit of the lab's own (a busy machine, not the lab){(row.Checks.Count == 0 ? ", and recorded none" : "")}"));
+            }
+
             if (verdict.Problem is not null)
             {
                 row.Problems.Add(verdict.Problem);
@@ -558,33 +575,44 @@ public static partial class GradeJob
     internal const int MaxCheckRuns = 50;
 
     /// <summary>
-    /// What one <c>dotnet test</c> run of the checks comes to. Checks that stopped the run (a hang, a crash) are left
-    /// out of the next run, so the rest still get a result. A run that leaves no TRX file, or a TRX file with no check
-    /// in it (stopped before its first check ended, as a test host slow to start on a busy machine can be), is "checks
-    /// did not run": the row must never read "ok" with no checks.
+    /// How many times the checks run again after a run that recorded no check, left none unfinished and hit no limit
+    /// of the lab's own (<see cref="JudgeCheckRun"/>).
     /// </summary>
-    /// <param name="trxWritten">Whether the run wrote its TRX file.</param>
-    /// <param name="checksRecorded">The checks with a result so far, this run's and the runs' before it.</param>
-    /// <param name="stopped">The checks this run left unfinished (the blame data's sequence files).</param>
-    /// <param name="hang">Whether the run was stopped for inactivity (<c>--blame-hang-timeout</c>), not by a crash.</param>
+    internal const int MaxUnrecordedReruns = 2;
+
+    /// <summary>
+    /// What one <c>dotnet test</c> run of the checks comes to. Checks that stopped the run (a hang, a crash) are left
+    /// out of the next run, so the rest still get a result. A run that recorded no check (no TRX file, or one with no
+    /// check in it), left none unfinished and hit no limit of the lab's own (memory, processes, disk, CPU time) was
+    /// stopped by the machine, not the lab: a test host slow to start beside other work. It runs again, at most
+    /// <see cref="MaxUnrecordedReruns"/> times; after that, or after a run that hit a limit, the row says "checks did
+    /// not run": it must never read "ok" with no checks.
+    /// </summary>
+    /// <param name="run">What the run left: its TRX file, the checks recorded so far, those it left unfinished, whether it hit a limit.</param>
     /// <param name="attempt">This run's number, from 1.</param>
+    /// <param name="unrecorded">How many runs before it recorded nothing and ran again.</param>
     /// <param name="firstErrors">The run's first error lines, read from its output when the verdict needs them.</param>
-    internal static CheckRunVerdict JudgeCheckRun(bool trxWritten, int checksRecorded, int stopped, bool hang, int attempt, Func<string> firstErrors)
+    internal static CheckRunVerdict JudgeCheckRun(CheckRunOutcome run, int attempt, int unrecorded, Func<string> firstErrors)
     {
         ArgumentNullException.ThrowIfNull(firstErrors);
-        if (stopped > 0 && attempt < MaxCheckRuns)
+        if (run.Stopped > 0 && attempt < MaxCheckRuns)
         {
-            return new CheckRunVerdict(true, hang ? "check time limit" : "checks crashed", null);
+            return new CheckRunVerdict(true, run.Hang ? "check time limit" : "checks crashed", null);
         }
 
-        if (!trxWritten)
+        if ((!run.TrxWritten || run.ChecksRecorded == 0) && run.Stopped == 0 && !run.LabLimit && unrecorded < MaxUnrecordedReruns && attempt < MaxCheckRuns)
+        {
+            return new CheckRunVerdict(true, null, null, Unrecorded: true);
+        }
+
+        if (!run.TrxWritten)
         {
             return new CheckRunVerdict(false, "checks did not run", firstErrors());
         }
 
-        if (checksRecorded == 0)
+        if (run.ChecksRecorded == 0)
         {
-            return new CheckRunVerdict(false, "checks did not run", hang
+            return new CheckRunVerdict(false, "checks did not run", run.Hang
                 ? "the test run was stopped for inactivity before any check finished: give --check-timeout more room"
                 : firstErrors());
         }
@@ -871,6 +899,9 @@ internal sealed record StudentRow(string Name, string Folder)
     /// <summary>The first errors of the failing step, or null.</summary>
     public string? Detail { get; set; }
 
+    /// <summary>What the grader did about the machine rather than the lab (checks run again after a run that recorded nothing), one line each.</summary>
+    public List<string> Notes { get; } = [];
+
     /// <summary>The lab's uses of other assemblies that the checks' list refuses, one line each ("3.1: LabOrthoCamera.GetRay uses …").</summary>
     public List<string> Uses { get; } = [];
 
@@ -919,11 +950,20 @@ internal sealed record StudentRow(string Name, string Folder)
 /// <summary>A picture against the exact image: RMSE in 8-bit levels and mean FLIP, or why it has none.</summary>
 internal sealed record PictureScore(double Rmse, double Flip, string? Problem);
 
+/// <summary>What one run of the checks left (<see cref="GradeJob.JudgeCheckRun"/>).</summary>
+/// <param name="TrxWritten">Whether the run wrote its TRX file.</param>
+/// <param name="ChecksRecorded">The checks with a result so far, this run's and the runs' before it.</param>
+/// <param name="Stopped">The checks this run left unfinished (the blame data's sequence files).</param>
+/// <param name="Hang">Whether the run was stopped for inactivity (<c>--blame-hang-timeout</c>), not by a crash.</param>
+/// <param name="LabLimit">Whether the run hit a limit of the lab's own: memory, processes, disk or CPU time.</param>
+internal readonly record struct CheckRunOutcome(bool TrxWritten, int ChecksRecorded, int Stopped, bool Hang, bool LabLimit);
+
 /// <summary>What one run of the checks comes to (<see cref="GradeJob.JudgeCheckRun"/>).</summary>
 /// <param name="RunAgain">Whether the checks run again, without those that stopped this run.</param>
 /// <param name="Problem">The row's problem, or null for none.</param>
 /// <param name="Detail">The row's detail, or null for none.</param>
-internal readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail);
+/// <param name="Unrecorded">Whether the run recorded no check, and nothing of the lab's stopped it: it runs again as it was.</param>
+internal readonly record struct CheckRunVerdict(bool RunAgain, string? Problem, string? Detail, bool Unrecorded = false);
 
 /// <summary>Where a submission's checks run: their built folder (read-only to the run) and the folder the run writes, its results.</summary>
 /// <param name="Checks">The checks' folder (<see cref="GradeChecks.Prepare"/>), built.</param>

@@ -178,6 +178,15 @@ internal static class GradeReport
                     json.WriteString("detail", detail);
                 }
 
+                // What the grader did about the machine rather than the lab: checks run again after a run that recorded nothing.
+                json.WriteStartArray("notes");
+                foreach (string note in row.Notes)
+                {
+                    json.WriteStringValue(note);
+                }
+
+                json.WriteEndArray();
+
                 // What the lab uses that the checks' list refuses: each line fails the sections it starts with.
                 json.WriteStartArray("uses");
                 foreach (string use in row.Uses)
@@ -343,6 +352,11 @@ internal static class GradeReport
             if (Detail(row) is { } detail)
             {
                 html.AppendLine(CultureInfo.InvariantCulture, $"<pre>{E(detail)}</pre>");
+            }
+
+            foreach (string note in row.Notes)
+            {
+                html.AppendLine(CultureInfo.InvariantCulture, $"<p>Note: {E(note)}.</p>");
             }
 
             if (row.ProgramTimedBy is not null)

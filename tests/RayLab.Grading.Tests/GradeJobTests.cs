@@ -49,9 +49,9 @@ public sealed class GradeJobTests
 
     [Theory]
     [InlineData(true, 12, 0, false, 1, false, null, false)]                  // every check ended: ok
-    [InlineData(false, 0, 0, false, 1, false, "checks did not run", true)]   // no TRX: the run's first errors say why
-    [InlineData(true, 0, 0, true, 1, false, "checks did not run", false)]    // stopped before the first check ended
-    [InlineData(true, 0, 0, false, 1, false, "checks did not run", true)]    // a TRX with no check in it
+    [InlineData(false, 0, 0, false, 3, false, "checks did not run", true)]   // no TRX, the reruns spent: the run's first errors say why
+    [InlineData(true, 0, 0, true, 3, false, "checks did not run", false)]    // stopped before the first check ended, the reruns spent
+    [InlineData(true, 0, 0, false, 3, false, "checks did not run", true)]    // a TRX with no check in it, the reruns spent
     [InlineData(true, 5, 1, true, 1, true, "check time limit", false)]       // a check hung: again without it
     [InlineData(true, 5, 1, false, 3, true, "checks crashed", false)]        // a check crashed the host: again without it
     [InlineData(true, 9, 2, true, GradeJob.MaxCheckRuns, false, null, false)] // the last run: its stopped checks stay
@@ -60,8 +60,10 @@ public sealed class GradeJobTests
     {
         const string errors = "error CS1002: ; expected";
         int read = 0;
-        CheckRunVerdict verdict = GradeJob.JudgeCheckRun(trx, checks, stopped, hang, attempt, () => { read++; return errors; });
+        int unrecorded = checks == 0 ? GradeJob.MaxUnrecordedReruns : 0;
+        CheckRunVerdict verdict = GradeJob.JudgeCheckRun(new CheckRunOutcome(trx, checks, stopped, hang, LabLimit: false), attempt, unrecorded, () => { read++; return errors; });
         Assert.Equal(again, verdict.RunAgain);
+        Assert.False(verdict.Unrecorded);
         Assert.Equal(problem, verdict.Problem);
         Assert.Equal(firstErrors ? 1 : 0, read); // the output is read only for the detail that shows it
         Assert.Equal(firstErrors, verdict.Detail == errors);
@@ -69,6 +71,26 @@ public sealed class GradeJobTests
         {
             Assert.Contains("--check-timeout", verdict.Detail, StringComparison.Ordinal);
         }
+    }
+
+    [Theory]
+    [InlineData(false, 0, false, false, 0, true)]   // no TRX, no limit of the lab's: the machine's doing, run again
+    [InlineData(true, 0, false, false, 0, true)]    // a TRX with no check in it: again
+    [InlineData(true, 0, true, false, 1, true)]     // stopped for inactivity before its first check, none unfinished: again
+    [InlineData(false, 0, false, false, 1, true)]   // the second such run: again, the last time
+    [InlineData(false, 0, false, false, 2, false)]  // the reruns spent: checks did not run
+    [InlineData(false, 0, false, true, 0, false)]   // a limit of the lab's own (memory, processes, disk, CPU): no rerun
+    [InlineData(true, 0, true, true, 0, false)]
+    [InlineData(false, 7, false, false, 0, true)]   // no TRX after earlier runs recorded checks: again
+    public void ARunThatRecordedNothingAndHitNoLimitOfTheLabsRunsAgainAFewTimes(bool trx, int checks, bool hang, bool labLimit, int unrecorded, bool again)
+    {
+        int read = 0;
+        CheckRunVerdict verdict = GradeJob.JudgeCheckRun(new CheckRunOutcome(trx, checks, 0, hang, labLimit), 1 + unrecorded, unrecorded, () => { read++; return "error"; });
+        Assert.Equal(again, verdict.RunAgain);
+        Assert.Equal(again, verdict.Unrecorded);
+        Assert.Equal(again ? null : "checks did not run", verdict.Problem);
+        Assert.Equal(again ? 0 : hang ? 0 : 1, read);
+        Assert.False(GradeJob.JudgeCheckRun(new CheckRunOutcome(trx, checks, 0, hang, labLimit), GradeJob.MaxCheckRuns, unrecorded, () => "").RunAgain); // the last run never runs again
     }
 
     [Fact]

@@ -17,7 +17,12 @@ internal static class ConsoleChild
     {
         string app = Path.Combine(AppContext.BaseDirectory, "raylab.dll");
         Assert.True(File.Exists(app), $"{app} is missing");
-        var start = new ProcessStartInfo(DotnetHost())
+        // SIGINT at its default disposition in the child, whatever this test run inherited: a shell that starts a job
+        // in the background without job control (`dotnet test … &` in a script, a CI runner) sets SIGINT to ignored,
+        // every child inherits that, and the .NET runtime then leaves it ignored. The resetter execs the host, so the
+        // child's process id is the host's.
+        string[] host = [.. SigintResetter.Value ?? [], DotnetHost()];
+        var start = new ProcessStartInfo(host[0])
         {
             WorkingDirectory = workingDirectory,
             UseShellExecute = false,
@@ -26,6 +31,11 @@ internal static class ConsoleChild
             StandardOutputEncoding = Encoding.UTF8,
             StandardErrorEncoding = Encoding.UTF8,
         };
+        foreach (string arg in host.Skip(1))
+        {
+            start.ArgumentList.Add(arg);
+        }
+
         start.ArgumentList.Add(app);
         foreach (string arg in args)
         {
@@ -73,6 +83,50 @@ internal static class ConsoleChild
             child.Kill(entireProcessTree: true);
         }
     });
+
+    /// <summary>
+    /// A command line that runs its arguments with SIGINT at its default disposition: coreutils' <c>env
+    /// --default-signal=INT</c> where it has that option (coreutils 8.31 and later), else perl's <c>$SIG{INT}</c>;
+    /// null on Windows or where neither runs.
+    /// </summary>
+    private static readonly Lazy<string[]?> SigintResetter = new(() =>
+    {
+        if (OperatingSystem.IsWindows())
+        {
+            return null;
+        }
+
+        string[][] candidates =
+        [
+            ["env", "--default-signal=INT"],
+            ["perl", "-e", "$SIG{INT} = 'DEFAULT'; exec { $ARGV[0] } @ARGV or die \"exec $ARGV[0]: $!\\n\";"],
+        ];
+        return candidates.FirstOrDefault(c => Runs([.. c, "true"]));
+    });
+
+    /// <summary>Whether <paramref name="command"/> runs and exits 0 (a probe: its output is dropped).</summary>
+    private static bool Runs(string[] command)
+    {
+        var start = new ProcessStartInfo(command[0]) { UseShellExecute = false, RedirectStandardOutput = true, RedirectStandardError = true };
+        foreach (string arg in command.Skip(1))
+        {
+            start.ArgumentList.Add(arg);
+        }
+
+        try
+        {
+            using Process probe = Process.Start(start) ?? throw new InvalidOperationException($"could not start {command[0]}");
+            Task<string> stdout = probe.StandardOutput.ReadToEndAsync();
+            Task<string> stderr = probe.StandardError.ReadToEndAsync();
+            probe.WaitForExit();
+            Task.WaitAll(stdout, stderr);
+            return probe.ExitCode == 0;
+        }
+        catch (System.ComponentModel.Win32Exception)
+        {
+            return false;
+        }
+    }
 
     /// <summary>The dotnet host running these tests (so the child uses the same runtime), else dotnet on the PATH.</summary>
     private static string DotnetHost()
