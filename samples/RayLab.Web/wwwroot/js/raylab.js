@@ -228,7 +228,7 @@ export function renderOnWorkers(id, query, exact, width, height, method, paint) 
   const job = {
     id, query, exact, width, height, method: `${method}|${width}|${exact}`, paint,
     next: 0, done: 0, rgb: new Uint8Array(width * height * 3), rays: new Float32Array(width * height),
-    primaryRays: 0, renderMs: 0, kernel: 0, bands: new Map(), pageMs: 0, started: performance.now(),
+    primaryRays: 0, renderMs: 0, kernel: 0, bands: new Map(), busy: new Map(), pageMs: 0, started: performance.now(),
   };
   return new Promise(resolve => {
     job.resolve = resolve;
@@ -311,8 +311,8 @@ function received(w, m) {
       job.primaryRays += m.primaryRays;
       job.renderMs += m.renderMs;
       job.kernel = m.kernel;
-      const mine = job.bands.get(w.id) || { count: 0, ms: 0 };
-      job.bands.set(w.id, { count: mine.count + 1, ms: mine.ms + m.busyMs });
+      job.bands.set(w.id, (job.bands.get(w.id) || 0) + 1);
+      job.busy.set(w.id, (job.busy.get(w.id) || 0) + m.busyMs);
       job.done += m.count;
       job.pageMs += performance.now() - t0;
       globalThis.raylabWorkerRows = job.done; // the rows of the picture under way in so far (the tests wait on it)
@@ -320,8 +320,8 @@ function received(w, m) {
         pool.last = job;
         // For the figures: the bands each worker rendered and its whole time on them ("31+29 in 452+447 ms"), and the
         // page's own time on them (copy and paint).
-        const each = [...job.bands.entries()].sort((a, b) => a[0] - b[0]).map(e => e[1]);
-        const bands = `${each.map(b => b.count).join('+')} in ${each.map(b => b.ms.toFixed(0)).join('+')} ms`;
+        const ids = [...job.bands.keys()].sort((a, b) => a - b);
+        const bands = `${ids.map(i => job.bands.get(i)).join('+')} in ${ids.map(i => job.busy.get(i).toFixed(0)).join('+')} ms`;
         // And the bands of cancelled pictures since the last picture: come back late and dropped here, dropped by the workers.
         end(job, { rows: job.height, primaryRays: job.primaryRays, renderMs: job.renderMs, kernel: job.kernel, workers: job.bands.size, bands, pageMs: job.pageMs, late: pool.late, dropped: pool.dropped });
         pool.late = 0;
