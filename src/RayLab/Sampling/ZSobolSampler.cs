@@ -215,7 +215,10 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
             var salt = Vector512.Create(DigitSalt);
             for (; j <= higher.Length - Vector512<ulong>.Count; j += Vector512<ulong>.Count)
             {
-                (((Mix512(Vector512.LoadUnsafe(ref first, (nuint)j) ^ salt) >>> 40) * 24ul) >>> 24).StoreUnsafe(ref first, (nuint)j);
+                Vector512<ulong> z = Vector512.LoadUnsafe(ref first, (nuint)j) ^ salt;
+                z = (z ^ (z >>> 30)) * 0xbf58476d1ce4e5b9ul;
+                z = (z ^ (z >>> 27)) * 0x94d049bb133111ebul;
+                ((((z ^ (z >>> 31)) >>> 40) * 24ul) >>> 24).StoreUnsafe(ref first, (nuint)j);
             }
         }
         else if (Vector.IsHardwareAccelerated)
@@ -289,7 +292,7 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
         if ((m & 1) == 1)
         {
             // The flips after the groups and one row of lanes: (code · 2ᵐ) >> 1 | t, as FlipBit salts it.
-            var flipSalt = Vector512.Create(DigitSalt ^ FlipSalt);
+            var flipSalt = Vector512.Create(DigitSalt ^ 0x9e3779b97f4a7c15ul);
             Vector512<ulong> aboveLow = (low << (m - 1)) ^ flipSalt, aboveHigh = (high << (m - 1)) ^ flipSalt;
             int slot = ((((1 << (m - 1)) - 1) / 3) + 1) * 16;
             for (int t = 0; t < 1 << (m - 1); t++, slot += 16)
@@ -349,10 +352,7 @@ public sealed class ZSobolSampler : PixelSampler, ILaneSampled
     private static int PermutationOf(ulong higher, ulong salt) => (int)(((Mix(higher ^ salt) >> 40) * 24) >> 24);
 
     /// <summary>The last binary digit's flip (odd m), from the digits above it.</summary>
-    private static ulong FlipBit(ulong higher, ulong salt) => Mix(higher ^ salt ^ FlipSalt) >> 63;
-
-    /// <summary>What the last binary digit's flip adds to the digits' salt, so that it hashes apart from the digit permutations.</summary>
-    private const ulong FlipSalt = 0x9e3779b97f4a7c15ul;
+    private static ulong FlipBit(ulong higher, ulong salt) => Mix(higher ^ salt ^ 0x9e3779b97f4a7c15ul) >> 63;
 
     /// <summary><see cref="Mix(ulong)"/> in every lane.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
